@@ -1,0 +1,168 @@
+#include "nvAllenCahnSolver.h"
+
+#include "nvNarrowBand.h"
+#include "nvParallel.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace nv
+{
+namespace
+{
+constexpr std::int64_t Grain = 4096;
+}
+
+double AllenCahnSolver::InitialPhi(double distance, double offset, double xi)
+{
+  return std::tanh((offset - distance) / (std::sqrt(2.0) * xi));
+}
+
+double AllenCahnSolver::EdgeStop(double phi0, EdgeStopping function)
+{
+  const double a = std::fabs(phi0);
+  return function == EdgeStopping::Eq4 ? (1.0 - a) * a : 1.0 - phi0 * phi0;
+}
+
+AllenCahnSolver::AllenCahnSolver(const NarrowBand& band, const Parameters& parameters)
+  : Band(band)
+  , Params(parameters)
+{
+  const std::int64_t size = band.Size();
+  this->Phi.resize(static_cast<std::size_t>(size + 2));
+  this->Previous.resize(static_cast<std::size_t>(size));
+  this->Coupling.resize(static_cast<std::size_t>(size));
+  this->Decay.resize(static_cast<std::size_t>(size));
+  // Dirichlet values of eq. (5).
+  this->Phi[band.InsideSlot()] = 1.0 - parameters.Delta;
+  this->Phi[band.OutsideSlot()] = -1.0 + parameters.Delta;
+
+  const double h = parameters.Spacing;
+  const double dt = parameters.EffectiveTimeStep();
+  const double eps = parameters.Epsilon();
+  const double xi = parameters.Xi();
+  const double l = parameters.OffsetDistance;
+  const EdgeStopping function = parameters.EdgeFunction;
+  ParallelFor(0, size, Grain, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t s = begin; s < end; ++s)
+    {
+      const double phi0 = InitialPhi(band.Distance[s], l, xi); // eq. (2); d = inf gives -1
+      const double g = EdgeStop(phi0, function);               // eq. (4) or (3)
+      this->Phi[s] = phi0;
+      this->Coupling[s] = dt * g / (h * h);
+      this->Decay[s] = std::exp(-2.0 * g * dt / (eps * eps));
+    }
+  });
+}
+
+double AllenCahnSolver::HalfSweep(std::int64_t begin, std::int64_t end)
+{
+  double* phi = this->Phi.data();
+  const std::uint32_t* neighbor = this->Band.Neighbor.data();
+  return ParallelMax(end - begin, [&](std::int64_t first, std::int64_t last) {
+    double change = 0.0;
+    for (std::int64_t s = begin + first; s < begin + last; ++s)
+    {
+      // (10)-(11) at node s with its neighbours held fixed:
+      // (1 + 6 c) phi_s - c sum(neighbours) = phi^n_s, c = dt g_s / h^2.
+      const std::uint32_t* n = neighbor + 6 * s;
+      const double sum = phi[n[0]] + phi[n[1]] + phi[n[2]] + phi[n[3]] + phi[n[4]] + phi[n[5]];
+      const double c = this->Coupling[s];
+      const double updated = (this->Previous[s] + c * sum) / (1.0 + 6.0 * c);
+      change = std::max(change, std::fabs(updated - phi[s]));
+      phi[s] = updated;
+    }
+    return change;
+  });
+}
+
+int AllenCahnSolver::Diffuse(double* lastChange)
+{
+  const std::int64_t size = this->Band.Size();
+  std::copy(this->Phi.begin(), this->Phi.begin() + size, this->Previous.begin());
+  // Red nodes only read black neighbours and vice versa, so each half sweep
+  // is order-independent and runs in parallel with identical results.
+  int sweeps = 0;
+  double change = 0.0;
+  do
+  {
+    const double red = this->HalfSweep(0, this->Band.RedCount);
+    const double black = this->HalfSweep(this->Band.RedCount, size);
+    change = std::max(red, black);
+    ++sweeps;
+  } while (change >= this->Params.GaussSeidelTolerance && sweeps < this->Params.MaximumNumberOfSweeps);
+  if (lastChange)
+  {
+    *lastChange = change;
+  }
+  return sweeps;
+}
+
+void AllenCahnSolver::React()
+{
+  ParallelFor(0, this->Band.Size(), Grain, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t s = begin; s < end; ++s)
+    {
+      this->Phi[s] = React(this->Phi[s], this->Decay[s]); // eq. (12)
+    }
+  });
+}
+
+StepReport AllenCahnSolver::Step()
+{
+  StepReport report;
+  report.Sweeps = this->Diffuse(&report.SweepChange);
+  this->React();
+  // Relative change of section 4; Previous still holds phi^n.
+  const double* phi = this->Phi.data();
+  const double* previous = this->Previous.data();
+  const double change2 = ParallelSum(this->Band.Size(), [&](std::int64_t begin, std::int64_t end) {
+    double sum = 0.0;
+    for (std::int64_t s = begin; s < end; ++s)
+    {
+      const double d = phi[s] - previous[s];
+      sum += d * d;
+    }
+    return sum;
+  });
+  const double norm2 = ParallelSum(this->Band.Size(), [&](std::int64_t begin, std::int64_t end) {
+    double sum = 0.0;
+    for (std::int64_t s = begin; s < end; ++s)
+    {
+      sum += previous[s] * previous[s];
+    }
+    return sum;
+  });
+  report.RelativeChange = norm2 > 0.0 ? std::sqrt(change2 / norm2) : 0.0;
+  return report;
+}
+
+std::vector<StepReport> AllenCahnSolver::Run(Monitor* monitor)
+{
+  std::vector<StepReport> reports;
+  const int steps = std::max(0, this->Params.MaximumNumberOfIterations);
+  for (int n = 0; n < steps; ++n)
+  {
+    if (monitor)
+    {
+      monitor->Progress(static_cast<double>(n) / steps);
+      if (monitor->Aborted())
+      {
+        break;
+      }
+    }
+    reports.push_back(this->Step());
+    if (this->Params.ConvergenceTolerance > 0.0 &&
+      reports.back().RelativeChange < this->Params.ConvergenceTolerance)
+    {
+      break;
+    }
+  }
+  if (monitor)
+  {
+    monitor->Progress(1.0);
+  }
+  return reports;
+}
+
+} // namespace nv

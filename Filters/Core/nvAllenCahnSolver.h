@@ -1,0 +1,77 @@
+// The operator-split Allen-Cahn scheme of section 3 on the band nodes:
+// implicit diffusion (10)-(11) by red-black Gauss-Seidel, then the closed-form
+// reaction step (12).
+#ifndef nvAllenCahnSolver_h
+#define nvAllenCahnSolver_h
+
+#include "NarrowVolumeFiltersModule.h"
+#include "nvParameters.h"
+
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+namespace nv
+{
+class Monitor;
+struct NarrowBand;
+
+/// What happened in one time step.
+struct StepReport
+{
+  int Sweeps = 0;              ///< Gauss-Seidel sweeps of the diffusion step
+  double SweepChange = 0.0;    ///< max |change| of the last sweep
+  double RelativeChange = 0.0; ///< ||phi^{n+1} - phi^n||_2 / ||phi^n||_2 (section 4)
+};
+
+class NARROWVOLUMEFILTERS_EXPORT AllenCahnSolver
+{
+public:
+  /// Sets phi^0 by eq. (2) and the per-node coefficients of (10) and (12).
+  AllenCahnSolver(const NarrowBand& band, const Parameters& parameters);
+
+  /// phi0 = tanh((l - d) / (sqrt(2) xi)), eq. (2).
+  static double InitialPhi(double distance, double offset, double xi);
+  /// g of eq. (4) or eq. (3) for a given phi0.
+  static double EdgeStop(double phi0, EdgeStopping function);
+  /// Closed-form solution of (9) over one step, eq. (12); decay = exp(-2 g dt / eps^2).
+  static double React(double phi, double decay)
+  {
+    return phi / std::sqrt(decay + phi * phi * (1.0 - decay));
+  }
+
+  /// One time step: diffusion (10) then reaction (12).
+  StepReport Step();
+
+  /**
+   * Runs steps until the relative change drops below the convergence
+   * tolerance (if > 0) or MaximumNumberOfIterations steps are done, or the
+   * monitor asks to stop. Returns the reports of the steps taken.
+   */
+  std::vector<StepReport> Run(Monitor* monitor = nullptr);
+
+  /// Implicit step (10)-(11): solves phi* - dt g Lap_h phi* = phi^n in place.
+  /// Returns the number of sweeps and sets the last sweep's max change.
+  int Diffuse(double* lastChange = nullptr);
+  /// Reaction step (12), in place.
+  void React();
+
+  /// phi at band node s (s < L); slots L and L + 1 hold the Dirichlet values.
+  const std::vector<double>& GetPhi() const { return this->Phi; }
+  std::vector<double>& GetPhi() { return this->Phi; }
+
+private:
+  /// One red or black half sweep over [begin, end); returns the max |change|.
+  double HalfSweep(std::int64_t begin, std::int64_t end);
+
+  const NarrowBand& Band;
+  Parameters Params;
+  std::vector<double> Phi;      ///< L + 2 values
+  std::vector<double> Previous; ///< phi^n, the right-hand side of (10)
+  std::vector<double> Coupling; ///< dt g_s / h^2
+  std::vector<double> Decay;    ///< exp(-2 g_s dt / eps^2)
+};
+
+} // namespace nv
+
+#endif

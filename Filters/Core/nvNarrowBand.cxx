@@ -1,0 +1,200 @@
+#include "nvNarrowBand.h"
+
+#include "nvParallel.h"
+#include "nvTruncatedDistance.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+
+namespace nv
+{
+
+std::int64_t NarrowBand::MemoryBytes() const
+{
+  return static_cast<std::int64_t>(this->Node.capacity() * sizeof(std::int64_t) +
+    this->Distance.capacity() * sizeof(double) + this->Neighbor.capacity() * sizeof(std::uint32_t));
+}
+
+namespace
+{
+
+bool IsRed(std::int64_t i, std::int64_t j, std::int64_t k)
+{
+  return ((i + j + k) & 1) == 0;
+}
+
+/// Visits the band nodes of one brick in ascending grid index: fn(i, j, k, d).
+template <typename Fn>
+void ForEachBandNode(const TruncatedDistance& distance, const Parameters& parameters,
+  std::int64_t brick, double scratch[BrickNodes], Fn&& fn)
+{
+  const Grid& grid = distance.GetGrid();
+  const bool whole = parameters.Mode == Domain::WholeDomain;
+  const double lower = parameters.OffsetDistance - parameters.HalfBandWidth();
+  const double upper = distance.GetReach();
+  distance.ComputeBrick(brick, scratch);
+  std::int64_t first[3];
+  distance.BrickFirstNode(brick, first);
+  for (int k = 0; k < BrickSize && first[2] + k < grid.Dims[2]; ++k)
+  {
+    for (int j = 0; j < BrickSize && first[1] + j < grid.Dims[1]; ++j)
+    {
+      for (int i = 0; i < BrickSize && first[0] + i < grid.Dims[0]; ++i)
+      {
+        const double d = scratch[i + BrickSize * (j + BrickSize * k)];
+        if (whole || (lower < d && d < upper))
+        {
+          fn(first[0] + i, first[1] + j, first[2] + k, d);
+        }
+      }
+    }
+  }
+}
+
+} // namespace
+
+NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& parameters, Monitor* monitor)
+{
+  NarrowBand band;
+  band.GridNodes = distance.GetGrid();
+  const Grid& grid = band.GridNodes;
+
+  // Step 1: the bricks to visit. Whole domain mode visits all of them.
+  std::vector<std::int64_t> bricks;
+  if (parameters.Mode == Domain::WholeDomain)
+  {
+    bricks.resize(static_cast<std::size_t>(distance.GetNumberOfBricks()));
+    for (std::size_t b = 0; b < bricks.size(); ++b)
+    {
+      bricks[b] = static_cast<std::int64_t>(b);
+    }
+  }
+  else
+  {
+    bricks = distance.ReachedBricks();
+  }
+  const std::int64_t numberOfBricks = static_cast<std::int64_t>(bricks.size());
+  std::atomic<bool> aborted(false);
+  auto checkAbort = [&](std::int64_t done, std::int64_t total, double base) {
+    if (monitor && (done & 63) == 0)
+    {
+      monitor->Progress(base + 0.33 * done / std::max<std::int64_t>(total, 1));
+      if (monitor->Aborted())
+      {
+        aborted = true;
+      }
+    }
+    return aborted.load();
+  };
+
+  // Count red and black band nodes per brick (first pass over the distances).
+  std::vector<std::int64_t> redStart(static_cast<std::size_t>(numberOfBricks + 1), 0);
+  std::vector<std::int64_t> blackStart(static_cast<std::size_t>(numberOfBricks + 1), 0);
+  ParallelFor(0, numberOfBricks, 16, [&](std::int64_t begin, std::int64_t end) {
+    double scratch[BrickNodes];
+    for (std::int64_t a = begin; a < end && !checkAbort(a, numberOfBricks, 0.0); ++a)
+    {
+      std::int64_t red = 0, black = 0;
+      ForEachBandNode(distance, parameters, bricks[a], scratch,
+        [&](std::int64_t i, std::int64_t j, std::int64_t k, double) { ++(IsRed(i, j, k) ? red : black); });
+      redStart[a + 1] = red;
+      blackStart[a + 1] = black;
+    }
+  });
+  if (aborted)
+  {
+    return NarrowBand{};
+  }
+  for (std::int64_t a = 0; a < numberOfBricks; ++a)
+  {
+    redStart[a + 1] += redStart[a];
+    blackStart[a + 1] += blackStart[a];
+  }
+  band.RedCount = redStart[numberOfBricks];
+  const std::int64_t size = band.RedCount + blackStart[numberOfBricks];
+  if (size > MaximumBandSize)
+  {
+    return NarrowBand{};
+  }
+  for (std::int64_t a = 0; a <= numberOfBricks; ++a)
+  {
+    blackStart[a] += band.RedCount;
+  }
+
+  // Step 2: store the band nodes and their distances, red ones first.
+  band.Node.resize(static_cast<std::size_t>(size));
+  band.Distance.resize(static_cast<std::size_t>(size));
+  ParallelFor(0, numberOfBricks, 16, [&](std::int64_t begin, std::int64_t end) {
+    double scratch[BrickNodes];
+    for (std::int64_t a = begin; a < end && !checkAbort(a, numberOfBricks, 0.33); ++a)
+    {
+      std::int64_t red = redStart[a], black = blackStart[a];
+      ForEachBandNode(distance, parameters, bricks[a], scratch,
+        [&](std::int64_t i, std::int64_t j, std::int64_t k, double d) {
+          const std::int64_t s = IsRed(i, j, k) ? red++ : black++;
+          band.Node[s] = grid.Index(i, j, k);
+          band.Distance[s] = d;
+        });
+    }
+  });
+  if (aborted)
+  {
+    return NarrowBand{};
+  }
+
+  // Step 3: connect each band node to its six neighbours. A neighbour's
+  // position in the band is found by binary search among the nodes of its
+  // brick and colour, which are sorted by grid index.
+  std::vector<std::int32_t> slotOfBrick(static_cast<std::size_t>(distance.GetNumberOfBricks()), -1);
+  for (std::int64_t a = 0; a < numberOfBricks; ++a)
+  {
+    slotOfBrick[bricks[a]] = static_cast<std::int32_t>(a);
+  }
+  const auto& brickDims = distance.GetBrickDims();
+  band.Neighbor.resize(static_cast<std::size_t>(6 * size));
+  const double offset = parameters.OffsetDistance;
+  ParallelFor(0, size, 1024, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t s = begin; s < end; ++s)
+    {
+      std::int64_t ijk[3];
+      grid.Ijk(band.Node[s], ijk);
+      // phi0 > 0 exactly when d < l (eq. 2).
+      const std::uint32_t dirichlet = band.Distance[s] < offset ? band.InsideSlot() : band.OutsideSlot();
+      const bool neighbourIsRed = !IsRed(ijk[0], ijk[1], ijk[2]);
+      for (int direction = 0; direction < 6; ++direction)
+      {
+        const int axis = direction / 2;
+        std::int64_t n[3] = { ijk[0], ijk[1], ijk[2] };
+        n[axis] += (direction % 2) ? 1 : -1;
+        std::uint32_t found = dirichlet;
+        if (n[axis] >= 0 && n[axis] < grid.Dims[axis])
+        {
+          const std::int64_t brick = (n[0] >> BrickShift) +
+            brickDims[0] * ((n[1] >> BrickShift) + brickDims[1] * (n[2] >> BrickShift));
+          const std::int32_t a = slotOfBrick[brick];
+          if (a >= 0)
+          {
+            const auto& start = neighbourIsRed ? redStart : blackStart;
+            const auto first = band.Node.begin() + start[a];
+            const auto last = band.Node.begin() + start[a + 1];
+            const std::int64_t target = grid.Index(n[0], n[1], n[2]);
+            const auto it = std::lower_bound(first, last, target);
+            if (it != last && *it == target)
+            {
+              found = static_cast<std::uint32_t>(it - band.Node.begin());
+            }
+          }
+        }
+        band.Neighbor[6 * s + direction] = found;
+      }
+    }
+  });
+  if (monitor)
+  {
+    monitor->Progress(1.0);
+  }
+  return band;
+}
+
+} // namespace nv

@@ -1,0 +1,57 @@
+// The discrete narrow band of section 3 and the paper's data structure box
+// (steps 1-3): the band nodes stored compactly, with their distance and the
+// indices of their six neighbours.
+#ifndef nvNarrowBand_h
+#define nvNarrowBand_h
+
+#include "NarrowVolumeFiltersModule.h"
+#include "nvGrid.h"
+#include "nvParameters.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace nv
+{
+class Monitor;
+class TruncatedDistance;
+
+/**
+ * Band nodes s = 0 .. L-1. They are ordered for red-black Gauss-Seidel:
+ * first the "red" nodes (i + j + k even), then the "black" ones, each colour
+ * in brick order. A node's six neighbours all have the other colour.
+ *
+ * Neighbour indices point into a phi array of size L + 2: a neighbour that is
+ * not a band node reads the Dirichlet value of eq. (5), slot L (1 - delta)
+ * when the node's own phi0 > 0 and slot L + 1 (-1 + delta) otherwise, as in
+ * the paper's step 3.
+ */
+struct NARROWVOLUMEFILTERS_EXPORT NarrowBand
+{
+  Grid GridNodes;
+  std::int64_t RedCount = 0;           ///< nodes [0, RedCount) are red
+  std::vector<std::int64_t> Node;      ///< grid index of band node s
+  std::vector<double> Distance;        ///< d of eq. (6) at band node s (+inf: beyond reach)
+  std::vector<std::uint32_t> Neighbor; ///< 6 per node: -x, +x, -y, +y, -z, +z
+
+  std::int64_t Size() const { return static_cast<std::int64_t>(this->Node.size()); }
+  std::uint32_t InsideSlot() const { return static_cast<std::uint32_t>(this->Size()); }
+  std::uint32_t OutsideSlot() const { return static_cast<std::uint32_t>(this->Size() + 1); }
+  /// Bytes held by the band's arrays.
+  std::int64_t MemoryBytes() const;
+};
+
+/// Largest band the 32-bit neighbour indices can address.
+constexpr std::int64_t MaximumBandSize = 4294967295LL - 2;
+
+/**
+ * Finds the band nodes: in Domain::NarrowBand mode the nodes with
+ * l - eta/2 < d < l + eta/2 (|phi0| < 1 - delta), in Domain::WholeDomain mode
+ * every node of the grid. Returns an empty band if the monitor asks to stop.
+ */
+NARROWVOLUMEFILTERS_EXPORT NarrowBand BuildNarrowBand(
+  const TruncatedDistance& distance, const Parameters& parameters, Monitor* monitor = nullptr);
+
+} // namespace nv
+
+#endif

@@ -1,0 +1,41 @@
+// Parallel loops for the numerical core. The core states its loops as plain
+// functions of an index range; this file runs them with vtkSMPTools. Sums and
+// maxima are reduced over fixed-size chunks in a fixed order, so results are
+// bit-identical for any number of threads.
+#ifndef nvParallel_h
+#define nvParallel_h
+
+#include "NarrowVolumeFiltersModule.h"
+
+#include <cstdint>
+#include <functional>
+
+namespace nv
+{
+
+using RangeFunction = std::function<void(std::int64_t begin, std::int64_t end)>;
+using RangeReduction = std::function<double(std::int64_t begin, std::int64_t end)>;
+
+/// Calls fn on disjoint sub-ranges covering [begin, end), possibly concurrently.
+NARROWVOLUMEFILTERS_EXPORT void ParallelFor(
+  std::int64_t begin, std::int64_t end, std::int64_t grain, const RangeFunction& fn);
+
+/// Sum of fn over fixed chunks of [0, n), added in chunk order (deterministic).
+NARROWVOLUMEFILTERS_EXPORT double ParallelSum(std::int64_t n, const RangeReduction& fn);
+
+/// Maximum of fn over fixed chunks of [0, n) (0 for an empty range).
+NARROWVOLUMEFILTERS_EXPORT double ParallelMax(std::int64_t n, const RangeReduction& fn);
+
+/// Receives progress and answers whether the caller wants the work stopped.
+class NARROWVOLUMEFILTERS_EXPORT Monitor
+{
+public:
+  virtual ~Monitor();
+  /// fraction in [0, 1] of the current stage
+  virtual void Progress(double fraction);
+  virtual bool Aborted();
+};
+
+} // namespace nv
+
+#endif

@@ -1,0 +1,193 @@
+#include "nvTruncatedDistance.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace nv
+{
+
+TruncatedDistance::TruncatedDistance(
+  const Grid& grid, const double* points, std::int64_t numberOfPoints, double reach)
+  : GridNodes(grid)
+  , Reach(reach)
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    this->BrickDims[a] = (grid.Dims[a] + BrickSize - 1) / BrickSize;
+  }
+  const std::int64_t bricks = this->GetNumberOfBricks();
+
+  // Counting sort of the points by brick: coordinates are kept relative to the
+  // grid origin so that far-from-origin clouds keep their precision.
+  std::vector<std::int64_t> brickOf(static_cast<std::size_t>(numberOfPoints));
+  this->BucketStart.assign(static_cast<std::size_t>(bricks + 1), 0);
+  for (std::int64_t p = 0; p < numberOfPoints; ++p)
+  {
+    double rel[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      rel[a] = points[3 * p + a] - grid.Origin[a];
+    }
+    const std::int64_t b = this->BrickOfPoint(rel, 0) +
+      this->BrickDims[0] * (this->BrickOfPoint(rel, 1) + this->BrickDims[1] * this->BrickOfPoint(rel, 2));
+    brickOf[static_cast<std::size_t>(p)] = b;
+    ++this->BucketStart[static_cast<std::size_t>(b + 1)];
+  }
+  for (std::int64_t b = 0; b < bricks; ++b)
+  {
+    this->BucketStart[b + 1] += this->BucketStart[b];
+  }
+  std::vector<std::int64_t> next(this->BucketStart.begin(), this->BucketStart.end() - 1);
+  this->Points.resize(static_cast<std::size_t>(3 * numberOfPoints));
+  for (std::int64_t p = 0; p < numberOfPoints; ++p)
+  {
+    const std::int64_t slot = next[static_cast<std::size_t>(brickOf[p])]++;
+    for (int a = 0; a < 3; ++a)
+    {
+      this->Points[3 * slot + a] = points[3 * p + a] - grid.Origin[a];
+    }
+  }
+}
+
+std::int64_t TruncatedDistance::BrickOfPoint(const double p[3], int axis) const
+{
+  const std::int64_t node = static_cast<std::int64_t>(std::floor(p[axis] / this->GridNodes.Spacing));
+  return std::min(std::max<std::int64_t>(node >> BrickShift, 0), this->BrickDims[axis] - 1);
+}
+
+void TruncatedDistance::BrickFirstNode(std::int64_t brick, std::int64_t ijk[3]) const
+{
+  ijk[0] = (brick % this->BrickDims[0]) * BrickSize;
+  brick /= this->BrickDims[0];
+  ijk[1] = (brick % this->BrickDims[1]) * BrickSize;
+  ijk[2] = (brick / this->BrickDims[1]) * BrickSize;
+}
+
+std::vector<std::int64_t> TruncatedDistance::ReachedBricks() const
+{
+  // Mark, for every point, the bricks that its box of nodes within reach touches (eq. 7).
+  const double h = this->GridNodes.Spacing;
+  std::vector<unsigned char> reached(static_cast<std::size_t>(this->GetNumberOfBricks()), 0);
+  const std::int64_t numberOfPoints = this->GetNumberOfPoints();
+  for (std::int64_t p = 0; p < numberOfPoints; ++p)
+  {
+    std::int64_t lo[3], hi[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      const double x = this->Points[3 * p + a];
+      const std::int64_t first = std::max<std::int64_t>(0, static_cast<std::int64_t>(std::ceil((x - this->Reach) / h)));
+      const std::int64_t last = std::min<std::int64_t>(
+        this->GridNodes.Dims[a] - 1, static_cast<std::int64_t>(std::floor((x + this->Reach) / h)));
+      lo[a] = first >> BrickShift;
+      hi[a] = std::max(first, last) >> BrickShift;
+    }
+    for (std::int64_t bk = lo[2]; bk <= hi[2]; ++bk)
+    {
+      for (std::int64_t bj = lo[1]; bj <= hi[1]; ++bj)
+      {
+        for (std::int64_t bi = lo[0]; bi <= hi[0]; ++bi)
+        {
+          reached[bi + this->BrickDims[0] * (bj + this->BrickDims[1] * bk)] = 1;
+        }
+      }
+    }
+  }
+  std::vector<std::int64_t> result;
+  for (std::size_t b = 0; b < reached.size(); ++b)
+  {
+    if (reached[b])
+    {
+      result.push_back(static_cast<std::int64_t>(b));
+    }
+  }
+  return result;
+}
+
+void TruncatedDistance::ComputeBrick(std::int64_t brick, double distance[BrickNodes]) const
+{
+  const double h = this->GridNodes.Spacing;
+  const double reach = this->Reach;
+  const double reach2 = reach * reach;
+  const double infinity = std::numeric_limits<double>::infinity();
+
+  std::int64_t first[3], last[3];
+  this->BrickFirstNode(brick, first);
+  for (int a = 0; a < 3; ++a)
+  {
+    last[a] = std::min<std::int64_t>(first[a] + BrickSize, this->GridNodes.Dims[a]) - 1;
+  }
+
+  // Squared distances first; the square root is taken once per node at the end.
+  double d2[BrickNodes];
+  std::fill(d2, d2 + BrickNodes, infinity);
+
+  // Buckets whose points may reach this brick: a point reaches node i only if
+  // |x - i h| < reach, so its node index lies within reach/h + 1 of the brick.
+  const std::int64_t margin = static_cast<std::int64_t>(std::ceil(reach / h)) + 1;
+  std::int64_t bucketLo[3], bucketHi[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    bucketLo[a] = std::max<std::int64_t>(0, first[a] - margin) >> BrickShift;
+    bucketHi[a] = std::min<std::int64_t>(this->BrickDims[a] - 1, (last[a] + margin) >> BrickShift);
+  }
+
+  for (std::int64_t bk = bucketLo[2]; bk <= bucketHi[2]; ++bk)
+  {
+    for (std::int64_t bj = bucketLo[1]; bj <= bucketHi[1]; ++bj)
+    {
+      for (std::int64_t bi = bucketLo[0]; bi <= bucketHi[0]; ++bi)
+      {
+        const std::int64_t bucket = bi + this->BrickDims[0] * (bj + this->BrickDims[1] * bk);
+        for (std::int64_t p = this->BucketStart[bucket]; p < this->BucketStart[bucket + 1]; ++p)
+        {
+          const double* x = &this->Points[3 * p];
+          // The point's box of nodes (eq. 7), clipped to this brick.
+          std::int64_t lo[3], hi[3];
+          bool empty = false;
+          for (int a = 0; a < 3; ++a)
+          {
+            lo[a] = std::max(first[a], static_cast<std::int64_t>(std::ceil((x[a] - reach) / h)));
+            hi[a] = std::min(last[a], static_cast<std::int64_t>(std::floor((x[a] + reach) / h)));
+            empty = empty || lo[a] > hi[a];
+          }
+          if (empty)
+          {
+            continue;
+          }
+          for (std::int64_t k = lo[2]; k <= hi[2]; ++k)
+          {
+            const double dz = k * h - x[2];
+            const double dz2 = dz * dz;
+            for (std::int64_t j = lo[1]; j <= hi[1]; ++j)
+            {
+              const double dy = j * h - x[1];
+              const double dyz2 = dz2 + dy * dy;
+              if (dyz2 >= reach2)
+              {
+                continue;
+              }
+              double* row = d2 + ((j - first[1]) + BrickSize * (k - first[2])) * BrickSize - first[0];
+              for (std::int64_t i = lo[0]; i <= hi[0]; ++i)
+              {
+                const double dx = i * h - x[0];
+                const double dist2 = dyz2 + dx * dx;
+                if (dist2 < row[i])
+                {
+                  row[i] = dist2;
+                }
+              }
+            }
+          }
+        }
+      }
+    }
+  }
+
+  for (int n = 0; n < BrickNodes; ++n)
+  {
+    distance[n] = d2[n] < reach2 ? std::sqrt(d2[n]) : infinity;
+  }
+}
+
+} // namespace nv

@@ -1,0 +1,67 @@
+// The truncated unsigned distance of eq. (6), computed only where it matters.
+//
+// The paper loops over the points and, for each, over the box of nodes within
+// l + eta/2 (eq. 7), keeping the minimum in a dense array. Here the grid is cut
+// into bricks of 8x8x8 nodes and the points are sorted into the bricks; the
+// distance of one brick's nodes is computed on demand from the points of the
+// neighbouring bricks. Nothing is stored per grid node: memory grows with the
+// number of points and of bricks, and bricks are independent, so they run in
+// parallel with identical results for any thread count.
+#ifndef nvTruncatedDistance_h
+#define nvTruncatedDistance_h
+
+#include "NarrowVolumeFiltersModule.h"
+#include "nvGrid.h"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace nv
+{
+
+constexpr int BrickShift = 3;
+constexpr int BrickSize = 1 << BrickShift;               ///< nodes per brick side
+constexpr int BrickNodes = BrickSize * BrickSize * BrickSize; ///< 512
+
+class NARROWVOLUMEFILTERS_EXPORT TruncatedDistance
+{
+public:
+  /**
+   * points: numberOfPoints xyz triples in world coordinates, all inside the
+   * grid's box. reach: l + eta/2; distances at or beyond it are truncated.
+   */
+  TruncatedDistance(const Grid& grid, const double* points, std::int64_t numberOfPoints, double reach);
+
+  const Grid& GetGrid() const { return this->GridNodes; }
+  double GetReach() const { return this->Reach; }
+  std::int64_t GetNumberOfPoints() const { return static_cast<std::int64_t>(this->Points.size() / 3); }
+
+  const std::array<std::int64_t, 3>& GetBrickDims() const { return this->BrickDims; }
+  std::int64_t GetNumberOfBricks() const { return this->BrickDims[0] * this->BrickDims[1] * this->BrickDims[2]; }
+  /// First node (i, j, k) of a brick.
+  void BrickFirstNode(std::int64_t brick, std::int64_t ijk[3]) const;
+
+  /// Bricks holding at least one node within reach of a point, in ascending order.
+  std::vector<std::int64_t> ReachedBricks() const;
+
+  /**
+   * The distance d of eq. (6) at the BrickNodes nodes of a brick, indexed
+   * i + 8 (j + 8 k) from the brick's first node. Nodes whose nearest point is
+   * at or beyond the reach, and nodes past the grid's end, get +infinity.
+   */
+  void ComputeBrick(std::int64_t brick, double distance[BrickNodes]) const;
+
+private:
+  std::int64_t BrickOfPoint(const double p[3], int axis) const;
+
+  Grid GridNodes;
+  double Reach;
+  std::array<std::int64_t, 3> BrickDims;
+  std::vector<double> Points;            ///< relative to the grid origin, sorted by brick
+  std::vector<std::int64_t> BucketStart; ///< points of brick b: [BucketStart[b], BucketStart[b+1])
+};
+
+} // namespace nv
+
+#endif

@@ -1,0 +1,11 @@
+"""NarrowVolume: narrow volume (thick shell) reconstruction from point clouds.
+
+    from narrowvolume import vtkNarrowVolumeReconstruction
+
+The filter is a VTK algorithm: set its input to any vtkPointSet and read the
+phase field (output port 0, vtkImageData) and the offset surfaces (output
+port 1, vtkPolyData).
+"""
+from .NarrowVolumeFilters import vtkNarrowVolumeReconstruction
+
+__all__ = ["vtkNarrowVolumeReconstruction"]

@@ -1,0 +1,276 @@
+/**
+ * @class   vtkNarrowVolumeReconstruction
+ * @brief   Reconstructs a narrow volume (a thick shell) around an unorganized point cloud.
+ *
+ * vtkNarrowVolumeReconstruction implements the phase-field method of Li et
+ * al., "Fast and efficient narrow volume reconstruction from scattered data",
+ * Pattern Recognition 48 (2015). Given points X_p and an offset distance l,
+ * it builds a uniform grid of spacing h around the points, finds the narrow
+ * band of nodes whose distance d to the nearest point is within eta/2 of l,
+ * starts from phi0 = tanh((l - d) / (sqrt(2) xi)) (eq. 2) and evolves the
+ * Allen-Cahn equation with the edge-stopping function g (eq. 1, 4) on the band
+ * only: an implicit diffusion step solved by red-black Gauss-Seidel (eq. 10,
+ * 11) and a closed-form reaction step (eq. 12) per time step. phi is close to
+ * +1 inside the shell and -1 outside; phi = 0 is the pair of offset surfaces
+ * at distance l on either side of the points.
+ *
+ * Input: any vtkPointSet (only its points are used).
+ * Output port 0 (vtkImageData): point array "phi" (float, in [-1, 1]), and on
+ * request "InitialPhi" (eq. 2), "Distance" (eq. 6) and "NarrowBand" (1 on
+ * band nodes). Its field data holds "NumberOfIterations", "NarrowBandNodes"
+ * and "RelativeChange" (one value per time step).
+ * Output port 1 (vtkPolyData): the phi = 0 surfaces, by vtkFlyingEdges3D,
+ * with point normals.
+ *
+ * @warning
+ * The work runs in parallel with vtkSMPTools. When the process-wide backend is
+ * Sequential (the default of Debian's ParaView), the filter runs its loops
+ * with the STDThread backend and NumberOfThreads threads (0: all cores).
+ * Results are bit-identical for any number of threads.
+ *
+ * @sa
+ * vtkUnsignedDistance vtkFlyingEdges3D vtkExtractSurface
+ */
+#ifndef vtkNarrowVolumeReconstruction_h
+#define vtkNarrowVolumeReconstruction_h
+
+#include "NarrowVolumeFiltersModule.h" // for export macro
+#include "vtkAlgorithm.h"
+
+#include <vector> // for the per-step history
+
+class vtkImageData;
+class vtkPointSet;
+class vtkPolyData;
+
+class NARROWVOLUMEFILTERS_EXPORT vtkNarrowVolumeReconstruction : public vtkAlgorithm
+{
+public:
+  static vtkNarrowVolumeReconstruction* New();
+  vtkTypeMacro(vtkNarrowVolumeReconstruction, vtkAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum DomainType
+  {
+    NARROW_BAND = 0,
+    WHOLE_DOMAIN = 1
+  };
+  /// Edge-stopping functions, numbered by their equation in the paper.
+  enum EdgeStoppingFunctionType
+  {
+    EQUATION_3 = 3, ///< g = 1 - phi0^2
+    EQUATION_4 = 4  ///< g = (1 - |phi0|) |phi0|
+  };
+
+  ///@{
+  /**
+   * Offset distance l in world units: the half-thickness of the shell, the
+   * distance of both phi = 0 sheets from the points. Must be > 0. Default 0.1.
+   */
+  vtkSetMacro(OffsetDistance, double);
+  vtkGetMacro(OffsetDistance, double);
+  ///@}
+
+  ///@{
+  /**
+   * Grid spacing h in world units. When <= 0 (the default), h is chosen so
+   * that the longest side of the padded box has MaximumDimension cells.
+   */
+  vtkSetMacro(SampleSpacing, double);
+  vtkGetMacro(SampleSpacing, double);
+  ///@}
+
+  ///@{
+  /**
+   * Number of cells along the longest side of the padded box when
+   * SampleSpacing <= 0. Default 100.
+   */
+  vtkSetClampMacro(MaximumDimension, int, 16, 100000);
+  vtkGetMacro(MaximumDimension, int);
+  ///@}
+
+  ///@{
+  /**
+   * xi = eps_m with m = XiCells (eq. 2): the width of the initial profile, and
+   * of the band, 2 m cells. Larger values close small holes and thin gaps.
+   * Range [1, 64], default 2 (the paper's).
+   */
+  vtkSetClampMacro(XiCells, double, 1.0, 64.0);
+  vtkGetMacro(XiCells, double);
+  ///@}
+
+  ///@{
+  /**
+   * eps = eps_m with m = EpsilonCells (eq. 1, 12): the interface width of the
+   * Allen-Cahn evolution. Larger values smooth more. Range [0.5, 256],
+   * default 6 (the paper's).
+   */
+  vtkSetClampMacro(EpsilonCells, double, 0.5, 256.0);
+  vtkGetMacro(EpsilonCells, double);
+  ///@}
+
+  ///@{
+  /**
+   * Time step dt. When <= 0 (the default), dt = eps^2 (the paper's).
+   */
+  vtkSetMacro(TimeStep, double);
+  vtkGetMacro(TimeStep, double);
+  ///@}
+
+  ///@{
+  /**
+   * Largest number of time steps. Default 5 (see ConvergenceTolerance).
+   */
+  vtkSetClampMacro(MaximumNumberOfIterations, int, 0, 100000);
+  vtkGetMacro(MaximumNumberOfIterations, int);
+  ///@}
+
+  ///@{
+  /**
+   * Stop when ||phi^{n+1} - phi^n||_2 / ||phi^n||_2 over the updated nodes
+   * drops below this value (the paper's rule, section 4, with 1e-5). 0 runs
+   * exactly MaximumNumberOfIterations steps. Default 0: see the README for
+   * why the default stopping rule is a fixed number of steps.
+   */
+  vtkSetClampMacro(ConvergenceTolerance, double, 0.0, 1.0);
+  vtkGetMacro(ConvergenceTolerance, double);
+  ///@}
+
+  ///@{
+  /**
+   * Tolerance of the Gauss-Seidel iteration of the implicit step (10): sweeps
+   * stop when no node changes by this much or more. Default 1e-6 (the paper's).
+   */
+  vtkSetClampMacro(GaussSeidelTolerance, double, 1e-14, 1.0);
+  vtkGetMacro(GaussSeidelTolerance, double);
+  ///@}
+
+  ///@{
+  /**
+   * Where the scheme runs: NARROW_BAND (default), only on band nodes; or
+   * WHOLE_DOMAIN, on every node of the grid, for comparison.
+   */
+  vtkSetClampMacro(Domain, int, NARROW_BAND, WHOLE_DOMAIN);
+  vtkGetMacro(Domain, int);
+  void SetDomainToNarrowBand() { this->SetDomain(NARROW_BAND); }
+  void SetDomainToWholeDomain() { this->SetDomain(WHOLE_DOMAIN); }
+  ///@}
+
+  ///@{
+  /**
+   * Edge-stopping function g: EQUATION_4 (default), (1 - |phi0|) |phi0|; or
+   * EQUATION_3, 1 - phi0^2.
+   */
+  vtkSetClampMacro(EdgeStoppingFunction, int, EQUATION_3, EQUATION_4);
+  vtkGetMacro(EdgeStoppingFunction, int);
+  void SetEdgeStoppingFunctionToEquation3() { this->SetEdgeStoppingFunction(EQUATION_3); }
+  void SetEdgeStoppingFunctionToEquation4() { this->SetEdgeStoppingFunction(EQUATION_4); }
+  ///@}
+
+  ///@{
+  /**
+   * Extra point arrays on output port 0: "InitialPhi" (phi0 of eq. 2),
+   * "Distance" (the truncated distance of eq. 6) and "NarrowBand" (1 on band
+   * nodes). All off by default.
+   */
+  vtkSetMacro(OutputInitialPhi, bool);
+  vtkGetMacro(OutputInitialPhi, bool);
+  vtkBooleanMacro(OutputInitialPhi, bool);
+  vtkSetMacro(OutputDistance, bool);
+  vtkGetMacro(OutputDistance, bool);
+  vtkBooleanMacro(OutputDistance, bool);
+  vtkSetMacro(OutputNarrowBand, bool);
+  vtkGetMacro(OutputNarrowBand, bool);
+  vtkBooleanMacro(OutputNarrowBand, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Threads for the parallel loops; 0 (default) uses all cores.
+   */
+  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
+  vtkGetMacro(NumberOfThreads, int);
+  ///@}
+
+  ///@{
+  /**
+   * Largest memory, in MiB, that the filter may allocate for one run; a grid
+   * that needs more is refused before any large allocation. 0 (default) means
+   * half of the machine's physical memory.
+   */
+  vtkSetClampMacro(MemoryLimit, double, 0.0, 1e12);
+  vtkGetMacro(MemoryLimit, double);
+  ///@}
+
+  ///@{
+  /**
+   * Results of the last run: time steps taken, band nodes, all grid nodes,
+   * the relative change of each step, and wall-clock seconds of the set-up
+   * (distance and band), the evolution and the output (volume and surface).
+   */
+  int GetNumberOfIterations() const { return static_cast<int>(this->RelativeChanges.size()); }
+  vtkGetMacro(NumberOfBandNodes, vtkIdType);
+  vtkGetMacro(NumberOfGridNodes, vtkIdType);
+  const std::vector<double>& GetRelativeChanges() const { return this->RelativeChanges; }
+  vtkGetMacro(SetupTime, double);
+  vtkGetMacro(EvolutionTime, double);
+  vtkGetMacro(OutputTime, double);
+  ///@}
+
+  ///@{
+  /**
+   * The input point set (any vtkPointSet), as in vtkPolyDataAlgorithm.
+   */
+  void SetInputData(vtkDataObject* input) { this->SetInputDataObject(0, input); }
+  ///@}
+
+  ///@{
+  /**
+   * The two outputs: port 0 the volume (vtkImageData), port 1 the surface (vtkPolyData).
+   */
+  vtkDataObject* GetOutput(int port) { return this->GetOutputDataObject(port); }
+  vtkImageData* GetVolumeOutput();
+  vtkPolyData* GetSurfaceOutput();
+  ///@}
+
+  vtkTypeBool ProcessRequest(
+    vtkInformation* request, vtkInformationVector** inInfo, vtkInformationVector* outInfo) override;
+
+protected:
+  vtkNarrowVolumeReconstruction();
+  ~vtkNarrowVolumeReconstruction() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+
+  double OffsetDistance = 0.1;
+  double SampleSpacing = 0.0;
+  int MaximumDimension = 100;
+  double XiCells = 2.0;
+  double EpsilonCells = 6.0;
+  double TimeStep = 0.0;
+  int MaximumNumberOfIterations = 5;
+  double ConvergenceTolerance = 0.0;
+  double GaussSeidelTolerance = 1e-6;
+  int Domain = NARROW_BAND;
+  int EdgeStoppingFunction = EQUATION_4;
+  bool OutputInitialPhi = false;
+  bool OutputDistance = false;
+  bool OutputNarrowBand = false;
+  int NumberOfThreads = 0;
+  double MemoryLimit = 0.0;
+
+  vtkIdType NumberOfBandNodes = 0;
+  vtkIdType NumberOfGridNodes = 0;
+  std::vector<double> RelativeChanges;
+  double SetupTime = 0.0;
+  double EvolutionTime = 0.0;
+  double OutputTime = 0.0;
+
+private:
+  vtkNarrowVolumeReconstruction(const vtkNarrowVolumeReconstruction&) = delete;
+  void operator=(const vtkNarrowVolumeReconstruction&) = delete;
+};
+
+#endif
