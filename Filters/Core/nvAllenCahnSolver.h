@@ -35,9 +35,11 @@ public:
   /// g of eq. (4) or eq. (3) for a given phi0.
   static double EdgeStop(double phi0, EdgeStopping function);
   /// Closed-form solution of (9) over one step, eq. (12); decay = exp(-2 g dt / eps^2).
+  /// A decay that underflows to 0 (huge dt) sends phi to sign(phi), and 0 stays 0.
   static double React(double phi, double decay)
   {
-    return phi / std::sqrt(decay + phi * phi * (1.0 - decay));
+    const double q = decay + phi * phi * (1.0 - decay);
+    return q > 0.0 ? phi / std::sqrt(q) : phi;
   }
 
   /// One time step: diffusion (10) then reaction (12).

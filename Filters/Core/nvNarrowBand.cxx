@@ -79,7 +79,7 @@ NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& 
   auto checkAbort = [&](std::int64_t done, std::int64_t total, double base) {
     if (monitor && (done & 63) == 0)
     {
-      monitor->Progress(base + 0.33 * done / std::max<std::int64_t>(total, 1));
+      monitor->Progress(base + 0.5 * done / std::max<std::int64_t>(total, 1));
       if (monitor->Aborted())
       {
         aborted = true;
@@ -88,28 +88,41 @@ NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& 
     return aborted.load();
   };
 
-  // Count red and black band nodes per brick (first pass over the distances).
-  std::vector<std::int64_t> redStart(static_cast<std::size_t>(numberOfBricks + 1), 0);
-  std::vector<std::int64_t> blackStart(static_cast<std::size_t>(numberOfBricks + 1), 0);
+  // Distances brick by brick; each brick keeps its band nodes, red and black
+  // apart, in ascending grid index. This transient list grows with the band.
+  struct Entry
+  {
+    std::int64_t Node;
+    double Distance;
+  };
+  struct BrickBand
+  {
+    std::vector<Entry> Red, Black;
+  };
+  std::vector<BrickBand> perBrick(static_cast<std::size_t>(numberOfBricks));
   ParallelFor(0, numberOfBricks, 16, [&](std::int64_t begin, std::int64_t end) {
     double scratch[BrickNodes];
     for (std::int64_t a = begin; a < end && !checkAbort(a, numberOfBricks, 0.0); ++a)
     {
-      std::int64_t red = 0, black = 0;
+      BrickBand& out = perBrick[a];
       ForEachBandNode(distance, parameters, bricks[a], scratch,
-        [&](std::int64_t i, std::int64_t j, std::int64_t k, double) { ++(IsRed(i, j, k) ? red : black); });
-      redStart[a + 1] = red;
-      blackStart[a + 1] = black;
+        [&](std::int64_t i, std::int64_t j, std::int64_t k, double d) {
+          (IsRed(i, j, k) ? out.Red : out.Black).push_back(Entry{ grid.Index(i, j, k), d });
+        });
     }
   });
   if (aborted)
   {
     return NarrowBand{};
   }
+
+  // Step 2: store the band nodes compactly, red ones first, in brick order.
+  std::vector<std::int64_t> redStart(static_cast<std::size_t>(numberOfBricks + 1), 0);
+  std::vector<std::int64_t> blackStart(static_cast<std::size_t>(numberOfBricks + 1), 0);
   for (std::int64_t a = 0; a < numberOfBricks; ++a)
   {
-    redStart[a + 1] += redStart[a];
-    blackStart[a + 1] += blackStart[a];
+    redStart[a + 1] = redStart[a] + static_cast<std::int64_t>(perBrick[a].Red.size());
+    blackStart[a + 1] = blackStart[a] + static_cast<std::int64_t>(perBrick[a].Black.size());
   }
   band.RedCount = redStart[numberOfBricks];
   const std::int64_t size = band.RedCount + blackStart[numberOfBricks];
@@ -121,27 +134,28 @@ NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& 
   {
     blackStart[a] += band.RedCount;
   }
-
-  // Step 2: store the band nodes and their distances, red ones first.
   band.Node.resize(static_cast<std::size_t>(size));
   band.Distance.resize(static_cast<std::size_t>(size));
-  ParallelFor(0, numberOfBricks, 16, [&](std::int64_t begin, std::int64_t end) {
-    double scratch[BrickNodes];
-    for (std::int64_t a = begin; a < end && !checkAbort(a, numberOfBricks, 0.33); ++a)
+  ParallelFor(0, numberOfBricks, 64, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t a = begin; a < end; ++a)
     {
-      std::int64_t red = redStart[a], black = blackStart[a];
-      ForEachBandNode(distance, parameters, bricks[a], scratch,
-        [&](std::int64_t i, std::int64_t j, std::int64_t k, double d) {
-          const std::int64_t s = IsRed(i, j, k) ? red++ : black++;
-          band.Node[s] = grid.Index(i, j, k);
-          band.Distance[s] = d;
-        });
+      std::int64_t s = redStart[a];
+      for (const Entry& e : perBrick[a].Red)
+      {
+        band.Node[s] = e.Node;
+        band.Distance[s++] = e.Distance;
+      }
+      s = blackStart[a];
+      for (const Entry& e : perBrick[a].Black)
+      {
+        band.Node[s] = e.Node;
+        band.Distance[s++] = e.Distance;
+      }
+      std::vector<Entry>().swap(perBrick[a].Red);
+      std::vector<Entry>().swap(perBrick[a].Black);
     }
   });
-  if (aborted)
-  {
-    return NarrowBand{};
-  }
+  std::vector<BrickBand>().swap(perBrick);
 
   // Step 3: connect each band node to its six neighbours. A neighbour's
   // position in the band is found by binary search among the nodes of its

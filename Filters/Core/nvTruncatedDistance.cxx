@@ -18,8 +18,9 @@ TruncatedDistance::TruncatedDistance(
   }
   const std::int64_t bricks = this->GetNumberOfBricks();
 
-  // Counting sort of the points by brick: coordinates are kept relative to the
-  // grid origin so that far-from-origin clouds keep their precision.
+  // Counting sort of the points by brick. Coordinates are kept relative to the
+  // grid origin, in cells (x - origin) / h, so that far-from-origin clouds
+  // keep their precision and the inner loops need no division.
   std::vector<std::int64_t> brickOf(static_cast<std::size_t>(numberOfPoints));
   this->BucketStart.assign(static_cast<std::size_t>(bricks + 1), 0);
   for (std::int64_t p = 0; p < numberOfPoints; ++p)
@@ -27,7 +28,7 @@ TruncatedDistance::TruncatedDistance(
     double rel[3];
     for (int a = 0; a < 3; ++a)
     {
-      rel[a] = points[3 * p + a] - grid.Origin[a];
+      rel[a] = (points[3 * p + a] - grid.Origin[a]) / grid.Spacing;
     }
     const std::int64_t b = this->BrickOfPoint(rel, 0) +
       this->BrickDims[0] * (this->BrickOfPoint(rel, 1) + this->BrickDims[1] * this->BrickOfPoint(rel, 2));
@@ -45,14 +46,14 @@ TruncatedDistance::TruncatedDistance(
     const std::int64_t slot = next[static_cast<std::size_t>(brickOf[p])]++;
     for (int a = 0; a < 3; ++a)
     {
-      this->Points[3 * slot + a] = points[3 * p + a] - grid.Origin[a];
+      this->Points[3 * slot + a] = (points[3 * p + a] - grid.Origin[a]) / grid.Spacing;
     }
   }
 }
 
 std::int64_t TruncatedDistance::BrickOfPoint(const double p[3], int axis) const
 {
-  const std::int64_t node = static_cast<std::int64_t>(std::floor(p[axis] / this->GridNodes.Spacing));
+  const std::int64_t node = static_cast<std::int64_t>(std::floor(p[axis]));
   return std::min(std::max<std::int64_t>(node >> BrickShift, 0), this->BrickDims[axis] - 1);
 }
 
@@ -67,7 +68,7 @@ void TruncatedDistance::BrickFirstNode(std::int64_t brick, std::int64_t ijk[3]) 
 std::vector<std::int64_t> TruncatedDistance::ReachedBricks() const
 {
   // Mark, for every point, the bricks that its box of nodes within reach touches (eq. 7).
-  const double h = this->GridNodes.Spacing;
+  const double reach = this->Reach / this->GridNodes.Spacing; // in cells
   std::vector<unsigned char> reached(static_cast<std::size_t>(this->GetNumberOfBricks()), 0);
   const std::int64_t numberOfPoints = this->GetNumberOfPoints();
   for (std::int64_t p = 0; p < numberOfPoints; ++p)
@@ -76,9 +77,9 @@ std::vector<std::int64_t> TruncatedDistance::ReachedBricks() const
     for (int a = 0; a < 3; ++a)
     {
       const double x = this->Points[3 * p + a];
-      const std::int64_t first = std::max<std::int64_t>(0, static_cast<std::int64_t>(std::ceil((x - this->Reach) / h)));
-      const std::int64_t last = std::min<std::int64_t>(
-        this->GridNodes.Dims[a] - 1, static_cast<std::int64_t>(std::floor((x + this->Reach) / h)));
+      const std::int64_t first = std::max<std::int64_t>(0, static_cast<std::int64_t>(std::ceil(x - reach)));
+      const std::int64_t last =
+        std::min<std::int64_t>(this->GridNodes.Dims[a] - 1, static_cast<std::int64_t>(std::floor(x + reach)));
       lo[a] = first >> BrickShift;
       hi[a] = std::max(first, last) >> BrickShift;
     }
@@ -106,8 +107,9 @@ std::vector<std::int64_t> TruncatedDistance::ReachedBricks() const
 
 void TruncatedDistance::ComputeBrick(std::int64_t brick, double distance[BrickNodes]) const
 {
+  // Everything in cells: node (i, j, k) sits at (i, j, k), points at x / h.
   const double h = this->GridNodes.Spacing;
-  const double reach = this->Reach;
+  const double reach = this->Reach / h;
   const double reach2 = reach * reach;
   const double infinity = std::numeric_limits<double>::infinity();
 
@@ -123,8 +125,8 @@ void TruncatedDistance::ComputeBrick(std::int64_t brick, double distance[BrickNo
   std::fill(d2, d2 + BrickNodes, infinity);
 
   // Buckets whose points may reach this brick: a point reaches node i only if
-  // |x - i h| < reach, so its node index lies within reach/h + 1 of the brick.
-  const std::int64_t margin = static_cast<std::int64_t>(std::ceil(reach / h)) + 1;
+  // |x - i| < reach, so its node index lies within reach + 1 of the brick.
+  const std::int64_t margin = static_cast<std::int64_t>(std::ceil(reach)) + 1;
   std::int64_t bucketLo[3], bucketHi[3];
   for (int a = 0; a < 3; ++a)
   {
@@ -147,35 +149,38 @@ void TruncatedDistance::ComputeBrick(std::int64_t brick, double distance[BrickNo
           bool empty = false;
           for (int a = 0; a < 3; ++a)
           {
-            lo[a] = std::max(first[a], static_cast<std::int64_t>(std::ceil((x[a] - reach) / h)));
-            hi[a] = std::min(last[a], static_cast<std::int64_t>(std::floor((x[a] + reach) / h)));
+            lo[a] = std::max(first[a], static_cast<std::int64_t>(std::ceil(x[a] - reach)));
+            hi[a] = std::min(last[a], static_cast<std::int64_t>(std::floor(x[a] + reach)));
             empty = empty || lo[a] > hi[a];
           }
           if (empty)
           {
             continue;
           }
+          // dx^2 along the row, computed once per point and brick.
+          double dx2[BrickSize];
+          for (std::int64_t i = lo[0]; i <= hi[0]; ++i)
+          {
+            const double dx = static_cast<double>(i) - x[0];
+            dx2[i - lo[0]] = dx * dx;
+          }
+          const int rowLength = static_cast<int>(hi[0] - lo[0] + 1);
           for (std::int64_t k = lo[2]; k <= hi[2]; ++k)
           {
-            const double dz = k * h - x[2];
+            const double dz = static_cast<double>(k) - x[2];
             const double dz2 = dz * dz;
             for (std::int64_t j = lo[1]; j <= hi[1]; ++j)
             {
-              const double dy = j * h - x[1];
+              const double dy = static_cast<double>(j) - x[1];
               const double dyz2 = dz2 + dy * dy;
               if (dyz2 >= reach2)
               {
                 continue;
               }
-              double* row = d2 + ((j - first[1]) + BrickSize * (k - first[2])) * BrickSize - first[0];
-              for (std::int64_t i = lo[0]; i <= hi[0]; ++i)
+              double* row = d2 + ((j - first[1]) + BrickSize * (k - first[2])) * BrickSize + (lo[0] - first[0]);
+              for (int i = 0; i < rowLength; ++i)
               {
-                const double dx = i * h - x[0];
-                const double dist2 = dyz2 + dx * dx;
-                if (dist2 < row[i])
-                {
-                  row[i] = dist2;
-                }
+                row[i] = std::min(row[i], dyz2 + dx2[i]);
               }
             }
           }
@@ -186,7 +191,7 @@ void TruncatedDistance::ComputeBrick(std::int64_t brick, double distance[BrickNo
 
   for (int n = 0; n < BrickNodes; ++n)
   {
-    distance[n] = d2[n] < reach2 ? std::sqrt(d2[n]) : infinity;
+    distance[n] = d2[n] < reach2 ? std::sqrt(d2[n]) * h : infinity;
   }
 }
 

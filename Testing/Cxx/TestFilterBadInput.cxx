@@ -1,0 +1,139 @@
+// Bad input gets a clear error, an empty output and no crash.
+#include "vtkNarrowVolumeReconstruction.h"
+
+#include "nvTestUtilities.h"
+
+#include <vtkCommand.h>
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace
+{
+
+/// Records the error messages a filter sends.
+class ErrorCatcher : public vtkCommand
+{
+public:
+  static ErrorCatcher* New() { return new ErrorCatcher; }
+  void Execute(vtkObject*, unsigned long, void* data) override
+  {
+    this->Messages += static_cast<const char*>(data);
+    this->Messages += "\n";
+  }
+  std::string Messages;
+};
+
+vtkSmartPointer<vtkPolyData> Cloud(const std::vector<double>& xyz)
+{
+  vtkNew<vtkPoints> points;
+  for (std::size_t p = 0; p < xyz.size(); p += 3)
+  {
+    points->InsertNextPoint(&xyz[p]);
+  }
+  auto cloud = vtkSmartPointer<vtkPolyData>::New();
+  cloud->SetPoints(points);
+  return cloud;
+}
+
+/// Runs the filter and checks it reported an error containing `expected`
+/// and left both outputs empty.
+void ExpectError(vtkNarrowVolumeReconstruction* filter, vtkDataObject* input, const std::string& expected)
+{
+  vtkNew<ErrorCatcher> catcher;
+  const unsigned long tag = filter->AddObserver(vtkCommand::ErrorEvent, catcher);
+  filter->SetInputData(input);
+  filter->Modified();
+  filter->Update();
+  filter->RemoveObserver(tag);
+  const bool found = catcher->Messages.find(expected) != std::string::npos;
+  if (!found)
+  {
+    std::printf("expected an error with \"%s\", got \"%s\"\n", expected.c_str(), catcher->Messages.c_str());
+  }
+  NV_CHECK(found);
+  NV_CHECK(filter->GetVolumeOutput()->GetNumberOfPoints() == 0);
+  NV_CHECK(filter->GetSurfaceOutput()->GetNumberOfPoints() == 0);
+}
+
+vtkSmartPointer<vtkNarrowVolumeReconstruction> Filter()
+{
+  auto filter = vtkSmartPointer<vtkNarrowVolumeReconstruction>::New();
+  filter->SetOffsetDistance(0.1);
+  filter->SetSampleSpacing(0.05);
+  return filter;
+}
+
+} // namespace
+
+int main()
+{
+  const double origin[3] = { 0, 0, 0 };
+  const std::vector<double> good = nvtest::SpherePoints(200, 0.5, origin);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+
+  // A good run first, so that every failure below must also clear old output.
+  auto filter = Filter();
+  filter->SetInputData(Cloud(good));
+  filter->Update();
+  NV_CHECK(filter->GetSurfaceOutput()->GetNumberOfPoints() > 0);
+
+  ExpectError(filter, Cloud({}), "no points");
+  ExpectError(filter, vtkNew<vtkPolyData>(), "no points");
+
+  std::vector<double> withNaN = good;
+  withNaN[3 * 17 + 1] = nan;
+  filter->SetInputData(Cloud(good));
+  filter->Update();
+  ExpectError(filter, Cloud(withNaN), "Input point 17 has a non-finite coordinate");
+  std::vector<double> withInf = good;
+  withInf[3 * 5 + 2] = -inf;
+  ExpectError(filter, Cloud(withInf), "Input point 5 has a non-finite coordinate");
+
+  for (double offset : { 0.0, -0.1, nan, inf })
+  {
+    auto f = Filter();
+    f->SetOffsetDistance(offset);
+    ExpectError(f, Cloud(good), "OffsetDistance must be a finite value > 0");
+  }
+  for (double spacing : { nan, inf, -inf })
+  {
+    auto f = Filter();
+    f->SetSampleSpacing(spacing);
+    ExpectError(f, Cloud(good), "SampleSpacing must be finite");
+  }
+  {
+    auto f = Filter();
+    f->SetTimeStep(nan);
+    ExpectError(f, Cloud(good), "TimeStep must be finite");
+  }
+  {
+    // 1e-5 spacing over a unit cloud: 10^15 nodes, refused before allocating.
+    auto f = Filter();
+    f->SetSampleSpacing(1e-5);
+    ExpectError(f, Cloud(good), "The grid is too large");
+    // A modest grid over a small memory limit is refused too.
+    auto g = Filter();
+    g->SetSampleSpacing(0.01);
+    g->SetMemoryLimit(1.0);
+    ExpectError(g, Cloud(good), "The grid is too large");
+  }
+  {
+    // SampleSpacing <= 0 derives the spacing: not an error.
+    auto f = Filter();
+    f->SetSampleSpacing(0.0);
+    f->SetMaximumDimension(40);
+    f->SetInputData(Cloud(good));
+    f->Update();
+    int dims[3];
+    f->GetVolumeOutput()->GetDimensions(dims);
+    NV_CHECK(std::max(dims[0], std::max(dims[1], dims[2])) == 41);
+  }
+  return nvtest::Result("TestFilterBadInput");
+}

@@ -1,0 +1,51 @@
+"""The ParaView plugin in pvpython: LoadPlugin, then NarrowVolumeReconstruction."""
+import sys
+
+import numpy as np
+from paraview import servermanager
+
+import paraview.simple as pvs
+from vtkmodules.util.numpy_support import vtk_to_numpy
+
+import nvtesting
+
+plugin = sys.argv[1]
+pvs.LoadPlugin(plugin, ns=globals())
+t = nvtesting.Checker("test_plugin_pvpython")
+
+source = pvs.Sphere(Radius=0.5, ThetaResolution=80, PhiResolution=80)
+f = NarrowVolumeReconstruction(Input=source)  # noqa: F821 (defined by LoadPlugin)
+t.check(f.GetXMLLabel() == "Narrow Volume Reconstruction", "label %s" % f.GetXMLLabel())
+defaults = dict(OffsetDistance=0.1, SampleSpacing=0.0, MaximumDimension=100, XiCells=2.0,
+                EpsilonCells=6.0, TimeStep=0.0, ConvergenceTolerance=0.0, GaussSeidelTolerance=1e-6)
+for name, value in defaults.items():
+    t.check(abs(f.GetPropertyValue(name) - value) < 1e-12, "default %s = %s" % (name, f.GetPropertyValue(name)))
+t.check(f.Domain == "Narrow Band", "Domain default %s" % f.Domain)
+# Every property of the XML is reachable in pvpython under its XML name.
+for name in f.ListProperties():
+    t.check(f.GetProperty(name) is not None, "property %s" % name)
+for name in ("OffsetDistance", "SampleSpacing", "MaximumDimension", "XiCells", "EpsilonCells", "TimeStep",
+             "MaximumNumberOfIterations", "ConvergenceTolerance", "Domain", "EdgeStoppingFunction",
+             "GaussSeidelTolerance", "OutputInitialPhi", "OutputDistance", "OutputNarrowBand"):
+    t.check(name in f.ListProperties(), "pvpython name %s" % name)
+f.OffsetDistance = 0.1
+f.SampleSpacing = 0.025
+f.UpdatePipeline()
+
+volume = servermanager.Fetch(f)
+surface = servermanager.Fetch(f, idx=1)
+t.check(volume.IsA("vtkImageData"), "port 0 is image data: %s" % volume.GetClassName())
+t.check(surface.IsA("vtkPolyData"), "port 1 is polydata: %s" % surface.GetClassName())
+phi = vtk_to_numpy(volume.GetPointData().GetArray("phi"))
+t.check(phi.min() >= -1 and phi.max() <= 1, "phi in [-1, 1]")
+t.check(nvtesting.boundary_edges(surface) == 0, "closed surface")
+t.check(nvtesting.regions(surface) == 2, "two sheets")
+r = np.linalg.norm(nvtesting.points_of(surface), axis=1)
+t.check(abs(r[r < 0.5].mean() - 0.4) < 0.0125 and abs(r[r > 0.5].mean() - 0.6) < 0.0125, "sheet radii")
+
+# Enumerations by name, as a pvpython user writes them.
+f.Domain = "Whole Domain"
+f.EdgeStoppingFunction = "Eq. (3): 1-phi0^2"
+f.UpdatePipeline()
+t.check(servermanager.Fetch(f, idx=1).GetNumberOfPoints() > 0, "whole domain, eq. 3")
+t.finish()
