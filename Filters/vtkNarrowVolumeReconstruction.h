@@ -119,7 +119,7 @@ public:
 
   ///@{
   /**
-   * Largest number of time steps. Default 5 (see ConvergenceTolerance).
+   * Largest number of time steps. Default 3: see ConvergenceTolerance.
    */
   vtkSetClampMacro(MaximumNumberOfIterations, int, 0, 100000);
   vtkGetMacro(MaximumNumberOfIterations, int);
@@ -250,7 +250,7 @@ protected:
   double XiCells = 2.0;
   double EpsilonCells = 6.0;
   double TimeStep = 0.0;
-  int MaximumNumberOfIterations = 5;
+  int MaximumNumberOfIterations = 3;
   double ConvergenceTolerance = 0.0;
   double GaussSeidelTolerance = 1e-6;
   int Domain = NARROW_BAND;

@@ -16,7 +16,7 @@ t = nvtesting.Checker("test_plugin_pvpython")
 source = pvs.Sphere(Radius=0.5, ThetaResolution=80, PhiResolution=80)
 f = NarrowVolumeReconstruction(Input=source)  # noqa: F821 (defined by LoadPlugin)
 t.check(f.GetXMLLabel() == "Narrow Volume Reconstruction", "label %s" % f.GetXMLLabel())
-defaults = dict(OffsetDistance=0.1, SampleSpacing=0.0, MaximumDimension=100, XiCells=2.0,
+defaults = dict(MaximumNumberOfIterations=3, OffsetDistance=0.1, SampleSpacing=0.0, MaximumDimension=100, XiCells=2.0,
                 EpsilonCells=6.0, TimeStep=0.0, ConvergenceTolerance=0.0, GaussSeidelTolerance=1e-6)
 for name, value in defaults.items():
     t.check(abs(f.GetPropertyValue(name) - value) < 1e-12, "default %s = %s" % (name, f.GetPropertyValue(name)))

@@ -1,0 +1,43 @@
+"""examples/reconstruct.py runs in pvpython and in pvbatch and writes a
+watertight shell (STL), the phi volume and a picture."""
+import os
+import subprocess
+import sys
+import tempfile
+
+from vtkmodules.vtkIOGeometry import vtkSTLReader
+from vtkmodules.vtkIOXML import vtkXMLImageDataReader
+from vtkmodules.vtkIOImage import vtkPNGReader
+
+import nvtesting
+
+source_dir, plugin, with_xvfb = sys.argv[1], sys.argv[2], sys.argv[3]
+t = nvtesting.Checker("test_example_script")
+script = os.path.join(source_dir, "examples", "reconstruct.py")
+
+for program in ("pvpython", "pvbatch"):
+    out = tempfile.mkdtemp(prefix="nv-example-")
+    command = [with_xvfb, program, script, "--plugin", plugin, "--max-dim", "60", "--out", out]
+    result = subprocess.run(command, capture_output=True, text=True, timeout=600)
+    print(result.stdout)
+    t.check(result.returncode == 0, "%s exit code %d: %s" % (program, result.returncode, result.stderr[-2000:]))
+    for suffix in ("_phi.vti", "_shell.vtp", "_shell.stl", ".png"):
+        t.check(os.path.exists(os.path.join(out, "trefoil" + suffix)), "%s wrote trefoil%s" % (program, suffix))
+    stl = vtkSTLReader()
+    stl.SetFileName(os.path.join(out, "trefoil_shell.stl"))
+    stl.Update()
+    shell = stl.GetOutput()
+    t.check(shell.GetNumberOfCells() > 1000, "%s: STL has triangles" % program)
+    t.check(nvtesting.boundary_edges(shell) == 0, "%s: STL is watertight" % program)
+    vti = vtkXMLImageDataReader()
+    vti.SetFileName(os.path.join(out, "trefoil_phi.vti"))
+    vti.Update()
+    t.check(vti.GetOutput().GetPointData().GetArray("phi") is not None, "%s: phi in the .vti" % program)
+    png = vtkPNGReader()
+    png.SetFileName(os.path.join(out, "trefoil.png"))
+    png.Update()
+    scalars = png.GetOutput().GetPointData().GetScalars()
+    # The picture has content: more than one colour.
+    lo, hi = scalars.GetRange(0) if scalars else (0, 0)
+    t.check(hi - lo > 50, "%s: picture has content (red channel %g..%g)" % (program, lo, hi))
+t.finish()
