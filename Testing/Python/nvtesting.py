@@ -65,3 +65,41 @@ class Checker:
     def finish(self):
         print("%s: %s (%d failed checks)" % (self.name, "FAILED" if self.failures else "passed", self.failures))
         sys.exit(1 if self.failures else 0)
+
+
+def face_normal_roughness(surface):
+    """Mean angle (degrees) between the normals of triangles that share an
+    edge: 0 for a plane, small for a smooth surface, larger for a wrinkled one."""
+    from vtkmodules.vtkFiltersCore import vtkTriangleFilter
+
+    triangles = vtkTriangleFilter()
+    triangles.SetInputData(surface)
+    triangles.Update()
+    mesh = triangles.GetOutput()
+    x = points_of(mesh)
+    cells = vtk_to_numpy(mesh.GetPolys().GetConnectivityArray()).reshape(-1, 3)
+    n = np.cross(x[cells[:, 1]] - x[cells[:, 0]], x[cells[:, 2]] - x[cells[:, 0]])
+    length = np.linalg.norm(n, axis=1)
+    # Slivers of zero area (flying edges makes a few where phi = 0 at a node) have no normal.
+    cells, n = cells[length > 0], n[length > 0] / length[length > 0][:, None]
+    # Each edge, as a sorted vertex pair, with the triangle it belongs to.
+    edges = np.vstack([cells[:, [0, 1]], cells[:, [1, 2]], cells[:, [2, 0]]])
+    edges.sort(axis=1)
+    owner = np.tile(np.arange(len(cells)), 3)
+    order = np.lexsort((edges[:, 1], edges[:, 0]))
+    edges, owner = edges[order], owner[order]
+    same = np.all(edges[1:] == edges[:-1], axis=1)
+    a, b = owner[:-1][same], owner[1:][same]
+    cosine = np.clip((n[a] * n[b]).sum(axis=1), -1.0, 1.0)
+    return float(np.degrees(np.arccos(cosine)).mean())
+
+
+def euler_characteristic(surface):
+    """V - E + F of a triangle mesh: 2 per closed sphere-like sheet, 2 less for
+    every tunnel (a hole through the shell's wall, or a handle)."""
+    cells = vtk_to_numpy(surface.GetPolys().GetConnectivityArray()).reshape(-1, 3)
+    edges = np.vstack([cells[:, [0, 1]], cells[:, [1, 2]], cells[:, [2, 0]]])
+    edges.sort(axis=1)
+    unique_edges = np.unique(edges, axis=0)
+    used = np.unique(cells)
+    return int(len(used) - len(unique_edges) + len(cells))
