@@ -49,7 +49,8 @@ AllenCahnSolver::AllenCahnSolver(const NarrowBand& band, const Parameters& param
       const double phi0 = InitialPhi(band.Distance[s], l, xi); // eq. (2); d = inf gives -1
       const double g = EdgeStop(phi0, function);               // eq. (4) or (3)
       this->Phi[s] = phi0;
-      this->Coupling[s] = dt * g / (h * h);
+      const double c = dt * g / (h * h);
+      this->Coupling[s] = c / (1.0 + 6.0 * c);
       this->Decay[s] = std::exp(-2.0 * g * dt / (eps * eps));
     }
   });
@@ -64,11 +65,12 @@ double AllenCahnSolver::HalfSweep(std::int64_t begin, std::int64_t end)
     for (std::int64_t s = begin + first; s < begin + last; ++s)
     {
       // (10)-(11) at node s with its neighbours held fixed:
-      // (1 + 6 c) phi_s - c sum(neighbours) = phi^n_s, c = dt g_s / h^2.
+      // (1 + 6 c) phi_s - c sum(neighbours) = phi^n_s, c = dt g_s / h^2, so
+      // phi_s = phi^n_s + w (sum - 6 phi^n_s) with w = c / (1 + 6 c).
       const std::uint32_t* n = neighbor + 6 * s;
       const double sum = phi[n[0]] + phi[n[1]] + phi[n[2]] + phi[n[3]] + phi[n[4]] + phi[n[5]];
-      const double c = this->Coupling[s];
-      const double updated = (this->Previous[s] + c * sum) / (1.0 + 6.0 * c);
+      const double rhs = this->Previous[s];
+      const double updated = rhs + this->Coupling[s] * (sum - 6.0 * rhs);
       change = std::max(change, std::fabs(updated - phi[s]));
       phi[s] = updated;
     }

@@ -70,7 +70,7 @@ private:
   Parameters Params;
   std::vector<double> Phi;      ///< L + 2 values
   std::vector<double> Previous; ///< phi^n, the right-hand side of (10)
-  std::vector<double> Coupling; ///< dt g_s / h^2
+  std::vector<double> Coupling; ///< w_s = c_s / (1 + 6 c_s), c_s = dt g_s / h^2
   std::vector<double> Decay;    ///< exp(-2 g_s dt / eps^2)
 };
 

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <bitset>
 #include <cmath>
 
 namespace nv
@@ -157,15 +158,44 @@ NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& 
   });
   std::vector<BrickBand>().swap(perBrick);
 
-  // Step 3: connect each band node to its six neighbours. A neighbour's
-  // position in the band is found by binary search among the nodes of its
-  // brick and colour, which are sorted by grid index.
+  // Step 3: connect each band node to its six neighbours. Each brick keeps a
+  // 512-bit occupancy mask of its band nodes (64 bytes a brick, nothing per
+  // node); a neighbour's position in the band is the start of its brick's
+  // colour range plus the number of same-coloured band nodes before it.
   std::vector<std::int32_t> slotOfBrick(static_cast<std::size_t>(distance.GetNumberOfBricks()), -1);
   for (std::int64_t a = 0; a < numberOfBricks; ++a)
   {
     slotOfBrick[bricks[a]] = static_cast<std::int32_t>(a);
   }
+  constexpr int Words = BrickNodes / 64;
+  std::vector<std::uint64_t> occupied(static_cast<std::size_t>(numberOfBricks * Words), 0);
   const auto& brickDims = distance.GetBrickDims();
+  auto localIndex = [](const std::int64_t ijk[3]) {
+    return static_cast<int>((ijk[0] & (BrickSize - 1)) +
+      BrickSize * ((ijk[1] & (BrickSize - 1)) + BrickSize * (ijk[2] & (BrickSize - 1))));
+  };
+  ParallelFor(0, numberOfBricks, 64, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t a = begin; a < end; ++a)
+    {
+      for (const auto* start : { &redStart, &blackStart })
+      {
+        for (std::int64_t s = (*start)[a]; s < (*start)[a + 1]; ++s)
+        {
+          std::int64_t ijk[3];
+          grid.Ijk(band.Node[s], ijk);
+          const int n = localIndex(ijk);
+          occupied[a * Words + n / 64] |= std::uint64_t(1) << (n % 64);
+        }
+      }
+    }
+  });
+  // Local index n = i + 8 j + 64 k; word w holds k = w. Bits of even i + j + k:
+  // rows j alternate between the patterns 0x55 and 0xAA, swapped for odd k.
+  const std::uint64_t evenWordMask = 0xAA55AA55AA55AA55ULL; // for k even
+  auto sameColourMask = [&](int word, bool red) {
+    const std::uint64_t even = (word % 2 == 0) ? evenWordMask : ~evenWordMask;
+    return red ? even : ~even;
+  };
   band.Neighbor.resize(static_cast<std::size_t>(6 * size));
   const double offset = parameters.OffsetDistance;
   ParallelFor(0, size, 1024, [&](std::int64_t begin, std::int64_t end) {
@@ -184,20 +214,22 @@ NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& 
         std::uint32_t found = dirichlet;
         if (n[axis] >= 0 && n[axis] < grid.Dims[axis])
         {
-          const std::int64_t brick = (n[0] >> BrickShift) +
-            brickDims[0] * ((n[1] >> BrickShift) + brickDims[1] * (n[2] >> BrickShift));
-          const std::int32_t a = slotOfBrick[brick];
-          if (a >= 0)
+          const std::int32_t a = slotOfBrick[(n[0] >> BrickShift) +
+            brickDims[0] * ((n[1] >> BrickShift) + brickDims[1] * (n[2] >> BrickShift))];
+          const int local = localIndex(n);
+          const std::uint64_t* mask = a >= 0 ? &occupied[static_cast<std::size_t>(a) * Words] : nullptr;
+          if (mask && ((mask[local / 64] >> (local % 64)) & 1))
           {
-            const auto& start = neighbourIsRed ? redStart : blackStart;
-            const auto first = band.Node.begin() + start[a];
-            const auto last = band.Node.begin() + start[a + 1];
-            const std::int64_t target = grid.Index(n[0], n[1], n[2]);
-            const auto it = std::lower_bound(first, last, target);
-            if (it != last && *it == target)
+            std::int64_t rank = 0;
+            for (int w = 0; w < local / 64; ++w)
             {
-              found = static_cast<std::uint32_t>(it - band.Node.begin());
+              rank += static_cast<std::int64_t>(
+                std::bitset<64>(mask[w] & sameColourMask(w, neighbourIsRed)).count());
             }
+            const std::uint64_t below = (std::uint64_t(1) << (local % 64)) - 1;
+            rank += static_cast<std::int64_t>(
+              std::bitset<64>(mask[local / 64] & below & sameColourMask(local / 64, neighbourIsRed)).count());
+            found = static_cast<std::uint32_t>((neighbourIsRed ? redStart[a] : blackStart[a]) + rank);
           }
         }
         band.Neighbor[6 * s + direction] = found;

@@ -1,0 +1,13 @@
+#!/usr/bin/env bash
+# The benchmark (benchmarks/table2.py): installs OpenVDB too, builds with the
+# OpenVDB peer program, and prints the tables that the README keeps.
+# Extra arguments go to table2.py (e.g. --cases sphere dragon --repeat 5).
+set -euo pipefail
+source_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build_dir="${BUILD_DIR:-$source_dir/build}"
+NV_EXTRA_PACKAGES="libopenvdb-dev libtbb-dev" "$source_dir/scripts/install-deps.sh"
+"$source_dir/scripts/build.sh"
+cmake -S "$source_dir" -B "$build_dir" -DNARROWVOLUME_BUILD_BENCHMARKS=ON >/dev/null
+cmake --build "$build_dir" --parallel "$(nproc)"
+PYTHONPATH="$build_dir/lib/python3.11/dist-packages" pvpython "$source_dir/benchmarks/table2.py" \
+  --openvdb "$build_dir/bin/openvdb_shell" "$@"
