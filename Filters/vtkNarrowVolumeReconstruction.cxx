@@ -5,6 +5,7 @@
 #include "nvNarrowBand.h"
 #include "nvParallel.h"
 #include "nvParameters.h"
+#include "nvSlabSurface.h"
 #include "nvTruncatedDistance.h"
 #include "nvVolume.h"
 
@@ -242,8 +243,9 @@ int vtkNarrowVolumeReconstruction::RequestData(
   const double bandEstimate = whole ? nodesEstimate : std::min(nodesEstimate, pointsCount * boxNodes);
   // Bytes: dense output (phi, optional arrays, the isosurfacer's working
   // memory) + band arrays and solver vectors (72 bytes a node) + points.
-  const double perNode = 4.0 + (this->OutputInitialPhi ? 4.0 : 0.0) + (this->OutputDistance ? 4.0 : 0.0) +
-    (this->OutputNarrowBand ? 1.0 : 0.0) + 2.0;
+  const double perNode = this->OutputVolume ? 4.0 + (this->OutputInitialPhi ? 4.0 : 0.0) +
+      (this->OutputDistance ? 4.0 : 0.0) + (this->OutputNarrowBand ? 1.0 : 0.0) + 2.0
+                                           : 0.0;
   const double bytesEstimate = nodesEstimate * perNode + bandEstimate * 72.0 + pointsCount * 48.0;
   double limitMiB = this->MemoryLimit;
   if (limitMiB <= 0.0)
@@ -305,12 +307,21 @@ int vtkNarrowVolumeReconstruction::RequestData(
       return;
     }
 
-    // Output 0: the volume.
+    // Output 0: the volume (its geometry always, its arrays on request).
     start = std::chrono::steady_clock::now();
     volume->SetOrigin(grid.Origin[0], grid.Origin[1], grid.Origin[2]);
     volume->SetSpacing(grid.Spacing, grid.Spacing, grid.Spacing);
     volume->SetExtent(0, static_cast<int>(grid.Dims[0] - 1), 0, static_cast<int>(grid.Dims[1] - 1), 0,
       static_cast<int>(grid.Dims[2] - 1));
+    monitor.SetStage(0.9, 0.1);
+    if (!this->OutputVolume)
+    {
+      // Output 1 without a dense volume: slab by slab.
+      surface->ShallowCopy(nv::ExtractSurfaceBySlabs(distance, band, solver.GetPhi(), parameters, &monitor));
+      this->OutputTime = Seconds(start);
+      aborted = monitor.Aborted();
+      return;
+    }
     const vtkIdType nodes = static_cast<vtkIdType>(grid.NumberOfNodes());
     nv::VolumeArrays arrays;
     vtkNew<vtkFloatArray> phi;
@@ -342,7 +353,7 @@ int vtkNarrowVolumeReconstruction::RequestData(
       arrays.Band = bandArray->GetPointer(0);
       volume->GetPointData()->AddArray(bandArray);
     }
-    nv::FillVolume(distance, band, solver.GetPhi(), parameters, arrays);
+    nv::FillVolume(distance, band, solver.GetPhi(), parameters, distance.ReachedBricks(), arrays);
     this->UpdateProgress(0.92);
 
     // Output 1: the phi = 0 surfaces.
@@ -403,6 +414,7 @@ void vtkNarrowVolumeReconstruction::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "GaussSeidelTolerance: " << this->GaussSeidelTolerance << "\n";
   os << indent << "Domain: " << (this->Domain == WHOLE_DOMAIN ? "Whole Domain" : "Narrow Band") << "\n";
   os << indent << "EdgeStoppingFunction: eq. (" << this->EdgeStoppingFunction << ")\n";
+  os << indent << "OutputVolume: " << this->OutputVolume << "\n";
   os << indent << "OutputInitialPhi: " << this->OutputInitialPhi << "\n";
   os << indent << "OutputDistance: " << this->OutputDistance << "\n";
   os << indent << "OutputNarrowBand: " << this->OutputNarrowBand << "\n";

@@ -169,6 +169,18 @@ public:
 
   ///@{
   /**
+   * Whether output port 0 carries the phase field on the grid. Off: the
+   * volume output keeps only its geometry (origin, spacing, extent) and the
+   * surface is extracted slab by slab, so memory follows the band and not
+   * the box. The extra arrays below need the volume. Default on.
+   */
+  vtkSetMacro(OutputVolume, bool);
+  vtkGetMacro(OutputVolume, bool);
+  vtkBooleanMacro(OutputVolume, bool);
+  ///@}
+
+  ///@{
+  /**
    * Extra point arrays on output port 0: "InitialPhi" (phi0 of eq. 2),
    * "Distance" (the truncated distance of eq. 6) and "NarrowBand" (1 on band
    * nodes). All off by default.
@@ -255,6 +267,7 @@ protected:
   double GaussSeidelTolerance = 1e-6;
   int Domain = NARROW_BAND;
   int EdgeStoppingFunction = EQUATION_4;
+  bool OutputVolume = true;
   bool OutputInitialPhi = false;
   bool OutputDistance = false;
   bool OutputNarrowBand = false;

@@ -36,6 +36,11 @@ CASES = {
     "armadillo-fine": ("armadillo.ply", 353, 4, 2, 5, "Fig. 10(c)", "43,244", "303x353x278", 0.209, "5/5", "21.31/27.64", "111.92/27.13"),
     "dragon": ("dragon.ply", 462, 4, 2, 4, "Fig. 11(a)", "218,823", "462x330x215", 0.158, "4/4", "6.82/8.54", "44.55/10.17"),
 }
+# Memory with the volume output on and off: (source, cells, offset cells, xi, steps).
+MEMORY_CASES = {
+    "armadillo-fine": ("armadillo.ply", 353, 4, 2, 5),
+    "sphere-1024": ("sphere1024", 1024, 4, 2, 3),
+}
 
 CHILD = r'''
 import json, math, resource, sys, time
@@ -44,8 +49,8 @@ from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkPolyData
 task = json.loads(sys.argv[1])
-if task["source"] == "sphere":
-    n = 2964
+if task["source"].startswith("sphere"):
+    n = 2964 if task["source"] == "sphere" else 500000
     i = np.arange(n) + 0.5
     polar = np.arccos(1 - 2 * i / n); azimuth = math.pi * (1 + 5 ** 0.5) * i
     xyz = 0.5 + 0.45 * np.c_[np.cos(azimuth) * np.sin(polar), np.sin(azimuth) * np.sin(polar), np.cos(polar)]
@@ -67,6 +72,7 @@ if task["kind"] == "ours":
     f = vtkNarrowVolumeReconstruction()
     f.SetInputData(cloud); f.SetSampleSpacing(h); f.SetOffsetDistance(l); f.SetXiCells(m)
     f.SetMaximumNumberOfIterations(task["steps"]); f.SetDomain(task["domain"])
+    f.SetOutputVolume(task.get("volume", True))
     f.Update()
     out.update(grid="x".join(str(d) for d in f.GetOutput(0).GetDimensions()), band=f.GetNumberOfBandNodes(),
                nodes=f.GetNumberOfGridNodes(), iterations=f.GetNumberOfIterations(), setup=f.GetSetupTime(),
@@ -127,6 +133,7 @@ def main():
     parser.add_argument("--openvdb", default=os.path.join(HERE, "..", "build", "bin", "openvdb_shell"))
     parser.add_argument("--cases", nargs="+", default=list(CASES))
     parser.add_argument("--repeat", type=int, default=3)
+    parser.add_argument("--memory-cases", nargs="*", default=list(MEMORY_CASES))
     args = parser.parse_args()
 
     print("Machine: %s, %d cores, Python %s; times are medians of %d runs (seconds), memory is peak RSS (MB)."
@@ -175,10 +182,29 @@ def main():
           "| OpenVDB: rasterize + smooth + mesh |")
     print("|---|---|---|---|")
     print("\n".join(peer_rows))
+    volume_rows = []
+    for name in args.memory_cases:
+        source, cells, lc, xi, steps = MEMORY_CASES[name]
+        task = dict(source=source, cells=cells, offset_cells=lc, xi=xi, steps=steps, kind="ours", domain=0)
+        if not source.startswith("sphere"):
+            task["path"] = os.path.join(args.scans, source)
+            if not os.path.exists(task["path"]):
+                continue
+        baseline = run(dict(task, kind="none"))
+        on, off = run(dict(task, volume=True)), run(dict(task, volume=False))
+        volume_rows.append("| %s | %d | %s | %d | %.0f | %.0f | %.0f | %.1f / %.1f |" % (
+            name, on["points"], on["grid"], on["band"], baseline["maxrss_mb"], on["maxrss_mb"], off["maxrss_mb"],
+            on["setup"] + on["evolution"] + on["surface"], off["setup"] + off["evolution"] + off["surface"]))
+        sys.stdout.flush()
+
     print("\n### Peak resident memory (MB) of one run in a fresh process\n")
     print("| case | baseline (load the points) | ours N | ours W | VTK | OpenVDB process |")
     print("|---|---|---|---|---|---|")
     print("\n".join(memory_rows))
+    print("\n### Memory with the volume output on and off (ours, Narrow Band)\n")
+    print("| case | points | grid | band nodes | baseline | peak, volume on | peak, volume off | time on / off (s) |")
+    print("|---|---|---|---|---|---|---|---|")
+    print("\n".join(volume_rows))
 
 
 if __name__ == "__main__":

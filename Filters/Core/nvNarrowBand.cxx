@@ -14,7 +14,8 @@ namespace nv
 std::int64_t NarrowBand::MemoryBytes() const
 {
   return static_cast<std::int64_t>(this->Node.capacity() * sizeof(std::int64_t) +
-    this->Distance.capacity() * sizeof(double) + this->Neighbor.capacity() * sizeof(std::uint32_t));
+    this->Distance.capacity() * sizeof(double) + this->Neighbor.capacity() * sizeof(std::uint32_t) +
+    (this->Bricks.capacity() + this->RedStart.capacity() + this->BlackStart.capacity()) * sizeof(std::int64_t));
 }
 
 namespace
@@ -236,6 +237,9 @@ NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& 
       }
     }
   });
+  band.Bricks = std::move(bricks);
+  band.RedStart = std::move(redStart);
+  band.BlackStart = std::move(blackStart);
   if (monitor)
   {
     monitor->Progress(1.0);

@@ -34,6 +34,12 @@ struct NARROWVOLUMEFILTERS_EXPORT NarrowBand
   std::vector<double> Distance;        ///< d of eq. (6) at band node s (+inf: beyond reach)
   std::vector<std::uint32_t> Neighbor; ///< 6 per node: -x, +x, -y, +y, -z, +z
 
+  /// The bricks visited (ascending brick index) and, per brick b, its red
+  /// nodes [RedStart[b], RedStart[b+1]) and black ones [BlackStart[b], BlackStart[b+1]).
+  std::vector<std::int64_t> Bricks;
+  std::vector<std::int64_t> RedStart;
+  std::vector<std::int64_t> BlackStart;
+
   std::int64_t Size() const { return static_cast<std::int64_t>(this->Node.size()); }
   std::uint32_t InsideSlot() const { return static_cast<std::uint32_t>(this->Size()); }
   std::uint32_t OutsideSlot() const { return static_cast<std::uint32_t>(this->Size() + 1); }

@@ -10,13 +10,34 @@
 
 namespace nv
 {
+namespace
+{
+/// The bricks of `bricks` (ascending brick index, so ordered by brick layer)
+/// whose layer of nodes overlaps [kBegin, kEnd): an index range into `bricks`.
+void BricksInLayers(const std::vector<std::int64_t>& bricks, std::int64_t bricksPerLayer,
+  std::int64_t kBegin, std::int64_t kEnd, std::int64_t& first, std::int64_t& last)
+{
+  const std::int64_t layerBegin = kBegin >> BrickShift;
+  const std::int64_t layerEnd = ((kEnd - 1) >> BrickShift) + 1;
+  first = std::lower_bound(bricks.begin(), bricks.end(), layerBegin * bricksPerLayer) - bricks.begin();
+  last = std::lower_bound(bricks.begin(), bricks.end(), layerEnd * bricksPerLayer) - bricks.begin();
+}
+} // namespace
 
-void FillVolume(const TruncatedDistance& distance, const NarrowBand& band,
-  const std::vector<double>& phi, const Parameters& parameters, const VolumeArrays& arrays)
+void FillVolume(const TruncatedDistance& distance, const NarrowBand& band, const std::vector<double>& phi,
+  const Parameters& parameters, const std::vector<std::int64_t>& reachedBricks, const VolumeArrays& arrays,
+  std::int64_t kBegin, std::int64_t kEnd)
 {
   const Grid& grid = distance.GetGrid();
-  const std::int64_t nodes = grid.NumberOfNodes();
+  if (kEnd < 0)
+  {
+    kEnd = grid.Dims[2];
+  }
+  const std::int64_t layer = grid.Dims[0] * grid.Dims[1];
+  const std::int64_t base = kBegin * layer; // grid index of the slab's first node
+  const std::int64_t nodes = (kEnd - kBegin) * layer;
   const float far = static_cast<float>(grid.FarDistance());
+  const std::int64_t bricksPerLayer = distance.GetBrickDims()[0] * distance.GetBrickDims()[1];
 
   // Nodes beyond reach: d truncated (eq. 6), phi0 = tanh(-inf) = -1.
   ParallelFor(0, nodes, 1 << 16, [&](std::int64_t begin, std::int64_t end) {
@@ -31,28 +52,31 @@ void FillVolume(const TruncatedDistance& distance, const NarrowBand& band,
   });
 
   // Nodes within reach: recompute their distance brick by brick.
-  const std::vector<std::int64_t> bricks = distance.ReachedBricks();
+  std::int64_t first, last;
+  BricksInLayers(reachedBricks, bricksPerLayer, kBegin, kEnd, first, last);
   const double offset = parameters.OffsetDistance;
   const double xi = parameters.Xi();
-  ParallelFor(0, static_cast<std::int64_t>(bricks.size()), 16, [&](std::int64_t begin, std::int64_t end) {
+  ParallelFor(first, last, 16, [&](std::int64_t begin, std::int64_t end) {
     double d[BrickNodes];
     for (std::int64_t b = begin; b < end; ++b)
     {
-      distance.ComputeBrick(bricks[b], d);
-      std::int64_t first[3];
-      distance.BrickFirstNode(bricks[b], first);
-      for (int k = 0; k < BrickSize && first[2] + k < grid.Dims[2]; ++k)
+      distance.ComputeBrick(reachedBricks[b], d);
+      std::int64_t corner[3];
+      distance.BrickFirstNode(reachedBricks[b], corner);
+      for (int k = 0; k < BrickSize && corner[2] + k < kEnd; ++k)
       {
-        for (int j = 0; j < BrickSize && first[1] + j < grid.Dims[1]; ++j)
+        if (corner[2] + k < kBegin)
+          continue;
+        for (int j = 0; j < BrickSize && corner[1] + j < grid.Dims[1]; ++j)
         {
-          for (int i = 0; i < BrickSize && first[0] + i < grid.Dims[0]; ++i)
+          for (int i = 0; i < BrickSize && corner[0] + i < grid.Dims[0]; ++i)
           {
             const double dist = d[i + BrickSize * (j + BrickSize * k)];
             if (!std::isfinite(dist))
             {
               continue;
             }
-            const std::int64_t node = grid.Index(first[0] + i, first[1] + j, first[2] + k);
+            const std::int64_t node = grid.Index(corner[0] + i, corner[1] + j, corner[2] + k) - base;
             const float phi0 = static_cast<float>(AllenCahnSolver::InitialPhi(dist, offset, xi));
             if (arrays.Phi)
               arrays.Phi[node] = phi0;
@@ -67,14 +91,23 @@ void FillVolume(const TruncatedDistance& distance, const NarrowBand& band,
   });
 
   // Band nodes: the evolved phi.
-  ParallelFor(0, band.Size(), 1 << 14, [&](std::int64_t begin, std::int64_t end) {
-    for (std::int64_t s = begin; s < end; ++s)
+  BricksInLayers(band.Bricks, bricksPerLayer, kBegin, kEnd, first, last);
+  ParallelFor(first, last, 16, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t b = begin; b < end; ++b)
     {
-      const std::int64_t node = band.Node[s];
-      if (arrays.Phi)
-        arrays.Phi[node] = static_cast<float>(phi[s]);
-      if (arrays.Band)
-        arrays.Band[node] = 1;
+      for (const auto* start : { &band.RedStart, &band.BlackStart })
+      {
+        for (std::int64_t s = (*start)[b]; s < (*start)[b + 1]; ++s)
+        {
+          const std::int64_t node = band.Node[s] - base;
+          if (node < 0 || node >= nodes)
+            continue;
+          if (arrays.Phi)
+            arrays.Phi[node] = static_cast<float>(phi[s]);
+          if (arrays.Band)
+            arrays.Band[node] = 1;
+        }
+      }
     }
   });
 }

@@ -1,12 +1,14 @@
-// Writes the solution on the whole grid (dense arrays) for output and for
-// isosurfacing. Band nodes take the evolved phi; every other node keeps its
-// initial value phi0 of eq. (2), which the scheme never changes there.
+// Writes the solution on the grid's nodes (dense arrays) for output and for
+// isosurfacing, for the whole grid or for a slab of z layers. Band nodes take
+// the evolved phi; every other node keeps its initial value phi0 of eq. (2),
+// which the scheme never changes there.
 #ifndef nvVolume_h
 #define nvVolume_h
 
 #include "NarrowVolumeFiltersModule.h"
 #include "nvParameters.h"
 
+#include <cstdint>
 #include <vector>
 
 namespace nv
@@ -14,7 +16,7 @@ namespace nv
 struct NarrowBand;
 class TruncatedDistance;
 
-/// Dense arrays to fill, each of grid.NumberOfNodes() values; null ones are skipped.
+/// Dense arrays to fill, each of Nx Ny (kEnd - kBegin) values; null ones are skipped.
 struct VolumeArrays
 {
   float* Phi = nullptr;
@@ -23,9 +25,15 @@ struct VolumeArrays
   unsigned char* Band = nullptr; ///< 1 on band nodes
 };
 
-/// phi: the solver's values at band nodes (at least band.Size() of them).
+/**
+ * Fills the arrays for the nodes with kBegin <= k < kEnd (the whole grid by
+ * default). phi: the solver's values at band nodes (at least band.Size()).
+ * reachedBricks: distance.ReachedBricks(), passed in so that slab after slab
+ * need not recompute it.
+ */
 NARROWVOLUMEFILTERS_EXPORT void FillVolume(const TruncatedDistance& distance, const NarrowBand& band,
-  const std::vector<double>& phi, const Parameters& parameters, const VolumeArrays& arrays);
+  const std::vector<double>& phi, const Parameters& parameters, const std::vector<std::int64_t>& reachedBricks,
+  const VolumeArrays& arrays, std::int64_t kBegin = 0, std::int64_t kEnd = -1);
 
 } // namespace nv
 

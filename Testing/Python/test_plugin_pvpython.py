@@ -26,7 +26,7 @@ for name in f.ListProperties():
     t.check(f.GetProperty(name) is not None, "property %s" % name)
 for name in ("OffsetDistance", "SampleSpacing", "MaximumDimension", "XiCells", "EpsilonCells", "TimeStep",
              "MaximumNumberOfIterations", "ConvergenceTolerance", "Domain", "EdgeStoppingFunction",
-             "GaussSeidelTolerance", "OutputInitialPhi", "OutputDistance", "OutputNarrowBand"):
+             "GaussSeidelTolerance", "OutputVolume", "OutputInitialPhi", "OutputDistance", "OutputNarrowBand"):
     t.check(name in f.ListProperties(), "pvpython name %s" % name)
 f.OffsetDistance = 0.1
 f.SampleSpacing = 0.025

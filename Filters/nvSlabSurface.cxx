@@ -1,0 +1,144 @@
+#include "nvSlabSurface.h"
+
+#include "nvNarrowBand.h"
+#include "nvParallel.h"
+#include "nvTruncatedDistance.h"
+#include "nvVolume.h"
+
+#include "vtkCellArray.h"
+#include "vtkDataArray.h"
+#include "vtkFlyingEdges3D.h"
+#include "vtkFloatArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+
+#include <algorithm>
+#include <array>
+#include <cstring>
+#include <map>
+
+namespace nv
+{
+namespace
+{
+using Key = std::array<float, 2>; // (x, y) of a vertex on a shared plane
+}
+
+vtkSmartPointer<vtkPolyData> ExtractSurfaceBySlabs(const TruncatedDistance& distance,
+  const NarrowBand& band, const std::vector<double>& phi, const Parameters& parameters, Monitor* monitor)
+{
+  const Grid& grid = distance.GetGrid();
+  const std::int64_t nx = grid.Dims[0], ny = grid.Dims[1], nz = grid.Dims[2];
+  const std::vector<std::int64_t> reached = distance.ReachedBricks();
+
+  vtkNew<vtkPoints> points; // float, as vtkFlyingEdges3D makes them
+  vtkNew<vtkFloatArray> normals;
+  normals->SetName("Normals");
+  normals->SetNumberOfComponents(3);
+  vtkNew<vtkCellArray> triangles;
+
+  // Brick layers that hold band nodes: slabs without any are skipped.
+  const std::int64_t bricksPerLayer = distance.GetBrickDims()[0] * distance.GetBrickDims()[1];
+  std::vector<bool> layerHasBand(static_cast<std::size_t>(distance.GetBrickDims()[2]), false);
+  for (std::size_t b = 0; b < band.Bricks.size(); ++b)
+  {
+    if (band.RedStart[b + 1] > band.RedStart[b] || band.BlackStart[b + 1] > band.BlackStart[b])
+    {
+      layerHasBand[static_cast<std::size_t>(band.Bricks[b] / bricksPerLayer)] = true;
+    }
+  }
+
+  std::map<Key, vtkIdType> sharedBelow; // vertices the previous slab made on this slab's first plane
+  std::vector<float> slab;
+  for (std::int64_t kBegin = 0; kBegin + 1 < nz; kBegin += SlabCells)
+  {
+    const std::int64_t kEnd = std::min(kBegin + SlabCells + 1, nz); // one shared plane with the next slab
+    std::map<Key, vtkIdType> sharedAbove;
+    bool any = false;
+    for (std::int64_t layer = kBegin >> BrickShift; layer <= (kEnd - 1) >> BrickShift; ++layer)
+    {
+      any = any || layerHasBand[static_cast<std::size_t>(layer)];
+    }
+    if (monitor)
+    {
+      monitor->Progress(static_cast<double>(kBegin) / nz);
+    }
+    if (!any || (monitor && monitor->Aborted()))
+    {
+      sharedBelow.clear();
+      continue;
+    }
+
+    slab.resize(static_cast<std::size_t>(nx * ny * (kEnd - kBegin)));
+    VolumeArrays arrays;
+    arrays.Phi = slab.data();
+    FillVolume(distance, band, phi, parameters, reached, arrays, kBegin, kEnd);
+
+    vtkNew<vtkFloatArray> scalars;
+    scalars->SetName("phi");
+    scalars->SetArray(slab.data(), static_cast<vtkIdType>(slab.size()), 1); // borrowed, not copied
+    vtkNew<vtkImageData> image;
+    image->SetOrigin(grid.Origin[0], grid.Origin[1], grid.Origin[2]);
+    image->SetSpacing(grid.Spacing, grid.Spacing, grid.Spacing);
+    image->SetExtent(0, static_cast<int>(nx - 1), 0, static_cast<int>(ny - 1), static_cast<int>(kBegin),
+      static_cast<int>(kEnd - 1));
+    image->GetPointData()->SetScalars(scalars);
+    vtkNew<vtkFlyingEdges3D> contour;
+    contour->SetInputData(image);
+    contour->SetValue(0, 0.0);
+    contour->ComputeNormalsOn();
+    contour->ComputeGradientsOff();
+    contour->ComputeScalarsOff();
+    contour->Update();
+    vtkPolyData* piece = contour->GetOutput();
+
+    // Append, merging the vertices on the plane shared with the slab below.
+    const float zBelow = static_cast<float>(grid.Origin[2] + kBegin * grid.Spacing);
+    const float zAbove = static_cast<float>(grid.Origin[2] + (kEnd - 1) * grid.Spacing);
+    vtkDataArray* pieceNormals = piece->GetPointData()->GetNormals();
+    std::vector<vtkIdType> id(static_cast<std::size_t>(piece->GetNumberOfPoints()));
+    for (vtkIdType p = 0; p < piece->GetNumberOfPoints(); ++p)
+    {
+      double x[3];
+      piece->GetPoint(p, x);
+      const float z = static_cast<float>(x[2]);
+      const Key key{ { static_cast<float>(x[0]), static_cast<float>(x[1]) } };
+      if (z == zBelow && !sharedBelow.empty())
+      {
+        const auto it = sharedBelow.find(key);
+        if (it != sharedBelow.end())
+        {
+          id[p] = it->second;
+          continue;
+        }
+      }
+      id[p] = points->InsertNextPoint(x);
+      normals->InsertNextTuple(pieceNormals->GetTuple(p));
+      if (z == zAbove)
+      {
+        sharedAbove[key] = id[p];
+      }
+    }
+    vtkCellArray* polys = piece->GetPolys();
+    vtkIdType count;
+    const vtkIdType* cell;
+    for (polys->InitTraversal(); polys->GetNextCell(count, cell);)
+    {
+      vtkIdType mapped[3] = { id[cell[0]], id[cell[1]], id[cell[2]] };
+      triangles->InsertNextCell(3, mapped);
+    }
+    sharedBelow.swap(sharedAbove);
+  }
+
+  auto surface = vtkSmartPointer<vtkPolyData>::New();
+  surface->SetPoints(points);
+  surface->SetPolys(triangles);
+  surface->GetPointData()->SetNormals(normals);
+  return surface;
+}
+
+} // namespace nv
