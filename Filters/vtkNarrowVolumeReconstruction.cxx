@@ -5,6 +5,7 @@
 #include "nvNarrowBand.h"
 #include "nvParallel.h"
 #include "nvParameters.h"
+#include "nvSheets.h"
 #include "nvSlabSurface.h"
 #include "nvTruncatedDistance.h"
 #include "nvVolume.h"
@@ -195,7 +196,10 @@ int vtkNarrowVolumeReconstruction::RequestData(
   }
   if (!std::isfinite(this->OffsetDistance) || this->OffsetDistance <= 0.0)
   {
-    vtkErrorMacro("OffsetDistance must be a finite value > 0, not " << this->OffsetDistance << ".");
+    vtkErrorMacro("OffsetDistance must be a finite value > 0, not "
+      << this->OffsetDistance
+      << ". (In ParaView its default follows the input's size: in a script, update the input "
+         "before creating the filter, or set OffsetDistance.)");
     return 1;
   }
   if (!std::isfinite(this->SampleSpacing))
@@ -314,7 +318,7 @@ int vtkNarrowVolumeReconstruction::RequestData(
     volume->SetExtent(0, static_cast<int>(grid.Dims[0] - 1), 0, static_cast<int>(grid.Dims[1] - 1), 0,
       static_cast<int>(grid.Dims[2] - 1));
     monitor.SetStage(0.9, 0.1);
-    if (!this->OutputVolume)
+    if (!this->OutputVolume && this->Sheets == BOTH_SHEETS)
     {
       // Output 1 without a dense volume: slab by slab.
       surface->ShallowCopy(nv::ExtractSurfaceBySlabs(distance, band, solver.GetPhi(), parameters, &monitor));
@@ -328,8 +332,16 @@ int vtkNarrowVolumeReconstruction::RequestData(
     phi->SetName("phi");
     phi->SetNumberOfTuples(nodes);
     arrays.Phi = phi->GetPointer(0);
-    volume->GetPointData()->SetScalars(phi);
-    if (this->OutputInitialPhi)
+    if (this->OutputVolume)
+    {
+      volume->GetPointData()->SetScalars(phi);
+    }
+    else
+    {
+      vtkWarningMacro("Keeping one sheet needs the dense grid: memory follows the box although "
+                      "OutputVolume is off.");
+    }
+    if (this->OutputVolume && this->OutputInitialPhi)
     {
       vtkNew<vtkFloatArray> initial;
       initial->SetName("InitialPhi");
@@ -337,7 +349,7 @@ int vtkNarrowVolumeReconstruction::RequestData(
       arrays.InitialPhi = initial->GetPointer(0);
       volume->GetPointData()->AddArray(initial);
     }
-    if (this->OutputDistance)
+    if (this->OutputVolume && this->OutputDistance)
     {
       vtkNew<vtkFloatArray> distanceArray;
       distanceArray->SetName("Distance");
@@ -345,7 +357,7 @@ int vtkNarrowVolumeReconstruction::RequestData(
       arrays.Distance = distanceArray->GetPointer(0);
       volume->GetPointData()->AddArray(distanceArray);
     }
-    if (this->OutputNarrowBand)
+    if (this->OutputVolume && this->OutputNarrowBand)
     {
       vtkNew<vtkUnsignedCharArray> bandArray;
       bandArray->SetName("NarrowBand");
@@ -356,10 +368,18 @@ int vtkNarrowVolumeReconstruction::RequestData(
     nv::FillVolume(distance, band, solver.GetPhi(), parameters, distance.ReachedBricks(), arrays);
     this->UpdateProgress(0.92);
 
-    // Output 1: the phi = 0 surfaces.
+    // Output 1: the phi = 0 surfaces, all or some of them.
     vtkNew<vtkImageData> scalarOnly;
     scalarOnly->CopyStructure(volume);
     scalarOnly->GetPointData()->SetScalars(phi);
+    vtkNew<vtkFloatArray> chosen;
+    if (this->Sheets != BOTH_SHEETS)
+    {
+      chosen->DeepCopy(phi);
+      nv::KeepSheets(grid, chosen->GetPointer(0),
+        this->Sheets == OUTER_SHEET ? nv::Sheets::Outer : nv::Sheets::Inner);
+      scalarOnly->GetPointData()->SetScalars(chosen);
+    }
     vtkNew<vtkFlyingEdges3D> contour;
     contour->SetInputData(scalarOnly);
     contour->SetValue(0, 0.0);
@@ -378,6 +398,13 @@ int vtkNarrowVolumeReconstruction::RequestData(
   }
 
   volumeInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), volume->GetExtent(), 6);
+  if (surface->GetNumberOfPoints() == 0)
+  {
+    vtkWarningMacro("The surface is empty: the shell did not survive the evolution. The offset "
+                    "distance ("
+      << this->OffsetDistance << ") is probably small against the gaps between points or the "
+      << "grid spacing (" << parameters.Spacing << "): increase OffsetDistance or XiCells, or refine the grid.");
+  }
 
   // Run summary in the volume's field data, for scripts and the GUI's Information panel.
   vtkNew<vtkIntArray> iterations;
@@ -414,6 +441,7 @@ void vtkNarrowVolumeReconstruction::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "GaussSeidelTolerance: " << this->GaussSeidelTolerance << "\n";
   os << indent << "Domain: " << (this->Domain == WHOLE_DOMAIN ? "Whole Domain" : "Narrow Band") << "\n";
   os << indent << "EdgeStoppingFunction: eq. (" << this->EdgeStoppingFunction << ")\n";
+  os << indent << "Sheets: " << this->Sheets << "\n";
   os << indent << "OutputVolume: " << this->OutputVolume << "\n";
   os << indent << "OutputInitialPhi: " << this->OutputInitialPhi << "\n";
   os << indent << "OutputDistance: " << this->OutputDistance << "\n";

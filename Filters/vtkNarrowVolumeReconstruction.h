@@ -167,6 +167,28 @@ public:
   void SetEdgeStoppingFunctionToEquation4() { this->SetEdgeStoppingFunction(EQUATION_4); }
   ///@}
 
+  enum SheetsType
+  {
+    BOTH_SHEETS = 0,
+    OUTER_SHEET = 1,
+    INNER_SHEETS = 2
+  };
+
+  ///@{
+  /**
+   * Which phi = 0 sheets the surface output holds: BOTH_SHEETS (default);
+   * OUTER_SHEET, the one facing the outside (for a closed input, its dilation
+   * by OffsetDistance); or INNER_SHEETS, those facing cavities enclosed by the
+   * shell (its erosion). An open input (a one-sided scan) has only an outer
+   * sheet. Choosing one sheet needs the dense grid even when OutputVolume is off.
+   */
+  vtkSetClampMacro(Sheets, int, BOTH_SHEETS, INNER_SHEETS);
+  vtkGetMacro(Sheets, int);
+  void SetSheetsToBoth() { this->SetSheets(BOTH_SHEETS); }
+  void SetSheetsToOuter() { this->SetSheets(OUTER_SHEET); }
+  void SetSheetsToInner() { this->SetSheets(INNER_SHEETS); }
+  ///@}
+
   ///@{
   /**
    * Whether output port 0 carries the phase field on the grid. Off: the
@@ -267,6 +289,7 @@ protected:
   double GaussSeidelTolerance = 1e-6;
   int Domain = NARROW_BAND;
   int EdgeStoppingFunction = EQUATION_4;
+  int Sheets = BOTH_SHEETS;
   bool OutputVolume = true;
   bool OutputInitialPhi = false;
   bool OutputDistance = false;

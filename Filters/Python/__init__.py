@@ -4,8 +4,8 @@
 
 The filter is a VTK algorithm: set its input to any vtkPointSet and read the
 phase field (output port 0, vtkImageData) and the offset surfaces (output
-port 1, vtkPolyData).
+port 1, vtkPolyData). vtkPointCloudTextReader reads .xyz / .pts text clouds.
 """
-from .NarrowVolumeFilters import vtkNarrowVolumeReconstruction
+from .NarrowVolumeFilters import vtkNarrowVolumeReconstruction, vtkPointCloudTextReader
 
-__all__ = ["vtkNarrowVolumeReconstruction"]
+__all__ = ["vtkNarrowVolumeReconstruction", "vtkPointCloudTextReader"]

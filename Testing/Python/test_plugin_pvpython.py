@@ -14,9 +14,10 @@ pvs.LoadPlugin(plugin, ns=globals())
 t = nvtesting.Checker("test_plugin_pvpython")
 
 source = pvs.Sphere(Radius=0.5, ThetaResolution=80, PhiResolution=80)
+source.UpdatePipeline()  # as Apply does in the GUI: the defaults then follow the input's size
 f = NarrowVolumeReconstruction(Input=source)  # noqa: F821 (defined by LoadPlugin)
 t.check(f.GetXMLLabel() == "Narrow Volume Reconstruction", "label %s" % f.GetXMLLabel())
-defaults = dict(MaximumNumberOfIterations=3, OffsetDistance=0.1, SampleSpacing=0.0, MaximumDimension=100, XiCells=2.0,
+defaults = dict(MaximumNumberOfIterations=3, OffsetDistance=0.04, SampleSpacing=0.0, MaximumDimension=100, XiCells=2.0,
                 EpsilonCells=6.0, TimeStep=0.0, ConvergenceTolerance=0.0, GaussSeidelTolerance=1e-6)
 for name, value in defaults.items():
     t.check(abs(f.GetPropertyValue(name) - value) < 1e-12, "default %s = %s" % (name, f.GetPropertyValue(name)))
@@ -48,4 +49,30 @@ f.Domain = "Whole Domain"
 f.EdgeStoppingFunction = "Eq. (3): 1-phi0^2"
 f.UpdatePipeline()
 t.check(servermanager.Fetch(f, idx=1).GetNumberOfPoints() > 0, "whole domain, eq. 3")
+
+# Plain-text clouds open through the plugin's reader and go straight into the filter.
+import os
+import tempfile
+folder = tempfile.mkdtemp(prefix="nv-pv-")
+for name in ("ball.pts", "ball.xyz"):
+    with open(os.path.join(folder, name), "w") as f:
+        f.write("\n".join("%.6f %.6f %.6f" % tuple(p) for p in nvtesting.sphere_points(500, 0.5)))
+# .pts opens with ParaView's own PTSReader; .xyz is also PLOT3D's extension in
+# ParaView, so the GUI asks which reader to use and scripts name ours.
+reader = pvs.OpenDataFile(os.path.join(folder, "ball.pts"))
+t.check(reader is not None and reader.GetXMLName() == "PTSReader", "pts opens with ParaView's reader")
+xyz_reader = PointCloudTextReader(FileName=os.path.join(folder, "ball.xyz"))  # noqa: F821
+xyz_reader.UpdatePipeline()
+t.check(xyz_reader.GetDataInformation().GetNumberOfPoints() == 500, "xyz read by name")
+if reader is not None:
+    reader.UpdatePipeline()
+    shell = NarrowVolumeReconstruction(Input=reader, SampleSpacing=0.02, OffsetDistance=0.08, Sheets="Outer")  # noqa: F821
+    shell.UpdatePipeline()
+    t.check(shell.GetDataInformation(1).GetNumberOfCells() > 100, "shell from a pts file")
+    from_xyz = NarrowVolumeReconstruction(Input=xyz_reader, SampleSpacing=0.02, OffsetDistance=0.08)  # noqa: F821
+    from_xyz.UpdatePipeline()
+    t.check(from_xyz.GetDataInformation(1).GetNumberOfCells() > 100, "shell from an xyz file")
+    # The offset default follows the input's size (4 % of its largest side).
+    fresh = NarrowVolumeReconstruction(Input=reader)  # noqa: F821
+    t.check(abs(fresh.OffsetDistance - 0.04) < 1e-3, "offset default from the bounds: %g" % fresh.OffsetDistance)
 t.finish()

@@ -63,6 +63,13 @@ l2 = float(np.sqrt(np.mean((wphi[nb] - phi[nb]) ** 2)))
 print("narrow band vs whole domain: l2 difference over the band %.3e" % l2)
 t.check(l2 < 5e-3, "narrow band close to whole domain: %g" % l2)
 
+# One sheet at a time: the outer sheet is the dilation, the inner the erosion.
+for sheets, radius in ((1, R + L), (2, R - L)):
+    one = run(Sheets=sheets).GetOutput(1)
+    r = np.linalg.norm(nvtesting.points_of(one) - center, axis=1)
+    t.check(nvtesting.regions(one) == 1 and nvtesting.boundary_edges(one) == 0, "Sheets=%d: one closed sheet" % sheets)
+    t.check(abs(r.mean() - radius) < 0.5 * H, "Sheets=%d: at radius %g (%g)" % (sheets, radius, r.mean()))
+
 # Progress events reach observers.
 seen = []
 p = vtkNarrowVolumeReconstruction()

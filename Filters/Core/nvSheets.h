@@ -1,0 +1,31 @@
+// Which sheets of the phi = 0 surface to keep. The region phi < 0 splits into
+// the exterior (connected to the grid's boundary) and cavities (enclosed by
+// the shell). The outer sheet faces the exterior, the inner sheets face the
+// cavities: for a closed input surface they are its dilation and its erosion
+// by the offset distance.
+#ifndef nvSheets_h
+#define nvSheets_h
+
+#include "NarrowVolumeFiltersModule.h"
+#include "nvGrid.h"
+
+namespace nv
+{
+
+enum class Sheets
+{
+  Both = 0,
+  Outer = 1,
+  Inner = 2
+};
+
+/**
+ * Rewrites phi (one value per grid node) so that contouring it at 0 gives
+ * only the chosen sheets: cavities are filled (set to +1) to drop the inner
+ * sheets, or the exterior is (to drop the outer sheet). Both: no change.
+ */
+NARROWVOLUMEFILTERS_EXPORT void KeepSheets(const Grid& grid, float* phi, Sheets which);
+
+} // namespace nv
+
+#endif

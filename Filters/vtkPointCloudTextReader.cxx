@@ -1,0 +1,231 @@
+#include "vtkPointCloudTextReader.h"
+
+#include "vtkCellArray.h"
+#include "vtkFloatArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <vector>
+
+vtkStandardNewMacro(vtkPointCloudTextReader);
+
+namespace
+{
+
+/// The numbers of one line; false if a field is not a number.
+bool ParseLine(const std::string& line, std::vector<double>& values)
+{
+  values.clear();
+  const char* p = line.c_str();
+  while (*p)
+  {
+    while (*p == ' ' || *p == '\t' || *p == ',' || *p == ';' || *p == '\r')
+      ++p;
+    if (!*p)
+      break;
+    char* end = nullptr;
+    const double v = std::strtod(p, &end);
+    if (end == p)
+      return false;
+    values.push_back(v);
+    p = end;
+  }
+  return true;
+}
+
+bool IsComment(const std::string& line)
+{
+  const auto first = line.find_first_not_of(" \t\r");
+  return first == std::string::npos || line[first] == '#' || line.compare(first, 2, "//") == 0;
+}
+
+bool LooksLikeColour(const double* v)
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    if (v[c] < 0 || v[c] > 255 || v[c] != std::floor(v[c]))
+      return false;
+  }
+  return true;
+}
+
+/// What the columns after x, y, z hold.
+struct Layout
+{
+  int IntensityColumn = -1;
+  int ColorColumn = -1;
+  int NormalColumn = -1;
+  std::vector<int> Others;
+};
+
+Layout LayoutFor(const std::vector<double>& first)
+{
+  Layout layout;
+  const int extra = static_cast<int>(first.size()) - 3;
+  if (extra == 1)
+  {
+    layout.IntensityColumn = 3;
+  }
+  else if (extra == 3)
+  {
+    (LooksLikeColour(&first[3]) ? layout.ColorColumn : layout.NormalColumn) = 3;
+  }
+  else if (extra == 4)
+  {
+    layout.IntensityColumn = 3;
+    layout.ColorColumn = 4;
+  }
+  else if (extra == 6)
+  {
+    const bool colourFirst = LooksLikeColour(&first[3]) && !LooksLikeColour(&first[6]);
+    layout.ColorColumn = colourFirst ? 3 : 6;
+    layout.NormalColumn = colourFirst ? 6 : 3;
+  }
+  else
+  {
+    for (int c = 3; c < static_cast<int>(first.size()); ++c)
+      layout.Others.push_back(c);
+  }
+  return layout;
+}
+
+} // namespace
+
+vtkPointCloudTextReader::vtkPointCloudTextReader()
+{
+  this->SetNumberOfInputPorts(0);
+}
+
+vtkPointCloudTextReader::~vtkPointCloudTextReader() = default;
+
+int vtkPointCloudTextReader::CanReadFile(const char* fileName)
+{
+  std::ifstream in(fileName);
+  std::string line;
+  std::vector<double> values;
+  int checked = 0;
+  while (checked < 5 && std::getline(in, line))
+  {
+    if (IsComment(line))
+      continue;
+    if (!ParseLine(line, values) || (values.size() < 3 && !(checked == 0 && values.size() == 1)))
+      return 0;
+    ++checked;
+  }
+  return checked > 0 ? 1 : 0;
+}
+
+int vtkPointCloudTextReader::RequestData(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  std::ifstream in(this->FileName);
+  if (this->FileName.empty() || !in)
+  {
+    vtkErrorMacro("Cannot open the point cloud file \"" << this->FileName << "\".");
+    return 0;
+  }
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkFloatArray> intensity, normals;
+  vtkNew<vtkUnsignedCharArray> colors;
+  std::vector<vtkSmartPointer<vtkFloatArray>> others;
+  Layout layout;
+  std::size_t columns = 0;
+  std::string line;
+  std::vector<double> v;
+  long lineNumber = 0;
+  bool first = true;
+  while (std::getline(in, line))
+  {
+    ++lineNumber;
+    if (IsComment(line))
+      continue;
+    if (!ParseLine(line, v))
+    {
+      vtkErrorMacro(<< this->FileName << ", line " << lineNumber << ": not a list of numbers: \"" << line << "\".");
+      output->Initialize();
+      return 0;
+    }
+    if (first && v.size() == 1)
+    {
+      continue; // the point count of a .pts file
+    }
+    if (first)
+    {
+      if (v.size() < 3)
+      {
+        vtkErrorMacro(<< this->FileName << ", line " << lineNumber << ": fewer than 3 coordinates.");
+        return 0;
+      }
+      columns = v.size();
+      layout = LayoutFor(v);
+      intensity->SetName("Intensity");
+      normals->SetName("Normals");
+      normals->SetNumberOfComponents(3);
+      colors->SetName("Colors");
+      colors->SetNumberOfComponents(3);
+      for (int c : layout.Others)
+      {
+        auto array = vtkSmartPointer<vtkFloatArray>::New();
+        array->SetName(("Column" + std::to_string(c + 1)).c_str());
+        others.push_back(array);
+      }
+      first = false;
+    }
+    if (v.size() != columns)
+    {
+      vtkErrorMacro(<< this->FileName << ", line " << lineNumber << ": " << v.size() << " columns where the first point had "
+                    << columns << ".");
+      output->Initialize();
+      return 0;
+    }
+    points->InsertNextPoint(v.data());
+    if (layout.IntensityColumn >= 0)
+      intensity->InsertNextValue(static_cast<float>(v[layout.IntensityColumn]));
+    if (layout.NormalColumn >= 0)
+      normals->InsertNextTuple(&v[layout.NormalColumn]);
+    if (layout.ColorColumn >= 0)
+      colors->InsertNextTuple(&v[layout.ColorColumn]);
+    for (std::size_t o = 0; o < others.size(); ++o)
+      others[o]->InsertNextValue(static_cast<float>(v[layout.Others[o]]));
+  }
+
+  const vtkIdType n = points->GetNumberOfPoints();
+  vtkNew<vtkCellArray> vertices;
+  vtkNew<vtkIdTypeArray> offsets, connectivity;
+  offsets->SetNumberOfValues(n + 1);
+  connectivity->SetNumberOfValues(n);
+  for (vtkIdType i = 0; i <= n; ++i)
+    offsets->SetValue(i, i);
+  for (vtkIdType i = 0; i < n; ++i)
+    connectivity->SetValue(i, i);
+  vertices->SetData(offsets, connectivity);
+  output->SetPoints(points);
+  output->SetVerts(vertices);
+  if (layout.IntensityColumn >= 0)
+    output->GetPointData()->AddArray(intensity);
+  if (layout.NormalColumn >= 0)
+    output->GetPointData()->SetNormals(normals);
+  if (layout.ColorColumn >= 0)
+    output->GetPointData()->SetScalars(colors);
+  for (auto& array : others)
+    output->GetPointData()->AddArray(array);
+  return 1;
+}
+
+void vtkPointCloudTextReader::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << this->FileName << "\n";
+}
