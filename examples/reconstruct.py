@@ -50,6 +50,7 @@ def main():
     parser.add_argument("--out", default="out", help="output folder (default out/)")
     parser.add_argument("--plugin", default="", help="path of NarrowVolume.so")
     parser.add_argument("--no-picture", action="store_true", help="skip the PNG")
+    parser.add_argument("--up", choices="xyz", default="z", help="the model's up axis, for the picture (default z)")
     args = parser.parse_args()
 
     pvs.LoadPlugin(find_plugin(args.plugin), ns=globals())
@@ -106,7 +107,8 @@ def main():
         # Cut the shell open to show its thickness, with the input points inside.
         clip = pvs.Clip(Input=surface, ClipType="Plane")
         clip.ClipType.Origin = center
-        clip.ClipType.Normal = [0, 0, 1]
+        up = [1.0 if args.up == a else 0.0 for a in "xyz"]
+        clip.ClipType.Normal = up
         clip.Invert = 1
         shown = pvs.Show(clip, view)
         shown.ColorArrayName = ["POINTS", ""]
@@ -119,9 +121,11 @@ def main():
         points.DiffuseColor = [0.1, 0.2, 0.6]
         points.AmbientColor = [0.1, 0.2, 0.6]
         pvs.Render(view)  # the first render resets the camera; place it after
-        view.CameraPosition = [center[0] + 0.6 * longest, center[1] - 1.4 * longest, center[2] + 1.6 * longest]
+        # Look from the front, a little from above the cut.
+        front = {"x": [0.0, -1.4, 0.6], "y": [0.6, 1.6, 1.4], "z": [0.6, -1.4, 1.6]}[args.up]
+        view.CameraPosition = [center[a] + front[a] * longest for a in range(3)]
         view.CameraFocalPoint = center
-        view.CameraViewUp = [0, 0, 1]
+        view.CameraViewUp = up
         view.ResetCamera()
         pvs.GetActiveCamera().Dolly(1.5)
         pvs.Render(view)

@@ -1,0 +1,47 @@
+"""The real ParaView client under Xvfb: loads the plugin, opens the demo
+cloud, applies Narrow Volume Reconstruction with the panel's defaults and
+shows both outputs; the screenshot must show the shell.
+
+    pvpython test_gui.py PLUGIN CLOUD WITH_XVFB
+"""
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+import numpy as np
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkIOImage import vtkPNGReader
+
+import nvtesting
+
+plugin, cloud, with_xvfb = sys.argv[1:4]
+t = nvtesting.Checker("test_gui")
+folder = tempfile.mkdtemp(prefix="nv-gui-")
+env = dict(os.environ, NV_PLUGIN=plugin, NV_CLOUD=cloud, NV_SCREENSHOT=os.path.join(folder, "gui.png"),
+           NV_GUI_RESULT=os.path.join(folder, "result.json"), NV_FORCE_XVFB="1")
+script = os.path.join(os.path.dirname(os.path.abspath(__file__)), "gui_script.py")
+run = subprocess.run([with_xvfb, "paraview", "--script=" + script], env=env, capture_output=True, text=True,
+                     timeout=300)
+t.check(os.path.exists(env["NV_GUI_RESULT"]), "the client ran the script (exit %d): %s" % (run.returncode, run.stderr[-2000:]))
+if os.path.exists(env["NV_GUI_RESULT"]):
+    result = json.load(open(env["NV_GUI_RESULT"]))
+    print(json.dumps(result, indent=1))
+    t.check(result.get("ok"), "script ran through: %s" % result.get("error"))
+    t.check(result.get("label") == "Narrow Volume Reconstruction", "filter label")
+    t.check(result.get("offset_default", 0) > 0, "offset default from the input's size")
+    t.check(result.get("surface_cells", 0) > 10000, "surface computed with the panel's defaults")
+    t.check(result.get("volume_points", 0) > 100000, "volume computed")
+    t.check(result.get("cloud_visible"), "the input points stay visible")
+    png = vtkPNGReader()
+    png.SetFileName(env["NV_SCREENSHOT"])
+    png.Update()
+    image = vtk_to_numpy(png.GetOutput().GetPointData().GetScalars())[:, :3].astype(int)
+    background = np.median(image, axis=0)
+    content = np.abs(image - background).sum(axis=1) > 60
+    orange = (image[:, 0] > image[:, 2] + 40)  # the shell's colour
+    print("screenshot: %.1f %% content, %.1f %% shell-coloured" % (100 * content.mean(), 100 * orange.mean()))
+    t.check(content.mean() > 0.05, "the screenshot has content")
+    t.check(orange.mean() > 0.02, "the shell is in the picture")
+t.finish()
