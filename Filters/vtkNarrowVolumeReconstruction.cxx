@@ -6,7 +6,7 @@
 #include "nvParallel.h"
 #include "nvParameters.h"
 #include "nvSheets.h"
-#include "nvSlabSurface.h"
+#include "nvSurface.h"
 #include "nvTruncatedDistance.h"
 #include "nvVolume.h"
 
@@ -15,7 +15,6 @@
 #include "vtkDoubleArray.h"
 #include "vtkEventForwarderCommand.h"
 #include "vtkFieldData.h"
-#include "vtkFlyingEdges3D.h"
 #include "vtkFloatArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkImageData.h"
@@ -369,25 +368,14 @@ int vtkNarrowVolumeReconstruction::RequestData(
     this->UpdateProgress(0.92);
 
     // Output 1: the phi = 0 surfaces, all or some of them.
-    vtkNew<vtkImageData> scalarOnly;
-    scalarOnly->CopyStructure(volume);
-    scalarOnly->GetPointData()->SetScalars(phi);
     vtkNew<vtkFloatArray> chosen;
     if (this->Sheets != BOTH_SHEETS)
     {
       chosen->DeepCopy(phi);
       nv::KeepSheets(grid, chosen->GetPointer(0),
         this->Sheets == OUTER_SHEET ? nv::Sheets::Outer : nv::Sheets::Inner);
-      scalarOnly->GetPointData()->SetScalars(chosen);
     }
-    vtkNew<vtkFlyingEdges3D> contour;
-    contour->SetInputData(scalarOnly);
-    contour->SetValue(0, 0.0);
-    contour->ComputeNormalsOn();
-    contour->ComputeGradientsOff();
-    contour->ComputeScalarsOff();
-    contour->Update();
-    surface->ShallowCopy(contour->GetOutput());
+    surface->ShallowCopy(nv::ExtractSurface(grid, this->Sheets != BOTH_SHEETS ? chosen.Get() : phi.Get()));
     this->OutputTime = Seconds(start);
   });
   if (aborted)

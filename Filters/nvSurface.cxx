@@ -1,4 +1,4 @@
-#include "nvSlabSurface.h"
+#include "nvSurface.h"
 
 #include "nvNarrowBand.h"
 #include "nvParallel.h"
@@ -26,6 +26,52 @@ namespace nv
 namespace
 {
 using Key = std::array<float, 2>; // (x, y) of a vertex on a shared plane
+
+/// Contours phi (nodes of z layers [kBegin, kEnd)) in the grid's own frame.
+vtkSmartPointer<vtkPolyData> ContourLocal(const Grid& grid, vtkDataArray* phi, std::int64_t kBegin, std::int64_t kEnd)
+{
+  vtkNew<vtkImageData> image;
+  image->SetOrigin(0.0, 0.0, 0.0);
+  image->SetSpacing(grid.Spacing, grid.Spacing, grid.Spacing);
+  image->SetExtent(0, static_cast<int>(grid.Dims[0] - 1), 0, static_cast<int>(grid.Dims[1] - 1),
+    static_cast<int>(kBegin), static_cast<int>(kEnd - 1));
+  image->GetPointData()->SetScalars(phi);
+  vtkNew<vtkFlyingEdges3D> contour;
+  contour->SetInputData(image);
+  contour->SetValue(0, 0.0);
+  contour->ComputeNormalsOn();
+  contour->ComputeGradientsOff();
+  contour->ComputeScalarsOff();
+  contour->Update();
+  return contour->GetOutput();
+}
+
+/// Replaces the surface's float grid-frame points by double world points.
+void MoveToWorld(vtkPolyData* surface, const Grid& grid)
+{
+  vtkPoints* local = surface->GetPoints();
+  if (!local)
+  {
+    return;
+  }
+  vtkNew<vtkPoints> world;
+  world->SetDataTypeToDouble();
+  world->SetNumberOfPoints(local->GetNumberOfPoints());
+  for (vtkIdType p = 0; p < local->GetNumberOfPoints(); ++p)
+  {
+    double x[3];
+    local->GetPoint(p, x);
+    world->SetPoint(p, grid.Origin[0] + x[0], grid.Origin[1] + x[1], grid.Origin[2] + x[2]);
+  }
+  surface->SetPoints(world);
+}
+} // namespace
+
+vtkSmartPointer<vtkPolyData> ExtractSurface(const Grid& grid, vtkDataArray* phi)
+{
+  auto surface = ContourLocal(grid, phi, 0, grid.Dims[2]);
+  MoveToWorld(surface, grid);
+  return surface;
 }
 
 vtkSmartPointer<vtkPolyData> ExtractSurfaceBySlabs(const TruncatedDistance& distance,
@@ -81,24 +127,11 @@ vtkSmartPointer<vtkPolyData> ExtractSurfaceBySlabs(const TruncatedDistance& dist
     vtkNew<vtkFloatArray> scalars;
     scalars->SetName("phi");
     scalars->SetArray(slab.data(), static_cast<vtkIdType>(slab.size()), 1); // borrowed, not copied
-    vtkNew<vtkImageData> image;
-    image->SetOrigin(grid.Origin[0], grid.Origin[1], grid.Origin[2]);
-    image->SetSpacing(grid.Spacing, grid.Spacing, grid.Spacing);
-    image->SetExtent(0, static_cast<int>(nx - 1), 0, static_cast<int>(ny - 1), static_cast<int>(kBegin),
-      static_cast<int>(kEnd - 1));
-    image->GetPointData()->SetScalars(scalars);
-    vtkNew<vtkFlyingEdges3D> contour;
-    contour->SetInputData(image);
-    contour->SetValue(0, 0.0);
-    contour->ComputeNormalsOn();
-    contour->ComputeGradientsOff();
-    contour->ComputeScalarsOff();
-    contour->Update();
-    vtkPolyData* piece = contour->GetOutput();
+    vtkSmartPointer<vtkPolyData> piece = ContourLocal(grid, scalars, kBegin, kEnd);
 
     // Append, merging the vertices on the plane shared with the slab below.
-    const float zBelow = static_cast<float>(grid.Origin[2] + kBegin * grid.Spacing);
-    const float zAbove = static_cast<float>(grid.Origin[2] + (kEnd - 1) * grid.Spacing);
+    const float zBelow = static_cast<float>(kBegin * grid.Spacing);
+    const float zAbove = static_cast<float>((kEnd - 1) * grid.Spacing);
     vtkDataArray* pieceNormals = piece->GetPointData()->GetNormals();
     std::vector<vtkIdType> id(static_cast<std::size_t>(piece->GetNumberOfPoints()));
     for (vtkIdType p = 0; p < piece->GetNumberOfPoints(); ++p)
@@ -138,6 +171,7 @@ vtkSmartPointer<vtkPolyData> ExtractSurfaceBySlabs(const TruncatedDistance& dist
   surface->SetPoints(points);
   surface->SetPolys(triangles);
   surface->GetPointData()->SetNormals(normals);
+  MoveToWorld(surface, grid);
   return surface;
 }
 

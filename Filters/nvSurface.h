@@ -1,0 +1,44 @@
+// The phi = 0 surface, by vtkFlyingEdges3D, from the dense volume or slab by
+// slab without it.
+//
+// Contouring runs in the grid's own frame (origin 0) and the vertices are
+// moved to world coordinates in double precision afterwards, so that a cloud
+// far from the origin (1e8, say) keeps the precision of its own size.
+//
+// Without a dense volume, the grid is cut into slabs of z layers; each slab is
+// filled (phi only) and contoured, and the vertices that neighbouring slabs
+// both make on their shared plane are merged. Peak memory is one slab, not
+// the box. The vertices and triangles are those of contouring the whole
+// volume; only the normals on the shared planes differ slightly (one-sided
+// gradients there).
+#ifndef nvSurface_h
+#define nvSurface_h
+
+#include "vtkSmartPointer.h"
+
+#include <vector>
+
+class vtkDataArray;
+class vtkPolyData;
+
+namespace nv
+{
+class Monitor;
+struct NarrowBand;
+struct Grid;
+struct Parameters;
+class TruncatedDistance;
+
+/// Slab thickness in cells (a multiple of the brick size).
+constexpr int SlabCells = 16;
+
+/// The phi = 0 surface of a dense phi array (one value per grid node).
+vtkSmartPointer<vtkPolyData> ExtractSurface(const Grid& grid, vtkDataArray* phi);
+
+/// The same surface without the dense array.
+vtkSmartPointer<vtkPolyData> ExtractSurfaceBySlabs(const TruncatedDistance& distance,
+  const NarrowBand& band, const std::vector<double>& phi, const Parameters& parameters, Monitor* monitor);
+
+} // namespace nv
+
+#endif

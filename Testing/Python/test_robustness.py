@@ -1,0 +1,82 @@
+"""Degenerate but valid input gets the right shell, far-away clouds keep
+their precision, and many random small clouds and parameter sets keep the
+invariants: no NaN, phi in [-1, 1], a closed surface, the same phi on every run."""
+import numpy as np
+from vtkmodules.util.numpy_support import vtk_to_numpy
+
+from narrowvolume import vtkNarrowVolumeReconstruction
+import nvtesting
+
+t = nvtesting.Checker("test_robustness")
+
+
+def run(xyz, **settings):
+    f = vtkNarrowVolumeReconstruction()
+    f.SetInputData(nvtesting.cloud(np.asarray(xyz, dtype=float).reshape(-1, 3)))
+    for key, value in settings.items():
+        getattr(f, "Set" + key)(value)
+    f.Update()
+    return f
+
+
+def phi_of(f):
+    array = f.GetOutput(0).GetPointData().GetArray("phi")
+    return vtk_to_numpy(array) if array is not None else np.zeros(0)
+
+
+# One point, and many identical points: the shell is a ball of radius l.
+for name, xyz in (("one point", [[1.0, 2.0, 3.0]]), ("identical points", [[1.0, 2.0, 3.0]] * 50)):
+    f = run(xyz, OffsetDistance=0.2, SampleSpacing=0.02)
+    s = f.GetOutput(1)
+    r = np.linalg.norm(nvtesting.points_of(s) - [1.0, 2.0, 3.0], axis=1)
+    t.check(nvtesting.regions(s) == 1 and nvtesting.boundary_edges(s) == 0, "%s: one closed sheet" % name)
+    t.check(abs(r.mean() - 0.2) < 0.01 and r.max() < 0.2 + 0.01, "%s: a sphere of radius l (%.4f)" % (name, r.mean()))
+
+# Collinear and coplanar points: a capsule and a rounded slab, each one closed sheet.
+line = np.c_[np.linspace(0, 1, 101), np.zeros(101), np.zeros(101)]
+u, v = np.meshgrid(np.linspace(0, 1, 41), np.linspace(0, 1, 41))
+plane = np.c_[u.ravel(), v.ravel(), np.zeros(u.size)]
+for name, xyz in (("collinear", line), ("coplanar", plane)):
+    s = run(xyz, OffsetDistance=0.1, SampleSpacing=0.02).GetOutput(1)
+    t.check(nvtesting.regions(s) == 1 and nvtesting.boundary_edges(s) == 0, "%s: one closed sheet" % name)
+
+# An offset larger than the cloud: one outer sheet, no cavity.
+s = run(nvtesting.sphere_points(200, 0.1), OffsetDistance=0.5, SampleSpacing=0.03).GetOutput(1)
+t.check(nvtesting.regions(s) == 1 and nvtesting.boundary_edges(s) == 0, "offset larger than the cloud")
+
+# Far from the origin: the same shell. The shifted input itself is quantized
+# at 1.5e-8 (a double's step at 1e8), which moves phi by ~1e-6 and vertices
+# by ~1e-5; float32 world coordinates would be off by whole units there.
+sphere = nvtesting.sphere_points(3000, 0.5)
+near = run(sphere, OffsetDistance=0.1, SampleSpacing=0.02).GetOutput(1)
+shift = np.array([1e8, -1e8, 1e8])
+far = run(sphere + shift, OffsetDistance=0.1, SampleSpacing=0.02).GetOutput(1)
+t.check(far.GetNumberOfPolys() == near.GetNumberOfPolys(), "far cloud: same triangles")
+far_points = nvtesting.points_of(far) - shift
+t.check(np.abs(far_points - nvtesting.points_of(near)).max() < 1e-4, "far cloud: same vertices (%.2e)" %
+        np.abs(far_points - nvtesting.points_of(near)).max())
+
+# Random clouds and parameters.
+rng = np.random.default_rng(2026)
+cases = 0
+for trial in range(40):
+    n = int(rng.integers(1, 300))
+    size = 10.0 ** rng.uniform(-3, 3)
+    xyz = rng.uniform(-size, size, (n, 3)) * rng.uniform(0, 1, 3) + rng.uniform(-1e3, 1e3, 3)
+    settings = dict(OffsetDistance=size * rng.uniform(0.05, 0.5), MaximumDimension=int(rng.integers(20, 60)),
+                    XiCells=rng.uniform(1, 4), EpsilonCells=rng.uniform(1, 12),
+                    MaximumNumberOfIterations=int(rng.integers(0, 6)), Domain=int(rng.integers(0, 2)),
+                    EdgeStoppingFunction=int(rng.integers(3, 5)), NumberOfThreads=int(rng.integers(1, 3)))
+    f = run(xyz, **settings)
+    phi = phi_of(f)
+    s = f.GetOutput(1)
+    label = "trial %d (%d points, %s)" % (trial, n, settings)
+    t.check(phi.size > 0, "%s: a volume" % label)
+    t.check(np.isfinite(phi).all(), "%s: no NaN" % label)
+    t.check(phi.min() >= -1 and phi.max() <= 1, "%s: phi in [-1, 1]" % label)
+    t.check(nvtesting.boundary_edges(s) == 0, "%s: closed surface" % label)
+    again = phi_of(run(xyz, **dict(settings, NumberOfThreads=3 - settings["NumberOfThreads"])))
+    t.check(np.array_equal(phi, again), "%s: same phi, other thread count" % label)
+    cases += 1
+print("%d random cases" % cases)
+t.finish()
