@@ -156,11 +156,28 @@ vtkPolyData* vtkNarrowVolumeReconstruction::GetSurfaceOutput()
 vtkTypeBool vtkNarrowVolumeReconstruction::ProcessRequest(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
+  if (request->Has(vtkStreamingDemandDrivenPipeline::REQUEST_UPDATE_EXTENT()))
+  {
+    return this->RequestUpdateExtent(request, inputVector, outputVector);
+  }
   if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA()))
   {
     return this->RequestData(request, inputVector, outputVector);
   }
   return this->Superclass::ProcessRequest(request, inputVector, outputVector);
+}
+
+//------------------------------------------------------------------------------
+int vtkNarrowVolumeReconstruction::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  // The shell depends on every point: each process asks for the whole cloud.
+  // (Under MPI the first process alone then produces the output; see RequestData.)
+  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
+  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+  return 1;
 }
 
 //------------------------------------------------------------------------------
@@ -177,6 +194,16 @@ int vtkNarrowVolumeReconstruction::RequestData(
   this->NumberOfBandNodes = 0;
   this->NumberOfGridNodes = 0;
   this->SetupTime = this->EvolutionTime = this->OutputTime = 0.0;
+
+  // In a data-parallel run (pvbatch or pvserver under MPI) every process has
+  // the whole cloud (RequestUpdateExtent); the piece 0 process computes the
+  // shell and the others leave their pieces empty, so the result is the
+  // serial one, without duplicates.
+  vtkInformation* surfaceInfo = outputVector->GetInformationObject(1);
+  if (surfaceInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) > 0)
+  {
+    return 1;
+  }
 
   // --- Validate the input and the parameters before allocating anything large.
   if (!input || !input->GetPoints() || input->GetNumberOfPoints() < 1)
@@ -211,6 +238,16 @@ int vtkNarrowVolumeReconstruction::RequestData(
     vtkErrorMacro("TimeStep must be finite, not " << this->TimeStep << ".");
     return 1;
   }
+  if (!(this->XiCells >= 1.0 && this->XiCells <= 64.0))
+  {
+    vtkErrorMacro("XiCells must be in [1, 64], not " << this->XiCells << ".");
+    return 1;
+  }
+  if (!(this->EpsilonCells >= 0.5 && this->EpsilonCells <= 256.0))
+  {
+    vtkErrorMacro("EpsilonCells must be in [0.5, 256], not " << this->EpsilonCells << ".");
+    return 1;
+  }
 
   nv::Parameters parameters;
   parameters.OffsetDistance = this->OffsetDistance;
@@ -233,7 +270,13 @@ int vtkNarrowVolumeReconstruction::RequestData(
     return 1;
   }
 
-  // Grid size, checked in floating point before any integer can overflow.
+  // Memory, checked in two stages. Here, before any allocation that grows with
+  // the grid, in floating point so that no integer can overflow: the dense
+  // output (phi, the optional arrays, the isosurfacer's working memory), the
+  // per-brick tables (24 bytes a brick of 512 nodes), the points, and in Whole
+  // Domain mode the band arrays on every node. The narrow band's own size is
+  // known only once its distances are computed: BuildNarrowBand refuses it
+  // then, before allocating its arrays, if it would not fit in what is left.
   const double padding = nv::GridPadding(parameters.Reach(), parameters.Spacing);
   double nodesEstimate = 1.0;
   for (int a = 0; a < 3; ++a)
@@ -241,15 +284,13 @@ int vtkNarrowVolumeReconstruction::RequestData(
     nodesEstimate *= (bounds[2 * a + 1] - bounds[2 * a] + 2.0 * padding) / parameters.Spacing + 2.0;
   }
   const double pointsCount = static_cast<double>(points.size() / 3);
-  const double boxNodes = std::pow(2.0 * parameters.Reach() / parameters.Spacing + 1.0, 3);
   const bool whole = parameters.Mode == nv::Domain::WholeDomain;
-  const double bandEstimate = whole ? nodesEstimate : std::min(nodesEstimate, pointsCount * boxNodes);
-  // Bytes: dense output (phi, optional arrays, the isosurfacer's working
-  // memory) + band arrays and solver vectors (72 bytes a node) + points.
+  constexpr double BytesPerBandNode = 72.0 + 16.0; // arrays and solver vectors, plus the transient lists
   const double perNode = this->OutputVolume ? 4.0 + (this->OutputInitialPhi ? 4.0 : 0.0) +
       (this->OutputDistance ? 4.0 : 0.0) + (this->OutputNarrowBand ? 1.0 : 0.0) + 2.0
                                            : 0.0;
-  const double bytesEstimate = nodesEstimate * perNode + bandEstimate * 72.0 + pointsCount * 48.0;
+  const double bytesEstimate = nodesEstimate * (perNode + 24.0 / 512.0 + (whole ? BytesPerBandNode : 0.0)) +
+    pointsCount * 48.0;
   double limitMiB = this->MemoryLimit;
   if (limitMiB <= 0.0)
   {
@@ -257,15 +298,21 @@ int vtkNarrowVolumeReconstruction::RequestData(
     info.RunMemoryCheck();
     limitMiB = 0.5 * static_cast<double>(info.GetTotalPhysicalMemory());
   }
-  if (bytesEstimate > limitMiB * 1048576.0 || nodesEstimate > static_cast<double>(VTK_ID_MAX) ||
+  const double limitBytes = limitMiB * 1048576.0;
+  if (bytesEstimate > limitBytes || nodesEstimate > static_cast<double>(VTK_ID_MAX) ||
     (whole && nodesEstimate > static_cast<double>(nv::MaximumBandSize)))
   {
     vtkErrorMacro("The grid is too large: about " << nodesEstimate << " nodes (spacing "
                                                   << parameters.Spacing << ") need about "
                                                   << bytesEstimate / 1048576.0 << " MiB, over the limit of "
                                                   << limitMiB << " MiB. Increase SampleSpacing, lower "
-                                                  << "MaximumDimension or raise MemoryLimit.");
+                                                  << "MaximumDimension, raise MemoryLimit"
+                                                  << (this->OutputVolume ? " or turn OutputVolume off." : "."));
     return 1;
+  }
+  if (!whole)
+  {
+    parameters.MaximumBandNodes = static_cast<std::int64_t>((limitBytes - bytesEstimate) / BytesPerBandNode);
   }
   const nv::Grid grid = nv::MakeGrid(bounds, parameters.Spacing, padding);
   this->NumberOfGridNodes = static_cast<vtkIdType>(grid.NumberOfNodes());
@@ -277,6 +324,7 @@ int vtkNarrowVolumeReconstruction::RequestData(
     backend = "STDThread";
   }
   bool aborted = false;
+  std::int64_t refusedBand = 0;
   vtkSMPTools::LocalScope(vtkSMPTools::Config{ this->NumberOfThreads, backend, false }, [&]() {
     FilterMonitor monitor(this);
     auto start = std::chrono::steady_clock::now();
@@ -288,6 +336,11 @@ int vtkNarrowVolumeReconstruction::RequestData(
     std::vector<double>().swap(points);
     const nv::NarrowBand band = nv::BuildNarrowBand(distance, parameters, &monitor);
     this->SetupTime = Seconds(start);
+    if (band.RefusedSize > 0)
+    {
+      refusedBand = band.RefusedSize;
+      return;
+    }
     if (monitor.Aborted())
     {
       aborted = true;
@@ -378,6 +431,17 @@ int vtkNarrowVolumeReconstruction::RequestData(
     surface->ShallowCopy(nv::ExtractSurface(grid, this->Sheets != BOTH_SHEETS ? chosen.Get() : phi.Get()));
     this->OutputTime = Seconds(start);
   });
+  if (refusedBand > 0)
+  {
+    vtkErrorMacro("The narrow band is too large: " << refusedBand << " nodes need about "
+                    << refusedBand * BytesPerBandNode / 1048576.0 << " MiB, more than the "
+                    << (limitBytes - bytesEstimate) / 1048576.0 << " MiB left under the limit of " << limitMiB
+                    << " MiB. Increase SampleSpacing, lower MaximumDimension, raise MemoryLimit"
+                    << (this->OutputVolume ? " or turn OutputVolume off." : "."));
+    volume->Initialize();
+    surface->Initialize();
+    return 1;
+  }
   if (aborted)
   {
     volume->Initialize();

@@ -93,19 +93,20 @@ public:
   /**
    * xi = eps_m with m = XiCells (eq. 2): the width of the initial profile, and
    * of the band, 2 m cells. Larger values close small holes and thin gaps.
-   * Range [1, 64], default 2 (the paper's).
+   * Range [1, 64] (below 1 cell the band's Dirichlet rule, eq. 5, no longer
+   * holds); other values are refused when the filter runs. Default 2 (the paper's).
    */
-  vtkSetClampMacro(XiCells, double, 1.0, 64.0);
+  vtkSetMacro(XiCells, double);
   vtkGetMacro(XiCells, double);
   ///@}
 
   ///@{
   /**
    * eps = eps_m with m = EpsilonCells (eq. 1, 12): the interface width of the
-   * Allen-Cahn evolution. Larger values smooth more. Range [0.5, 256],
-   * default 6 (the paper's).
+   * Allen-Cahn evolution. Larger values smooth more. Range [0.5, 256]; other
+   * values are refused when the filter runs. Default 6 (the paper's).
    */
-  vtkSetClampMacro(EpsilonCells, double, 0.5, 256.0);
+  vtkSetMacro(EpsilonCells, double);
   vtkGetMacro(EpsilonCells, double);
   ///@}
 
@@ -276,6 +277,7 @@ protected:
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int FillOutputPortInformation(int port, vtkInformation* info) override;
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
 
   double OffsetDistance = 0.1;

@@ -43,6 +43,16 @@ AllenCahnSolver::AllenCahnSolver(const NarrowBand& band, const Parameters& param
   const double xi = parameters.Xi();
   const double l = parameters.OffsetDistance;
   const EdgeStopping function = parameters.EdgeFunction;
+  // Over-relaxation: the Jacobi iteration of (10) contracts by at most
+  // rho = 6 c / (1 + 6 c) for the largest coupling c = dt max(g) / h^2
+  // (max g = 1/4 for eq. 4, 1 for eq. 3); for this red-black (consistently
+  // ordered) system the optimal factor is 2 / (1 + sqrt(1 - rho^2)), which
+  // cuts the sweeps about threefold at the paper's defaults.
+  const double gMax = function == EdgeStopping::Eq4 ? 0.25 : 1.0;
+  const double cMax = dt * gMax / (h * h);
+  const double rho = 6.0 * cMax / (1.0 + 6.0 * cMax);
+  this->Omega = parameters.Relaxation > 0.0 ? parameters.Relaxation : 2.0 / (1.0 + std::sqrt(1.0 - rho * rho));
+
   ParallelFor(0, size, Grain, [&](std::int64_t begin, std::int64_t end) {
     for (std::int64_t s = begin; s < end; ++s)
     {
@@ -60,6 +70,7 @@ double AllenCahnSolver::HalfSweep(std::int64_t begin, std::int64_t end)
 {
   double* phi = this->Phi.data();
   const std::uint32_t* neighbor = this->Band.Neighbor.data();
+  const double omega = this->Omega;
   return ParallelMax(end - begin, [&](std::int64_t first, std::int64_t last) {
     double change = 0.0;
     for (std::int64_t s = begin + first; s < begin + last; ++s)
@@ -70,9 +81,10 @@ double AllenCahnSolver::HalfSweep(std::int64_t begin, std::int64_t end)
       const std::uint32_t* n = neighbor + 6 * s;
       const double sum = phi[n[0]] + phi[n[1]] + phi[n[2]] + phi[n[3]] + phi[n[4]] + phi[n[5]];
       const double rhs = this->Previous[s];
-      const double updated = rhs + this->Coupling[s] * (sum - 6.0 * rhs);
-      change = std::max(change, std::fabs(updated - phi[s]));
-      phi[s] = updated;
+      const double solved = rhs + this->Coupling[s] * (sum - 6.0 * rhs);
+      const double step = omega * (solved - phi[s]);
+      change = std::max(change, std::fabs(step));
+      phi[s] += step;
     }
     return change;
   });

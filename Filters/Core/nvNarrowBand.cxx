@@ -128,9 +128,11 @@ NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& 
   }
   band.RedCount = redStart[numberOfBricks];
   const std::int64_t size = band.RedCount + blackStart[numberOfBricks];
-  if (size > MaximumBandSize)
+  if (size > MaximumBandSize || (parameters.MaximumBandNodes >= 0 && size > parameters.MaximumBandNodes))
   {
-    return NarrowBand{};
+    NarrowBand refused;
+    refused.RefusedSize = size;
+    return refused;
   }
   for (std::int64_t a = 0; a <= numberOfBricks; ++a)
   {

@@ -40,6 +40,10 @@ struct NARROWVOLUMEFILTERS_EXPORT NarrowBand
   std::vector<std::int64_t> RedStart;
   std::vector<std::int64_t> BlackStart;
 
+  /// Set when the band would exceed Parameters::MaximumBandNodes: the band is
+  /// then left empty, before its arrays are allocated.
+  std::int64_t RefusedSize = 0;
+
   std::int64_t Size() const { return static_cast<std::int64_t>(this->Node.size()); }
   std::uint32_t InsideSlot() const { return static_cast<std::uint32_t>(this->Size()); }
   std::uint32_t OutsideSlot() const { return static_cast<std::uint32_t>(this->Size() + 1); }

@@ -6,6 +6,7 @@
 #define nvParameters_h
 
 #include <cmath>
+#include <cstdint>
 
 namespace nv
 {
@@ -50,7 +51,12 @@ struct Parameters
   double ConvergenceTolerance = 0.0; ///< relative l2 change per step; 0: run all steps
   double GaussSeidelTolerance = 1e-6; ///< max-norm change of one red-black sweep
   int MaximumNumberOfSweeps = 1000;   ///< safety cap on Gauss-Seidel sweeps per step
+  /// Over-relaxation factor of the red-black Gauss-Seidel sweeps: 1 is plain
+  /// Gauss-Seidel; 0 (default) picks the optimal factor for the strongest
+  /// coupling (see AllenCahnSolver). The converged step (10) is the same.
+  double Relaxation = 0.0;
   double Delta = 0.01;                ///< delta of eq. (5): band is |phi0| < 1 - delta
+  std::int64_t MaximumBandNodes = -1; ///< refuse a larger band (memory budget); < 0: no limit
   Domain Mode = Domain::NarrowBand;
   EdgeStopping EdgeFunction = EdgeStopping::Eq4;
 

@@ -113,6 +113,18 @@ int main()
     f->SetTimeStep(nan);
     ExpectError(f, Cloud(good), "TimeStep must be finite");
   }
+  for (double xi : { 0.5, 0.0, -1.0, 100.0, nan })
+  {
+    auto f = Filter();
+    f->SetXiCells(xi);
+    ExpectError(f, Cloud(good), "XiCells must be in [1, 64]");
+  }
+  for (double eps : { 0.1, -3.0, 1000.0, nan })
+  {
+    auto f = Filter();
+    f->SetEpsilonCells(eps);
+    ExpectError(f, Cloud(good), "EpsilonCells must be in [0.5, 256]");
+  }
   {
     // 1e-5 spacing over a unit cloud: 10^15 nodes, refused before allocating.
     auto f = Filter();
