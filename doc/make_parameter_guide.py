@@ -19,12 +19,12 @@ sparse.UpdatePipeline()
 H = 2.2 / 120  # cells of the 120-cell grid used below
 
 panels = [
-    ("l = 2h: a thin shell", dict(OffsetDistance=2 * H)),
-    ("l = 6h: a thick one", dict(OffsetDistance=6 * H)),
-    ("xi = eps_1: holes stay open", dict(OffsetDistance=2 * H, XiCells=1, MaximumNumberOfIterations=10)),
-    ("xi = eps_4: holes close", dict(OffsetDistance=2 * H, XiCells=4, MaximumNumberOfIterations=10)),
-    ("eps = eps_3: wrinkled", dict(OffsetDistance=3 * H, EpsilonCells=3)),
-    ("eps = eps_12: smooth", dict(OffsetDistance=3 * H, EpsilonCells=12)),
+    ("l = 2h, 3 steps", dict(OffsetDistance=2 * H)),
+    ("l = 6h, 3 steps", dict(OffsetDistance=6 * H)),
+    ("l = 3h, xi = eps_1, 10 steps", dict(OffsetDistance=3 * H, XiCells=1, MaximumNumberOfIterations=10)),
+    ("l = 3h, xi = eps_4, 10 steps", dict(OffsetDistance=3 * H, XiCells=4, MaximumNumberOfIterations=10)),
+    ("l = 3h, eps = eps_3, 10 steps", dict(OffsetDistance=3 * H, EpsilonCells=3, MaximumNumberOfIterations=10)),
+    ("l = 3h, eps = eps_12, 10 steps", dict(OffsetDistance=3 * H, EpsilonCells=12, MaximumNumberOfIterations=10)),
 ]
 folder = tempfile.mkdtemp()
 images = []

@@ -13,7 +13,7 @@ PACKAGES=(
   libavcodec-dev libavformat-dev libswscale-dev libavutil-dev libhdf5-openmpi-dev
   python3-dev python3-numpy libeigen3-dev libx11-dev libgl-dev libboost-dev liblzma-dev
   qtbase5-dev qttools5-dev libqt5svg5-dev qttools5-dev-tools qtxmlpatterns5-dev-tools
-  xvfb xauth clang libclang-rt-14-dev
+  xvfb xauth clang libclang-rt-14-dev time
 )
 # Optional extras asked for by name: NV_EXTRA_PACKAGES="libopenvdb-dev libtbb-dev"
 read -r -a EXTRA <<< "${NV_EXTRA_PACKAGES:-}"
