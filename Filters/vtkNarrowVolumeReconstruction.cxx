@@ -393,29 +393,25 @@ int vtkNarrowVolumeReconstruction::RequestData(
       vtkWarningMacro("Keeping one sheet needs the dense grid: memory follows the box although "
                       "OutputVolume is off.");
     }
+    // The optional arrays: named, sized and attached to the volume.
+    auto addArray = [&](auto* array, const char* name) {
+      array->SetName(name);
+      array->SetNumberOfTuples(nodes);
+      volume->GetPointData()->AddArray(array);
+      array->Delete(); // the point data holds it now
+      return array->GetPointer(0);
+    };
     if (this->OutputVolume && this->OutputInitialPhi)
     {
-      vtkNew<vtkFloatArray> initial;
-      initial->SetName("InitialPhi");
-      initial->SetNumberOfTuples(nodes);
-      arrays.InitialPhi = initial->GetPointer(0);
-      volume->GetPointData()->AddArray(initial);
+      arrays.InitialPhi = addArray(vtkFloatArray::New(), "InitialPhi");
     }
     if (this->OutputVolume && this->OutputDistance)
     {
-      vtkNew<vtkFloatArray> distanceArray;
-      distanceArray->SetName("Distance");
-      distanceArray->SetNumberOfTuples(nodes);
-      arrays.Distance = distanceArray->GetPointer(0);
-      volume->GetPointData()->AddArray(distanceArray);
+      arrays.Distance = addArray(vtkFloatArray::New(), "Distance");
     }
     if (this->OutputVolume && this->OutputNarrowBand)
     {
-      vtkNew<vtkUnsignedCharArray> bandArray;
-      bandArray->SetName("NarrowBand");
-      bandArray->SetNumberOfTuples(nodes);
-      arrays.Band = bandArray->GetPointer(0);
-      volume->GetPointData()->AddArray(bandArray);
+      arrays.Band = addArray(vtkUnsignedCharArray::New(), "NarrowBand");
     }
     nv::FillVolume(distance, band, solver.GetPhi(), parameters, distance.ReachedBricks(), arrays);
     this->UpdateProgress(0.92);
