@@ -114,10 +114,16 @@ int vtkPointCloudTextReader::CanReadFile(const char* fileName)
   std::string line;
   std::vector<double> values;
   int checked = 0;
+  bool header = false;
   while (checked < 5 && std::getline(in, line))
   {
     if (IsComment(line))
       continue;
+    if (checked == 0 && !header && !ParseLine(line, values))
+    {
+      header = true; // column names
+      continue;
+    }
     if (!ParseLine(line, values) || (values.size() < 3 && !(checked == 0 && values.size() == 1)))
       return 0;
     ++checked;
@@ -146,11 +152,17 @@ int vtkPointCloudTextReader::RequestData(
   std::vector<double> v;
   long lineNumber = 0;
   bool first = true;
+  bool headerSkipped = false;
   while (std::getline(in, line))
   {
     ++lineNumber;
     if (IsComment(line))
       continue;
+    if (!ParseLine(line, v) && first && !headerSkipped)
+    {
+      headerSkipped = true; // a header line of column names, as CSV files have
+      continue;
+    }
     if (!ParseLine(line, v))
     {
       vtkErrorMacro(<< this->FileName << ", line " << lineNumber << ": not a list of numbers: \"" << line << "\".");

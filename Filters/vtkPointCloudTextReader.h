@@ -11,8 +11,8 @@
  * - 6: "Normals" then "Colors", or "Colors" then "Normals" (told apart the
  *   same way);
  * - any other count: "Column4", "Column5", ... as scalars.
- * A first line holding a single integer (the point count of .pts files) and
- * lines starting with # or // are skipped. The output has one vertex cell
+ * A first line of column names (CSV), a first line holding a single integer
+ * (the point count of .pts files) and lines starting with # or // are skipped. The output has one vertex cell
  * per point, so ParaView shows the cloud at once. A malformed line is a clear
  * error naming the line, with an empty output.
  */

@@ -63,6 +63,12 @@ f.SetSampleSpacing(0.03)
 f.Update()
 t.check(nvtesting.regions(f.GetOutput(1)) == 2, "the filter reads the reader's output")
 
+csv = write("cloud.csv", "x,y,z,nx,ny,nz\n" + "\n".join("%.6f,%.6f,%.6f,%.6f,%.6f,%.6f" % (tuple(p) + tuple(n))
+                                                      for p, n in zip(xyz, normals)))
+_, cloud, errors = read(csv)
+t.check(cloud.GetNumberOfPoints() == 400 and not errors, "CSV with a header line")
+t.check(cloud.GetPointData().GetNormals() is not None, "CSV normals")
+
 bad = write("bad.xyz", "0 0 0\n1 1 1\n2 two 2\n")
 _, cloud, errors = read(bad)
 t.check(cloud.GetNumberOfPoints() == 0, "malformed file: empty output")
