@@ -11,12 +11,15 @@ namespace
 {
 // Chunk size of the deterministic reductions: fixed, never derived from the thread count.
 constexpr std::int64_t ReductionChunk = 8192;
+// Below this many items a reduction (one Gauss-Seidel half sweep, say) costs
+// less than the hand-off to the threads: it runs on the calling thread.
+constexpr std::int64_t SerialReduction = 1 << 18;
 
 std::vector<double> ChunkValues(std::int64_t n, const RangeReduction& fn)
 {
   const std::int64_t chunks = (n + ReductionChunk - 1) / ReductionChunk;
   std::vector<double> values(static_cast<std::size_t>(chunks), 0.0);
-  ParallelFor(0, chunks, 1, [&](std::int64_t first, std::int64_t last) {
+  ParallelFor(0, chunks, n < SerialReduction ? chunks : 1, [&](std::int64_t first, std::int64_t last) {
     for (std::int64_t c = first; c < last; ++c)
     {
       const std::int64_t begin = c * ReductionChunk;
@@ -33,8 +36,18 @@ void ParallelFor(std::int64_t begin, std::int64_t end, std::int64_t grain, const
   {
     return;
   }
-  vtkSMPTools::For(begin, end, std::max<std::int64_t>(grain, 1),
-    [&fn](std::int64_t first, std::int64_t last) { fn(first, last); });
+  grain = std::max<std::int64_t>(grain, 1);
+  // One chunk of work, or one thread: run here. A parallel region costs tens
+  // of microseconds in VTK 9.2's STDThread backend, even with one thread.
+  if (end - begin <= grain || vtkSMPTools::GetEstimatedNumberOfThreads() <= 1)
+  {
+    for (std::int64_t first = begin; first < end; first += grain)
+    {
+      fn(first, std::min(end, first + grain));
+    }
+    return;
+  }
+  vtkSMPTools::For(begin, end, grain, [&fn](std::int64_t first, std::int64_t last) { fn(first, last); });
 }
 
 double ParallelSum(std::int64_t n, const RangeReduction& fn)
