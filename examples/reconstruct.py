@@ -5,8 +5,8 @@
 
 cloud: any point file ParaView opens (.vtp, .ply, .vtk, .csv, ...); default:
 the project's demo cloud Data/trefoil.vtp. Writes, in DIR (default out/):
-  NAME_phi.vti      the phase field phi on the grid (output port 0)
-  NAME_shell.vtp    the phi = 0 surfaces with normals (output port 1)
+  NAME_phi.vti      the phase field phi on the grid (output port 0; .pvti under MPI)
+  NAME_shell.vtp    the phi = 0 surfaces with normals (output port 1; .pvtp under MPI)
   NAME_shell.stl    the same surfaces, watertight, for 3D printing
   NAME.png          a picture: the shell cut open, with the input points
 The plugin is found through PV_PLUGIN_PATH or --plugin PATH.
@@ -88,9 +88,13 @@ def main():
     print("offset distance l = %g, grid %s nodes" % (shell.OffsetDistance, volume_info.GetExtent()))
     print("surface: %d triangles, %.2f s" % (surface_info.GetNumberOfCells(), elapsed))
 
-    pvs.SaveData(os.path.join(args.out, name + "_phi.vti"), proxy=shell, PointDataArrays=["phi"])
+    # Under MPI, ParaView writes image data as a parallel .pvti (one piece a rank).
+    ranks = servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
+    volume_file = name + ("_phi.pvti" if ranks > 1 else "_phi.vti")
+    pvs.SaveData(os.path.join(args.out, volume_file), proxy=shell, PointDataArrays=["phi"])
     surface = pvs.OutputPort(shell, 1)
-    pvs.SaveData(os.path.join(args.out, name + "_shell.vtp"), proxy=surface)
+    surface_file = name + ("_shell.pvtp" if ranks > 1 else "_shell.vtp")
+    pvs.SaveData(os.path.join(args.out, surface_file), proxy=surface)
     pvs.SaveData(os.path.join(args.out, name + "_shell.stl"), proxy=surface)
 
     if not args.no_picture:
@@ -130,8 +134,8 @@ def main():
         pvs.GetActiveCamera().Dolly(1.5)
         pvs.Render(view)
         pvs.SaveScreenshot(os.path.join(args.out, name + ".png"), view, ImageResolution=[1200, 900])
-    print("wrote %s/%s_phi.vti, %s_shell.vtp, %s_shell.stl%s" %
-          (args.out, name, name, name, "" if args.no_picture else ", %s.png" % name))
+    print("wrote %s/%s, %s, %s_shell.stl%s" %
+          (args.out, volume_file, surface_file, name, "" if args.no_picture else ", %s.png" % name))
 
 
 if __name__ == "__main__":
