@@ -13,7 +13,7 @@ namespace
 constexpr std::int64_t ReductionChunk = 8192;
 // Below this many items a reduction (one Gauss-Seidel half sweep, say) costs
 // less than the hand-off to the threads: it runs on the calling thread.
-constexpr std::int64_t SerialReduction = 1 << 18;
+constexpr std::int64_t SerialReduction = 1 << 16;
 
 std::vector<double> ChunkValues(std::int64_t n, const RangeReduction& fn)
 {
