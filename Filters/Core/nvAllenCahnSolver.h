@@ -66,12 +66,7 @@ private:
   /// One red or black half sweep over [begin, end); returns the max |change|.
   double HalfSweep(std::int64_t begin, std::int64_t end);
 
-public:
-  /// The over-relaxation factor in use.
-  double GetRelaxation() const { return this->Omega; }
-
-private:
-  double Omega = 1.0;
+  double Omega = 1.0; ///< over-relaxation factor of the sweeps
   const NarrowBand& Band;
   Parameters Params;
   std::vector<double> Phi;      ///< L + 2 values

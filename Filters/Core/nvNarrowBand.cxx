@@ -11,13 +11,6 @@
 namespace nv
 {
 
-std::int64_t NarrowBand::MemoryBytes() const
-{
-  return static_cast<std::int64_t>(this->Node.capacity() * sizeof(std::int64_t) +
-    this->Distance.capacity() * sizeof(double) + this->Neighbor.capacity() * sizeof(std::uint32_t) +
-    (this->Bricks.capacity() + this->RedStart.capacity() + this->BlackStart.capacity()) * sizeof(std::int64_t));
-}
-
 namespace
 {
 

@@ -47,8 +47,6 @@ struct NARROWVOLUMEFILTERS_EXPORT NarrowBand
   std::int64_t Size() const { return static_cast<std::int64_t>(this->Node.size()); }
   std::uint32_t InsideSlot() const { return static_cast<std::uint32_t>(this->Size()); }
   std::uint32_t OutsideSlot() const { return static_cast<std::uint32_t>(this->Size() + 1); }
-  /// Bytes held by the band's arrays.
-  std::int64_t MemoryBytes() const;
 };
 
 /// Largest band the 32-bit neighbour indices can address.
