@@ -67,18 +67,21 @@ void MoveToWorld(vtkPolyData* surface, const Grid& grid)
 }
 } // namespace
 
-vtkSmartPointer<vtkPolyData> ExtractSurface(const Grid& grid, vtkDataArray* phi)
+vtkSmartPointer<vtkPolyData> ExtractSurface(
+  const Grid& grid, vtkDataArray* phi, std::int64_t kBegin, std::int64_t kEnd)
 {
-  auto surface = ContourLocal(grid, phi, 0, grid.Dims[2]);
+  auto surface = ContourLocal(grid, phi, kBegin, kEnd < 0 ? grid.Dims[2] : kEnd);
   MoveToWorld(surface, grid);
   return surface;
 }
 
 vtkSmartPointer<vtkPolyData> ExtractSurfaceBySlabs(const TruncatedDistance& distance,
-  const NarrowBand& band, const std::vector<double>& phi, const Parameters& parameters, Monitor* monitor)
+  const NarrowBand& band, const std::vector<double>& phi, const Parameters& parameters, Monitor* monitor,
+  std::int64_t kFirst, std::int64_t kLast)
 {
   const Grid& grid = distance.GetGrid();
-  const std::int64_t nx = grid.Dims[0], ny = grid.Dims[1], nz = grid.Dims[2];
+  const std::int64_t nx = grid.Dims[0], ny = grid.Dims[1];
+  const std::int64_t nz = kLast < 0 ? grid.Dims[2] : kLast;
   const std::vector<std::int64_t> reached = distance.ReachedBricks();
 
   vtkNew<vtkPoints> points; // float, as vtkFlyingEdges3D makes them
@@ -100,7 +103,7 @@ vtkSmartPointer<vtkPolyData> ExtractSurfaceBySlabs(const TruncatedDistance& dist
 
   std::map<Key, vtkIdType> sharedBelow; // vertices the previous slab made on this slab's first plane
   std::vector<float> slab;
-  for (std::int64_t kBegin = 0; kBegin + 1 < nz; kBegin += SlabCells)
+  for (std::int64_t kBegin = kFirst; kBegin + 1 < nz; kBegin += SlabCells)
   {
     const std::int64_t kEnd = std::min(kBegin + SlabCells + 1, nz); // one shared plane with the next slab
     std::map<Key, vtkIdType> sharedAbove;
@@ -111,7 +114,7 @@ vtkSmartPointer<vtkPolyData> ExtractSurfaceBySlabs(const TruncatedDistance& dist
     }
     if (monitor)
     {
-      monitor->Progress(static_cast<double>(kBegin) / nz);
+      monitor->Progress(static_cast<double>(kBegin - kFirst) / (nz - kFirst));
     }
     if (!any || (monitor && monitor->Aborted()))
     {

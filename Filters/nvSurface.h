@@ -16,6 +16,7 @@
 
 #include "vtkSmartPointer.h"
 
+#include <cstdint>
 #include <vector>
 
 class vtkDataArray;
@@ -32,12 +33,15 @@ class TruncatedDistance;
 /// Slab thickness in cells (a multiple of the brick size).
 constexpr int SlabCells = 16;
 
-/// The phi = 0 surface of a dense phi array (one value per grid node).
-vtkSmartPointer<vtkPolyData> ExtractSurface(const Grid& grid, vtkDataArray* phi);
+/// The phi = 0 surface of a dense phi array, one value per node of the z
+/// layers [kBegin, kEnd) (kEnd < 0: to the grid's end).
+vtkSmartPointer<vtkPolyData> ExtractSurface(
+  const Grid& grid, vtkDataArray* phi, std::int64_t kBegin = 0, std::int64_t kEnd = -1);
 
 /// The same surface without the dense array.
 vtkSmartPointer<vtkPolyData> ExtractSurfaceBySlabs(const TruncatedDistance& distance,
-  const NarrowBand& band, const std::vector<double>& phi, const Parameters& parameters, Monitor* monitor);
+  const NarrowBand& band, const std::vector<double>& phi, const Parameters& parameters, Monitor* monitor,
+  std::int64_t kBegin = 0, std::int64_t kEnd = -1);
 
 } // namespace nv
 

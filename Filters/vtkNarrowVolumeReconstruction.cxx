@@ -1,10 +1,13 @@
 #include "vtkNarrowVolumeReconstruction.h"
 
 #include "nvAllenCahnSolver.h"
+#include "nvControllerCommunicator.h"
 #include "nvGrid.h"
+#include "nvHalo.h"
 #include "nvNarrowBand.h"
 #include "nvParallel.h"
 #include "nvParameters.h"
+#include "nvPartition.h"
 #include "nvSheets.h"
 #include "nvSurface.h"
 #include "nvTruncatedDistance.h"
@@ -21,6 +24,7 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
+#include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -33,9 +37,11 @@
 
 #include <vtksys/SystemInformation.hxx>
 
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -118,6 +124,35 @@ vtkIdType GatherPoints(vtkPoints* points, std::vector<double>& xyz, double bound
   return -1;
 }
 
+/// Marks the node layers of `volume` outside [pieceBegin, pieceEnd) (its
+/// ghost layers) as duplicate points, and the cells outside the piece's cell
+/// layers as duplicate cells, as ParaView expects of ghost levels.
+void MarkGhostLayers(vtkImageData* volume, std::int64_t pieceBegin, std::int64_t pieceEnd)
+{
+  int extent[6];
+  volume->GetExtent(extent);
+  const vtkIdType layerPoints = static_cast<vtkIdType>(extent[1] - extent[0] + 1) * (extent[3] - extent[2] + 1);
+  const vtkIdType layerCells = static_cast<vtkIdType>(std::max(extent[1] - extent[0], 1)) *
+    std::max(extent[3] - extent[2], 1);
+  vtkUnsignedCharArray* pointGhosts = volume->AllocatePointGhostArray();
+  vtkUnsignedCharArray* cellGhosts = volume->AllocateCellGhostArray();
+  for (int k = extent[4]; k <= extent[5]; ++k)
+  {
+    if (k < pieceBegin || k >= pieceEnd)
+    {
+      const vtkIdType first = layerPoints * (k - extent[4]);
+      std::fill(pointGhosts->GetPointer(first), pointGhosts->GetPointer(first) + layerPoints,
+        static_cast<unsigned char>(vtkDataSetAttributes::DUPLICATEPOINT));
+    }
+    if (k < extent[5] && (k < pieceBegin || k >= pieceEnd - 1))
+    {
+      const vtkIdType first = layerCells * (k - extent[4]);
+      std::fill(cellGhosts->GetPointer(first), cellGhosts->GetPointer(first) + layerCells,
+        static_cast<unsigned char>(vtkDataSetAttributes::DUPLICATECELL));
+    }
+  }
+}
+
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -125,9 +160,13 @@ vtkNarrowVolumeReconstruction::vtkNarrowVolumeReconstruction()
 {
   this->SetNumberOfInputPorts(1);
   this->SetNumberOfOutputPorts(2);
+  this->SetController(vtkMultiProcessController::GetGlobalController());
 }
 
-vtkNarrowVolumeReconstruction::~vtkNarrowVolumeReconstruction() = default;
+vtkNarrowVolumeReconstruction::~vtkNarrowVolumeReconstruction()
+{
+  this->SetController(nullptr);
+}
 
 //------------------------------------------------------------------------------
 int vtkNarrowVolumeReconstruction::FillInputPortInformation(int, vtkInformation* info)
@@ -164,18 +203,58 @@ vtkTypeBool vtkNarrowVolumeReconstruction::ProcessRequest(
   {
     return this->RequestData(request, inputVector, outputVector);
   }
+  if (request->Has(vtkDemandDrivenPipeline::REQUEST_INFORMATION()) && this->WholeExtent[1] >= this->WholeExtent[0])
+  {
+    // The grid follows the points, so its extent is known only once the
+    // filter has run; until it runs again, the last one is the best guess.
+    // (Consumers that assemble pieces, such as ParaView's parallel writers,
+    // read it here.)
+    outputVector->GetInformationObject(0)->Set(
+      vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), this->WholeExtent, 6);
+  }
   return this->Superclass::ProcessRequest(request, inputVector, outputVector);
 }
 
 //------------------------------------------------------------------------------
-int vtkNarrowVolumeReconstruction::RequestUpdateExtent(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+void vtkNarrowVolumeReconstruction::SetController(vtkMultiProcessController* controller)
 {
-  // The shell depends on every point: each process asks for the whole cloud.
-  // (Under MPI the first process alone then produces the output; see RequestData.)
+  vtkSetObjectBodyMacro(Controller, vtkMultiProcessController, controller);
+}
+
+bool vtkNarrowVolumeReconstruction::IsDistributed(vtkInformationVector* outputVector) const
+{
+  if (!this->Controller || this->Controller->GetNumberOfProcesses() < 2)
+  {
+    return false;
+  }
+  for (int port = 0; port < 2; ++port)
+  {
+    vtkInformation* info = outputVector->GetInformationObject(port);
+    if (info && info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()))
+    {
+      return info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) ==
+        this->Controller->GetNumberOfProcesses() &&
+        info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) ==
+        this->Controller->GetLocalProcessId();
+    }
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
+int vtkNarrowVolumeReconstruction::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  // A distributed run takes each process's piece of the cloud and moves the
+  // points where they are needed (RequestData). Otherwise the shell depends
+  // on every point: ask for the whole cloud, and the piece 0 request alone
+  // produces the output.
   vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+  const bool distributed = this->IsDistributed(outputVector);
+  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(),
+    distributed ? this->Controller->GetLocalProcessId() : 0);
+  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(),
+    distributed ? this->Controller->GetNumberOfProcesses() : 1);
   inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
   return 1;
 }
@@ -195,29 +274,66 @@ int vtkNarrowVolumeReconstruction::RequestData(
   this->NumberOfGridNodes = 0;
   this->SetupTime = this->EvolutionTime = this->OutputTime = 0.0;
 
-  // In a data-parallel run (pvbatch or pvserver under MPI) every process has
-  // the whole cloud (RequestUpdateExtent); the piece 0 process computes the
-  // shell and the others leave their pieces empty, so the result is the
-  // serial one, without duplicates.
+  // Distributed (see SetController), or one process computes everything:
+  // then the requests for pieces other than 0 leave their outputs empty, so
+  // that gathered pieces hold the serial result once.
+  const bool distributed = this->IsDistributed(outputVector);
   vtkInformation* surfaceInfo = outputVector->GetInformationObject(1);
-  if (surfaceInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) > 0)
+  if (!distributed && surfaceInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) > 0)
   {
     return 1;
   }
+  std::unique_ptr<nv::ControllerCommunicator> communicator;
+  if (distributed)
+  {
+    communicator.reset(new nv::ControllerCommunicator(this->Controller));
+  }
+  // In a distributed run every error must be every process's: a flag raised
+  // on one process is seen by all (a maximum over them).
+  auto anywhere = [&](bool flag) { return communicator ? communicator->MaxAll(flag ? 1.0 : 0.0) > 0.0 : flag; };
 
   // --- Validate the input and the parameters before allocating anything large.
-  if (!input || !input->GetPoints() || input->GetNumberOfPoints() < 1)
+  std::vector<double> points;
+  double bounds[6] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX,
+    -VTK_DOUBLE_MAX };
+  vtkIdType bad = -1;
+  if (input && input->GetPoints())
+  {
+    bad = GatherPoints(input->GetPoints(), points, bounds);
+  }
+  double totals[2] = { static_cast<double>(points.size() / 3), bad >= 0 ? 1.0 : 0.0 };
+  if (communicator)
+  {
+    communicator->SumAll(totals, 2);
+    // The global box: maxima of (-xmin, xmax, -ymin, ...).
+    double box[6];
+    for (int a = 0; a < 6; ++a)
+    {
+      box[a] = a % 2 ? bounds[a] : -bounds[a];
+    }
+    communicator->MaxAll(box, 6);
+    for (int a = 0; a < 6; ++a)
+    {
+      bounds[a] = a % 2 ? box[a] : -box[a];
+    }
+  }
+  if (totals[0] < 1.0)
   {
     vtkErrorMacro("The input has no points: nothing to reconstruct.");
     return 1;
   }
-  std::vector<double> points;
-  double bounds[6];
-  const vtkIdType bad = GatherPoints(input->GetPoints(), points, bounds);
-  if (bad >= 0)
+  if (totals[1] > 0.0)
   {
-    vtkErrorMacro("Input point " << bad << " has a non-finite coordinate (NaN or infinity); "
-                                 << "remove such points before reconstructing.");
+    if (bad >= 0)
+    {
+      vtkErrorMacro("Input point " << bad << " has a non-finite coordinate (NaN or infinity); "
+                                   << "remove such points before reconstructing.");
+    }
+    else
+    {
+      vtkErrorMacro("A point of another process's piece has a non-finite coordinate (NaN or "
+                    "infinity); remove such points before reconstructing.");
+    }
     return 1;
   }
   if (!std::isfinite(this->OffsetDistance) || this->OffsetDistance <= 0.0)
@@ -270,27 +386,66 @@ int vtkNarrowVolumeReconstruction::RequestData(
     return 1;
   }
 
-  // Memory, checked in two stages. Here, before any allocation that grows with
-  // the grid, in floating point so that no integer can overflow: the dense
-  // output (phi, the optional arrays, the isosurfacer's working memory), the
-  // per-brick tables (24 bytes a brick of 512 nodes), the points, and in Whole
-  // Domain mode the band arrays on every node. The narrow band's own size is
-  // known only once its distances are computed: BuildNarrowBand refuses it
-  // then, before allocating its arrays, if it would not fit in what is left.
+  // The grid's size, in floating point so that no integer can overflow.
   const double padding = nv::GridPadding(parameters.Reach(), parameters.Spacing);
-  double nodesEstimate = 1.0;
+  double cells[3];
   for (int a = 0; a < 3; ++a)
   {
-    nodesEstimate *= (bounds[2 * a + 1] - bounds[2 * a] + 2.0 * padding) / parameters.Spacing + 2.0;
+    cells[a] = (bounds[2 * a + 1] - bounds[2 * a] + 2.0 * padding) / parameters.Spacing + 2.0;
   }
+  const double gridNodes = cells[0] * cells[1] * cells[2];
+  if (gridNodes > static_cast<double>(VTK_ID_MAX) || cells[2] > static_cast<double>(VTK_INT_MAX))
+  {
+    vtkErrorMacro("The grid is too large: about " << gridNodes << " nodes (spacing " << parameters.Spacing
+                                                  << "). Increase SampleSpacing or lower MaximumDimension.");
+    return 1;
+  }
+  const nv::Grid grid = nv::MakeGrid(bounds, parameters.Spacing, padding);
+  this->NumberOfGridNodes = static_cast<vtkIdType>(grid.NumberOfNodes());
+
+  // This process's part of the grid: all of it, or a slab of brick layers
+  // balanced by the number of points per layer (nvPartition.h).
+  const std::int64_t layers = (grid.Dims[2] + nv::BrickSize - 1) >> nv::BrickShift;
+  nv::Subdomain part = nv::Subdomain::Whole(layers);
+  std::vector<nv::LayerRange> owners(1, part.Owned);
+  if (communicator)
+  {
+    std::vector<double> weights(static_cast<std::size_t>(layers), 0.0);
+    for (std::size_t p = 0; p < points.size(); p += 3)
+    {
+      const std::int64_t k = static_cast<std::int64_t>((points[p + 2] - grid.Origin[2]) / grid.Spacing);
+      weights[static_cast<std::size_t>(std::min(layers - 1, std::max<std::int64_t>(0, k >> nv::BrickShift)))] += 1.0;
+    }
+    communicator->SumAll(weights.data(), static_cast<int>(layers));
+    owners = nv::SplitLayers(weights, communicator->Size());
+    part = nv::Subdomain::Around(owners[communicator->Rank()], layers);
+  }
+  // The node layers this process computes, and those of its output piece
+  // (its owned layers and the first layer of the next piece, which both share).
+  const std::int64_t computedBegin = part.Computed.Begin * nv::BrickSize;
+  const std::int64_t computedEnd = std::min(part.Computed.End * nv::BrickSize, grid.Dims[2]);
+  const std::int64_t pieceBegin = part.Owned.Begin * nv::BrickSize;
+  const std::int64_t pieceEnd = std::min(part.Owned.End * nv::BrickSize + 1, grid.Dims[2]);
+  const bool emptyPiece = part.Owned.Empty();
+
+  // Memory, checked in two stages. Here, before any allocation that grows with
+  // the grid: the dense output (phi, the optional arrays, the isosurfacer's
+  // working memory), the per-brick tables (24 bytes a brick of 512 nodes), the
+  // points, and in Whole Domain mode the band arrays on every computed node.
+  // The narrow band's own size is known only once its distances are
+  // computed: BuildNarrowBand refuses it then, before allocating its arrays,
+  // if it would not fit in what is left.
+  const double layerNodes = static_cast<double>(grid.Dims[0] * grid.Dims[1]);
+  const double computedNodes = layerNodes * static_cast<double>(computedEnd - computedBegin);
+  const double pieceNodes = layerNodes * static_cast<double>(pieceEnd - pieceBegin);
   const double pointsCount = static_cast<double>(points.size() / 3);
   const bool whole = parameters.Mode == nv::Domain::WholeDomain;
   constexpr double BytesPerBandNode = 72.0 + 16.0; // arrays and solver vectors, plus the transient lists
   const double perNode = this->OutputVolume ? 4.0 + (this->OutputInitialPhi ? 4.0 : 0.0) +
       (this->OutputDistance ? 4.0 : 0.0) + (this->OutputNarrowBand ? 1.0 : 0.0) + 2.0
                                            : 0.0;
-  const double bytesEstimate = nodesEstimate * (perNode + 24.0 / 512.0 + (whole ? BytesPerBandNode : 0.0)) +
-    pointsCount * 48.0;
+  const double bytesEstimate = pieceNodes * perNode + gridNodes * 24.0 / 512.0 +
+    (whole ? computedNodes * BytesPerBandNode : 0.0) + pointsCount * 48.0;
   double limitMiB = this->MemoryLimit;
   if (limitMiB <= 0.0)
   {
@@ -299,13 +454,13 @@ int vtkNarrowVolumeReconstruction::RequestData(
     limitMiB = 0.5 * static_cast<double>(info.GetTotalPhysicalMemory());
   }
   const double limitBytes = limitMiB * 1048576.0;
-  if (bytesEstimate > limitBytes || nodesEstimate > static_cast<double>(VTK_ID_MAX) ||
-    (whole && nodesEstimate > static_cast<double>(nv::MaximumBandSize)))
+  if (anywhere(bytesEstimate > limitBytes || (whole && computedNodes > static_cast<double>(nv::MaximumBandSize))))
   {
-    vtkErrorMacro("The grid is too large: about " << nodesEstimate << " nodes (spacing "
-                                                  << parameters.Spacing << ") need about "
-                                                  << bytesEstimate / 1048576.0 << " MiB, over the limit of "
-                                                  << limitMiB << " MiB. Increase SampleSpacing, lower "
+    vtkErrorMacro("The grid is too large: about " << gridNodes << " nodes (spacing " << parameters.Spacing
+                                                  << ") need about " << bytesEstimate / 1048576.0
+                                                  << " MiB" << (communicator ? " on some process" : "")
+                                                  << ", over the limit of " << limitMiB
+                                                  << " MiB. Increase SampleSpacing, lower "
                                                   << "MaximumDimension, raise MemoryLimit"
                                                   << (this->OutputVolume ? " or turn OutputVolume off." : "."));
     return 1;
@@ -314,8 +469,25 @@ int vtkNarrowVolumeReconstruction::RequestData(
   {
     parameters.MaximumBandNodes = static_cast<std::int64_t>((limitBytes - bytesEstimate) / BytesPerBandNode);
   }
-  const nv::Grid grid = nv::MakeGrid(bounds, parameters.Spacing, padding);
-  this->NumberOfGridNodes = static_cast<vtkIdType>(grid.NumberOfNodes());
+
+  // A distributed run moves the points within reach of each slab (with one
+  // spare cell) to its process.
+  if (communicator)
+  {
+    std::vector<std::array<double, 2>> zRanges(owners.size());
+    for (std::size_t q = 0; q < owners.size(); ++q)
+    {
+      const nv::Subdomain other = nv::Subdomain::Around(owners[q], layers);
+      const double margin = parameters.Reach() + grid.Spacing;
+      zRanges[q] = { grid.Origin[2] + other.Computed.Begin * nv::BrickSize * grid.Spacing - margin,
+        grid.Origin[2] + (std::min(other.Computed.End * nv::BrickSize, grid.Dims[2]) - 1) * grid.Spacing + margin };
+      if (other.Computed.Empty())
+      {
+        zRanges[q] = { 1.0, 0.0 }; // nothing
+      }
+    }
+    points = nv::ExchangePoints(this->Controller, points, zRanges);
+  }
 
   // --- Run, with all cores when the process-wide backend is Sequential.
   std::string backend = vtkSMPTools::GetBackend() ? vtkSMPTools::GetBackend() : "Sequential";
@@ -324,7 +496,8 @@ int vtkNarrowVolumeReconstruction::RequestData(
     backend = "STDThread";
   }
   bool aborted = false;
-  std::int64_t refusedBand = 0;
+  bool disagree = false;
+  double refusedBand = 0;
   vtkSMPTools::LocalScope(vtkSMPTools::Config{ this->NumberOfThreads, backend, false }, [&]() {
     FilterMonitor monitor(this);
     auto start = std::chrono::steady_clock::now();
@@ -334,51 +507,76 @@ int vtkNarrowVolumeReconstruction::RequestData(
     nv::TruncatedDistance distance(grid, points.data(), static_cast<std::int64_t>(points.size() / 3),
       parameters.Reach());
     std::vector<double>().swap(points);
-    const nv::NarrowBand band = nv::BuildNarrowBand(distance, parameters, &monitor);
+    const nv::NarrowBand band = nv::BuildNarrowBand(distance, parameters, &monitor, &part);
     this->SetupTime = Seconds(start);
-    if (band.RefusedSize > 0)
+    double failed[2] = { static_cast<double>(band.RefusedSize), monitor.Aborted() ? 1.0 : 0.0 };
+    if (communicator)
     {
-      refusedBand = band.RefusedSize;
+      communicator->MaxAll(failed, 2);
+    }
+    refusedBand = failed[0];
+    aborted = failed[1] > 0.0;
+    if (refusedBand > 0 || aborted)
+    {
       return;
     }
-    if (monitor.Aborted())
+    std::int64_t redBegin, redEnd, blackBegin, blackEnd;
+    band.OwnedNodes(true, redBegin, redEnd);
+    band.OwnedNodes(false, blackBegin, blackEnd);
+    double bandNodes = static_cast<double>(redEnd - redBegin + blackEnd - blackBegin);
+    if (communicator)
     {
-      aborted = true;
-      return;
+      communicator->SumAll(&bandNodes, 1);
     }
-    this->NumberOfBandNodes = static_cast<vtkIdType>(band.Size());
+    this->NumberOfBandNodes = static_cast<vtkIdType>(bandNodes);
 
     // Evolution: (10)-(12) per time step.
     start = std::chrono::steady_clock::now();
     monitor.SetStage(0.2, 0.7);
-    nv::AllenCahnSolver solver(band, parameters);
+    std::unique_ptr<nv::Halo> halo;
+    if (communicator)
+    {
+      halo.reset(new nv::Halo(band, part, owners, *communicator));
+      if (!halo->Agree())
+      {
+        disagree = true;
+        return;
+      }
+    }
+    nv::AllenCahnSolver solver(band, parameters, halo.get());
     for (const nv::StepReport& step : solver.Run(&monitor))
     {
       this->RelativeChanges.push_back(step.RelativeChange);
     }
     this->EvolutionTime = Seconds(start);
-    if (monitor.Aborted())
+    aborted = anywhere(monitor.Aborted());
+    if (aborted || emptyPiece)
     {
-      aborted = true;
       return;
     }
 
-    // Output 0: the volume (its geometry always, its arrays on request).
+    // Output 0: the volume, this process's piece of it (its geometry always,
+    // its arrays on request), with ghost layers if the pipeline asks.
     start = std::chrono::steady_clock::now();
+    const std::int64_t ghosts = communicator && this->OutputVolume
+      ? volumeInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS())
+      : 0;
+    const std::int64_t volumeBegin = std::max(computedBegin, pieceBegin - ghosts);
+    const std::int64_t volumeEnd = std::min(computedEnd, pieceEnd + ghosts);
     volume->SetOrigin(grid.Origin[0], grid.Origin[1], grid.Origin[2]);
     volume->SetSpacing(grid.Spacing, grid.Spacing, grid.Spacing);
-    volume->SetExtent(0, static_cast<int>(grid.Dims[0] - 1), 0, static_cast<int>(grid.Dims[1] - 1), 0,
-      static_cast<int>(grid.Dims[2] - 1));
+    volume->SetExtent(0, static_cast<int>(grid.Dims[0] - 1), 0, static_cast<int>(grid.Dims[1] - 1),
+      static_cast<int>(volumeBegin), static_cast<int>(volumeEnd - 1));
     monitor.SetStage(0.9, 0.1);
-    if (!this->OutputVolume && this->Sheets == BOTH_SHEETS)
+    if (!this->OutputVolume && (this->Sheets == BOTH_SHEETS || communicator))
     {
       // Output 1 without a dense volume: slab by slab.
-      surface->ShallowCopy(nv::ExtractSurfaceBySlabs(distance, band, solver.GetPhi(), parameters, &monitor));
+      surface->ShallowCopy(nv::ExtractSurfaceBySlabs(
+        distance, band, solver.GetPhi(), parameters, &monitor, pieceBegin, pieceEnd));
       this->OutputTime = Seconds(start);
-      aborted = monitor.Aborted();
       return;
     }
-    const vtkIdType nodes = static_cast<vtkIdType>(grid.NumberOfNodes());
+    const vtkIdType nodes = static_cast<vtkIdType>(layerNodes) * (volumeEnd - volumeBegin);
     nv::VolumeArrays arrays;
     vtkNew<vtkFloatArray> phi;
     phi->SetName("phi");
@@ -413,27 +611,51 @@ int vtkNarrowVolumeReconstruction::RequestData(
     {
       arrays.Band = addArray(vtkUnsignedCharArray::New(), "NarrowBand");
     }
-    nv::FillVolume(distance, band, solver.GetPhi(), parameters, distance.ReachedBricks(), arrays);
+    nv::FillVolume(
+      distance, band, solver.GetPhi(), parameters, distance.ReachedBricks(), arrays, volumeBegin, volumeEnd);
+    if (volumeBegin < pieceBegin || volumeEnd > pieceEnd)
+    {
+      MarkGhostLayers(volume, pieceBegin, pieceEnd);
+    }
     this->UpdateProgress(0.92);
 
-    // Output 1: the phi = 0 surfaces, all or some of them.
-    vtkNew<vtkFloatArray> chosen;
+    // Output 1: the phi = 0 surfaces of the piece (without its ghost layers),
+    // all or some of them.
+    vtkNew<vtkFloatArray> contoured;
+    contoured->SetArray(arrays.Phi + static_cast<vtkIdType>(layerNodes) * (pieceBegin - volumeBegin),
+      static_cast<vtkIdType>(layerNodes) * (pieceEnd - pieceBegin), 1); // borrowed
     if (this->Sheets != BOTH_SHEETS)
     {
-      chosen->DeepCopy(phi);
-      nv::KeepSheets(grid, chosen->GetPointer(0),
-        this->Sheets == OUTER_SHEET ? nv::Sheets::Outer : nv::Sheets::Inner);
+      if (communicator)
+      {
+        vtkWarningMacro("Keeping one sheet needs the whole grid on one process: both sheets are "
+                        "output in a distributed run.");
+      }
+      else
+      {
+        contoured->DeepCopy(phi);
+        nv::KeepSheets(grid, contoured->GetPointer(0),
+          this->Sheets == OUTER_SHEET ? nv::Sheets::Outer : nv::Sheets::Inner);
+      }
     }
-    surface->ShallowCopy(nv::ExtractSurface(grid, this->Sheets != BOTH_SHEETS ? chosen.Get() : phi.Get()));
+    surface->ShallowCopy(nv::ExtractSurface(grid, contoured, pieceBegin, pieceEnd));
     this->OutputTime = Seconds(start);
   });
   if (refusedBand > 0)
   {
-    vtkErrorMacro("The narrow band is too large: " << refusedBand << " nodes need about "
+    vtkErrorMacro("The narrow band is too large: " << refusedBand << " nodes"
+                    << (communicator ? " on one process" : "") << " need about "
                     << refusedBand * BytesPerBandNode / 1048576.0 << " MiB, more than the "
                     << (limitBytes - bytesEstimate) / 1048576.0 << " MiB left under the limit of " << limitMiB
                     << " MiB. Increase SampleSpacing, lower MaximumDimension, raise MemoryLimit"
                     << (this->OutputVolume ? " or turn OutputVolume off." : "."));
+    volume->Initialize();
+    surface->Initialize();
+    return 1;
+  }
+  if (disagree)
+  {
+    vtkErrorMacro("Internal error: neighbouring processes disagree on their shared band layers.");
     volume->Initialize();
     surface->Initialize();
     return 1;
@@ -445,8 +667,19 @@ int vtkNarrowVolumeReconstruction::RequestData(
     return 1;
   }
 
-  volumeInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), volume->GetExtent(), 6);
-  if (surface->GetNumberOfPoints() == 0)
+  const int wholeExtent[6] = { 0, static_cast<int>(grid.Dims[0] - 1), 0, static_cast<int>(grid.Dims[1] - 1), 0,
+    static_cast<int>(grid.Dims[2] - 1) };
+  std::copy(wholeExtent, wholeExtent + 6, this->WholeExtent);
+  volumeInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), wholeExtent, 6);
+  // The data carries it too: pipelines rebuilt around the data (vtkTrivialProducer,
+  // as in ParaView's writers) read it from there.
+  volume->GetInformation()->Set(vtkDataObject::ALL_PIECES_EXTENT(), wholeExtent, 6);
+  double surfacePoints = static_cast<double>(surface->GetNumberOfPoints());
+  if (communicator)
+  {
+    communicator->SumAll(&surfacePoints, 1);
+  }
+  if (surfacePoints == 0 && (!communicator || communicator->Rank() == 0))
   {
     vtkWarningMacro("The surface is empty: the shell did not survive the evolution. The offset "
                     "distance ("
@@ -496,4 +729,5 @@ void vtkNarrowVolumeReconstruction::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "OutputNarrowBand: " << this->OutputNarrowBand << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "MemoryLimit: " << this->MemoryLimit << " MiB\n";
+  os << indent << "Controller: " << this->Controller << "\n";
 }

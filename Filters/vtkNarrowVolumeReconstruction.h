@@ -28,6 +28,13 @@
  * with the STDThread backend and NumberOfThreads threads (0: all cores).
  * Results are bit-identical for any number of threads.
  *
+ * Under MPI (pvbatch, pvserver) each process brings its piece of the cloud.
+ * The grid is cut along z into one slab per process; each process receives
+ * the points within reach of its slab, evolves the band there while it
+ * exchanges one ghost brick layer with its neighbours per half sweep, and
+ * outputs its piece of phi (with ghost layers on request) and its part of the
+ * surface. phi is the serial run's. See SetController.
+ *
  * @sa
  * vtkUnsignedDistance vtkFlyingEdges3D vtkExtractSurface
  */
@@ -40,6 +47,7 @@
 #include <vector> // for the per-step history
 
 class vtkImageData;
+class vtkMultiProcessController;
 class vtkPointSet;
 class vtkPolyData;
 
@@ -239,9 +247,22 @@ public:
 
   ///@{
   /**
-   * Results of the last run: time steps taken, band nodes, all grid nodes,
+   * The processes that share the work (default: the global controller, the
+   * MPI ranks under pvbatch or pvserver). The run is distributed when the
+   * controller has several processes and the pipeline asks each for its
+   * piece; otherwise one process computes the whole result.
+   */
+  void SetController(vtkMultiProcessController* controller);
+  vtkGetObjectMacro(Controller, vtkMultiProcessController);
+  ///@}
+
+  ///@{
+  /**
+   * Results of the last run: time steps taken, band nodes and all grid nodes
+   * (over all processes in a distributed run),
    * the relative change of each step, and wall-clock seconds of the set-up
-   * (distance and band), the evolution and the output (volume and surface).
+   * (distance and band), the evolution and the output (volume and surface)
+   * on this process.
    */
   int GetNumberOfIterations() const { return static_cast<int>(this->RelativeChanges.size()); }
   vtkGetMacro(NumberOfBandNodes, vtkIdType);
@@ -279,6 +300,8 @@ protected:
   int FillOutputPortInformation(int port, vtkInformation* info) override;
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+  /// Whether this request is one piece of a distributed run (see SetController).
+  bool IsDistributed(vtkInformationVector* outputVector) const;
 
   double OffsetDistance = 0.1;
   double SampleSpacing = 0.0;
@@ -298,6 +321,7 @@ protected:
   bool OutputNarrowBand = false;
   int NumberOfThreads = 0;
   double MemoryLimit = 0.0;
+  vtkMultiProcessController* Controller = nullptr;
 
   vtkIdType NumberOfBandNodes = 0;
   vtkIdType NumberOfGridNodes = 0;
@@ -305,6 +329,7 @@ protected:
   double SetupTime = 0.0;
   double EvolutionTime = 0.0;
   double OutputTime = 0.0;
+  int WholeExtent[6] = { 0, -1, 0, -1, 0, -1 }; ///< of the last run's grid
 
 private:
   vtkNarrowVolumeReconstruction(const vtkNarrowVolumeReconstruction&) = delete;

@@ -1,5 +1,7 @@
 #include "nvAllenCahnSolver.h"
 
+#include "nvCommunicator.h"
+#include "nvHalo.h"
 #include "nvNarrowBand.h"
 #include "nvParallel.h"
 
@@ -24,8 +26,9 @@ double AllenCahnSolver::EdgeStop(double phi0, EdgeStopping function)
   return function == EdgeStopping::Eq4 ? (1.0 - a) * a : 1.0 - phi0 * phi0;
 }
 
-AllenCahnSolver::AllenCahnSolver(const NarrowBand& band, const Parameters& parameters)
+AllenCahnSolver::AllenCahnSolver(const NarrowBand& band, const Parameters& parameters, Halo* halo)
   : Band(band)
+  , Exchange(halo)
   , Params(parameters)
 {
   const std::int64_t size = band.Size();
@@ -95,14 +98,31 @@ int AllenCahnSolver::Diffuse(double* lastChange)
   const std::int64_t size = this->Band.Size();
   std::copy(this->Phi.begin(), this->Phi.begin() + size, this->Previous.begin());
   // Red nodes only read black neighbours and vice versa, so each half sweep
-  // is order-independent and runs in parallel with identical results.
+  // is order-independent and runs in parallel with identical results. In a
+  // distributed run each process sweeps its owned nodes and then refreshes
+  // its ghost nodes of the colour just swept (nvHalo.h).
+  std::int64_t redBegin, redEnd, blackBegin, blackEnd;
+  this->Band.OwnedNodes(true, redBegin, redEnd);
+  this->Band.OwnedNodes(false, blackBegin, blackEnd);
   int sweeps = 0;
   double change = 0.0;
   do
   {
-    const double red = this->HalfSweep(0, this->Band.RedCount);
-    const double black = this->HalfSweep(this->Band.RedCount, size);
+    const double red = this->HalfSweep(redBegin, redEnd);
+    if (this->Exchange)
+    {
+      this->Exchange->Exchange(this->Phi.data(), true);
+    }
+    const double black = this->HalfSweep(blackBegin, blackEnd);
+    if (this->Exchange)
+    {
+      this->Exchange->Exchange(this->Phi.data(), false);
+    }
     change = std::max(red, black);
+    if (this->Exchange)
+    {
+      change = this->Exchange->GetCommunicator().MaxAll(change);
+    }
     ++sweeps;
   } while (change >= this->Params.GaussSeidelTolerance && sweeps < this->Params.MaximumNumberOfSweeps);
   if (lastChange)
@@ -122,6 +142,26 @@ void AllenCahnSolver::React()
   });
 }
 
+template <typename Fn>
+double AllenCahnSolver::OwnedSum(Fn&& fn)
+{
+  double total = 0.0;
+  for (bool red : { true, false })
+  {
+    std::int64_t begin, end;
+    this->Band.OwnedNodes(red, begin, end);
+    total += ParallelSum(end - begin, [&](std::int64_t first, std::int64_t last) {
+      double sum = 0.0;
+      for (std::int64_t s = begin + first; s < begin + last; ++s)
+      {
+        sum += fn(s);
+      }
+      return sum;
+    });
+  }
+  return total;
+}
+
 StepReport AllenCahnSolver::Step()
 {
   StepReport report;
@@ -130,23 +170,14 @@ StepReport AllenCahnSolver::Step()
   // Relative change of section 4; Previous still holds phi^n.
   const double* phi = this->Phi.data();
   const double* previous = this->Previous.data();
-  const double change2 = ParallelSum(this->Band.Size(), [&](std::int64_t begin, std::int64_t end) {
-    double sum = 0.0;
-    for (std::int64_t s = begin; s < end; ++s)
-    {
-      const double d = phi[s] - previous[s];
-      sum += d * d;
-    }
-    return sum;
-  });
-  const double norm2 = ParallelSum(this->Band.Size(), [&](std::int64_t begin, std::int64_t end) {
-    double sum = 0.0;
-    for (std::int64_t s = begin; s < end; ++s)
-    {
-      sum += previous[s] * previous[s];
-    }
-    return sum;
-  });
+  double norms[2] = {
+    this->OwnedSum([&](std::int64_t s) { return (phi[s] - previous[s]) * (phi[s] - previous[s]); }),
+    this->OwnedSum([&](std::int64_t s) { return previous[s] * previous[s]; }) };
+  if (this->Exchange)
+  {
+    this->Exchange->GetCommunicator().SumAll(norms, 2);
+  }
+  const double change2 = norms[0], norm2 = norms[1];
   report.RelativeChange = norm2 > 0.0 ? std::sqrt(change2 / norm2) : 0.0;
   return report;
 }
@@ -160,7 +191,12 @@ std::vector<StepReport> AllenCahnSolver::Run(Monitor* monitor)
     if (monitor)
     {
       monitor->Progress(static_cast<double>(n) / steps);
-      if (monitor->Aborted())
+      bool stop = monitor->Aborted();
+      if (this->Exchange) // every process stops, or none
+      {
+        stop = this->Exchange->GetCommunicator().MaxAll(stop ? 1.0 : 0.0) > 0.0;
+      }
+      if (stop)
       {
         break;
       }

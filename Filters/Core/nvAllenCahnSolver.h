@@ -13,6 +13,7 @@
 
 namespace nv
 {
+class Halo;
 class Monitor;
 struct NarrowBand;
 
@@ -27,8 +28,13 @@ struct StepReport
 class NARROWVOLUMEFILTERS_EXPORT AllenCahnSolver
 {
 public:
-  /// Sets phi^0 by eq. (2) and the per-node coefficients of (10) and (12).
-  AllenCahnSolver(const NarrowBand& band, const Parameters& parameters);
+  /**
+   * Sets phi^0 by eq. (2) and the per-node coefficients of (10) and (12).
+   * halo: in a distributed run, the exchange with the neighbouring processes
+   * (the sweeps then update the owned nodes only, and the stopping tests use
+   * global norms); null in a serial run.
+   */
+  AllenCahnSolver(const NarrowBand& band, const Parameters& parameters, Halo* halo = nullptr);
 
   /// phi0 = tanh((l - d) / (sqrt(2) xi)), eq. (2).
   static double InitialPhi(double distance, double offset, double xi);
@@ -66,8 +72,13 @@ private:
   /// One red or black half sweep over [begin, end); returns the max |change|.
   double HalfSweep(std::int64_t begin, std::int64_t end);
 
+  /// Sum over the owned nodes of fn(s), over all processes in a distributed run.
+  template <typename Fn>
+  double OwnedSum(Fn&& fn);
+
   double Omega = 1.0; ///< over-relaxation factor of the sweeps
   const NarrowBand& Band;
+  Halo* Exchange = nullptr;
   Parameters Params;
   std::vector<double> Phi;      ///< L + 2 values
   std::vector<double> Previous; ///< phi^n, the right-hand side of (10)

@@ -49,25 +49,65 @@ void ForEachBandNode(const TruncatedDistance& distance, const Parameters& parame
 
 } // namespace
 
-NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& parameters, Monitor* monitor)
+std::int64_t NarrowBand::BricksPerLayer() const
+{
+  return ((this->GridNodes.Dims[0] + BrickSize - 1) >> BrickShift) *
+    ((this->GridNodes.Dims[1] + BrickSize - 1) >> BrickShift);
+}
+
+void NarrowBand::BricksInLayers(
+  std::int64_t layerBegin, std::int64_t layerEnd, std::int64_t& first, std::int64_t& last) const
+{
+  const std::int64_t perLayer = this->BricksPerLayer();
+  first = std::lower_bound(this->Bricks.begin(), this->Bricks.end(), layerBegin * perLayer) - this->Bricks.begin();
+  last = std::lower_bound(this->Bricks.begin(), this->Bricks.end(), layerEnd * perLayer) - this->Bricks.begin();
+}
+
+void NarrowBand::OwnedNodes(bool red, std::int64_t& begin, std::int64_t& end) const
+{
+  const std::vector<std::int64_t>& start = red ? this->RedStart : this->BlackStart;
+  if (start.empty()) // a band without brick tables: all of it is owned
+  {
+    begin = red ? 0 : this->RedCount;
+    end = red ? this->RedCount : this->Size();
+    return;
+  }
+  begin = start[this->OwnedBricksBegin];
+  end = start[this->OwnedBricksEnd];
+}
+
+NarrowBand BuildNarrowBand(
+  const TruncatedDistance& distance, const Parameters& parameters, Monitor* monitor, const Subdomain* part)
 {
   NarrowBand band;
   band.GridNodes = distance.GetGrid();
   const Grid& grid = band.GridNodes;
+  const std::int64_t bricksPerLayer = distance.GetBrickDims()[0] * distance.GetBrickDims()[1];
+  const Subdomain whole = Subdomain::Whole(distance.GetBrickDims()[2]);
+  if (!part)
+  {
+    part = &whole;
+  }
 
-  // Step 1: the bricks to visit. Whole domain mode visits all of them.
+  // Step 1: the bricks to visit, in the computed layers. Whole domain mode
+  // visits all of them.
   std::vector<std::int64_t> bricks;
   if (parameters.Mode == Domain::WholeDomain)
   {
-    bricks.resize(static_cast<std::size_t>(distance.GetNumberOfBricks()));
-    for (std::size_t b = 0; b < bricks.size(); ++b)
+    for (std::int64_t b = part->Computed.Begin * bricksPerLayer; b < part->Computed.End * bricksPerLayer; ++b)
     {
-      bricks[b] = static_cast<std::int64_t>(b);
+      bricks.push_back(b);
     }
   }
   else
   {
-    bricks = distance.ReachedBricks();
+    for (std::int64_t b : distance.ReachedBricks())
+    {
+      if (part->Computed.Contains(b / bricksPerLayer))
+      {
+        bricks.push_back(b);
+      }
+    }
   }
   const std::int64_t numberOfBricks = static_cast<std::int64_t>(bricks.size());
   std::atomic<bool> aborted(false);
@@ -235,6 +275,7 @@ NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& 
   band.Bricks = std::move(bricks);
   band.RedStart = std::move(redStart);
   band.BlackStart = std::move(blackStart);
+  band.BricksInLayers(part->Owned.Begin, part->Owned.End, band.OwnedBricksBegin, band.OwnedBricksEnd);
   if (monitor)
   {
     monitor->Progress(1.0);

@@ -7,6 +7,7 @@
 #include "NarrowVolumeFiltersModule.h"
 #include "nvGrid.h"
 #include "nvParameters.h"
+#include "nvPartition.h"
 
 #include <cstdint>
 #include <vector>
@@ -40,6 +41,12 @@ struct NARROWVOLUMEFILTERS_EXPORT NarrowBand
   std::vector<std::int64_t> RedStart;
   std::vector<std::int64_t> BlackStart;
 
+  /// In a distributed run, the band covers this process's computed layers and
+  /// it updates only the nodes of its owned layers: the bricks
+  /// [OwnedBricksBegin, OwnedBricksEnd) of Bricks (all of them in a serial run).
+  std::int64_t OwnedBricksBegin = 0;
+  std::int64_t OwnedBricksEnd = 0;
+
   /// Set when the band would exceed Parameters::MaximumBandNodes: the band is
   /// then left empty, before its arrays are allocated.
   std::int64_t RefusedSize = 0;
@@ -47,6 +54,14 @@ struct NARROWVOLUMEFILTERS_EXPORT NarrowBand
   std::int64_t Size() const { return static_cast<std::int64_t>(this->Node.size()); }
   std::uint32_t InsideSlot() const { return static_cast<std::uint32_t>(this->Size()); }
   std::uint32_t OutsideSlot() const { return static_cast<std::uint32_t>(this->Size() + 1); }
+
+  /// Bricks per brick layer of the grid.
+  std::int64_t BricksPerLayer() const;
+  /// The index range [first, last) of Bricks in brick layers [layerBegin, layerEnd).
+  void BricksInLayers(std::int64_t layerBegin, std::int64_t layerEnd, std::int64_t& first, std::int64_t& last) const;
+  /// The owned red nodes [begin, end) (red = true) or black ones (all of
+  /// them in a band without brick tables).
+  void OwnedNodes(bool red, std::int64_t& begin, std::int64_t& end) const;
 };
 
 /// Largest band the 32-bit neighbour indices can address.
@@ -56,9 +71,11 @@ constexpr std::int64_t MaximumBandSize = 4294967295LL - 2;
  * Finds the band nodes: in Domain::NarrowBand mode the nodes with
  * l - eta/2 < d < l + eta/2 (|phi0| < 1 - delta), in Domain::WholeDomain mode
  * every node of the grid. Returns an empty band if the monitor asks to stop.
+ * part: in a distributed run, the layers this process computes and owns
+ * (nvPartition.h); null for the whole grid.
  */
-NARROWVOLUMEFILTERS_EXPORT NarrowBand BuildNarrowBand(
-  const TruncatedDistance& distance, const Parameters& parameters, Monitor* monitor = nullptr);
+NARROWVOLUMEFILTERS_EXPORT NarrowBand BuildNarrowBand(const TruncatedDistance& distance,
+  const Parameters& parameters, Monitor* monitor = nullptr, const Subdomain* part = nullptr);
 
 } // namespace nv
 

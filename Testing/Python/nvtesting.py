@@ -61,6 +61,7 @@ class Checker:
         if not condition:
             self.failures += 1
             print("FAILED:", message)
+        return condition
 
     def finish(self):
         print("%s: %s (%d failed checks)" % (self.name, "FAILED" if self.failures else "passed", self.failures))

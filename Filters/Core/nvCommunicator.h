@@ -1,0 +1,39 @@
+// What the scheme needs from the other processes of a distributed run:
+// point-to-point messages for the ghost layers and global reductions for the
+// stopping tests. The core only sees this interface; the VTK glue implements
+// it with vtkMultiProcessController (MPI under ParaView).
+#ifndef nvCommunicator_h
+#define nvCommunicator_h
+
+#include "NarrowVolumeFiltersModule.h"
+
+#include <cstdint>
+
+namespace nv
+{
+
+class NARROWVOLUMEFILTERS_EXPORT Communicator
+{
+public:
+  virtual ~Communicator();
+  virtual int Rank() const = 0;
+  virtual int Size() const = 0;
+  /// Blocking send of n values to process `rank` (matched by its Receive).
+  virtual void Send(int rank, const double* values, std::int64_t n) = 0;
+  /// Blocking receive of n values from process `rank`.
+  virtual void Receive(int rank, double* values, std::int64_t n) = 0;
+  /// Element-wise maximum over all processes, in place.
+  virtual void MaxAll(double* values, int n) = 0;
+  /// Element-wise sum over all processes, in place.
+  virtual void SumAll(double* values, int n) = 0;
+
+  double MaxAll(double value)
+  {
+    this->MaxAll(&value, 1);
+    return value;
+  }
+};
+
+} // namespace nv
+
+#endif
