@@ -203,15 +203,6 @@ vtkTypeBool vtkNarrowVolumeReconstruction::ProcessRequest(
   {
     return this->RequestData(request, inputVector, outputVector);
   }
-  if (request->Has(vtkDemandDrivenPipeline::REQUEST_INFORMATION()) && this->WholeExtent[1] >= this->WholeExtent[0])
-  {
-    // The grid follows the points, so its extent is known only once the
-    // filter has run; until it runs again, the last one is the best guess.
-    // (Consumers that assemble pieces, such as ParaView's parallel writers,
-    // read it here.)
-    outputVector->GetInformationObject(0)->Set(
-      vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), this->WholeExtent, 6);
-  }
   return this->Superclass::ProcessRequest(request, inputVector, outputVector);
 }
 
@@ -669,11 +660,10 @@ int vtkNarrowVolumeReconstruction::RequestData(
 
   const int wholeExtent[6] = { 0, static_cast<int>(grid.Dims[0] - 1), 0, static_cast<int>(grid.Dims[1] - 1), 0,
     static_cast<int>(grid.Dims[2] - 1) };
-  std::copy(wholeExtent, wholeExtent + 6, this->WholeExtent);
+  // The grid follows the points, so the whole extent is known only now, not
+  // in the information pass. (ParaView's .pvti writer reads it from there and
+  // so writes the first piece's extent as the whole one; see the README.)
   volumeInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), wholeExtent, 6);
-  // The data carries it too: pipelines rebuilt around the data (vtkTrivialProducer,
-  // as in ParaView's writers) read it from there.
-  volume->GetInformation()->Set(vtkDataObject::ALL_PIECES_EXTENT(), wholeExtent, 6);
   double surfacePoints = static_cast<double>(surface->GetNumberOfPoints());
   if (communicator)
   {

@@ -329,7 +329,6 @@ protected:
   double SetupTime = 0.0;
   double EvolutionTime = 0.0;
   double OutputTime = 0.0;
-  int WholeExtent[6] = { 0, -1, 0, -1, 0, -1 }; ///< of the last run's grid
 
 private:
   vtkNarrowVolumeReconstruction(const vtkNarrowVolumeReconstruction&) = delete;

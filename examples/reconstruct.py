@@ -13,6 +13,7 @@ The plugin is found through PV_PLUGIN_PATH or --plugin PATH.
 """
 import argparse
 import os
+import re
 import sys
 import time
 
@@ -36,6 +37,14 @@ def find_plugin(explicit):
         if os.path.exists(path):
             return path
     sys.exit("NarrowVolume.so not found: build the project, set PV_PLUGIN_PATH or pass --plugin")
+
+
+def fix_whole_extent(pvti, extent):
+    with open(pvti) as f:
+        text = f.read()
+    text = re.sub(r'WholeExtent="[^"]*"', 'WholeExtent="%s"' % " ".join(str(e) for e in extent), text, count=1)
+    with open(pvti, "w") as f:
+        f.write(text)
 
 
 def main():
@@ -92,6 +101,11 @@ def main():
     ranks = servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
     volume_file = name + ("_phi.pvti" if ranks > 1 else "_phi.vti")
     pvs.SaveData(os.path.join(args.out, volume_file), proxy=shell, PointDataArrays=["phi"])
+    if ranks > 1:
+        # The grid follows the points, so the filter knows its whole extent
+        # only after it runs; ParaView's .pvti writer takes it before, from the
+        # first piece. The pieces are right: give the header their union.
+        fix_whole_extent(os.path.join(args.out, volume_file), volume_info.GetExtent())
     surface = pvs.OutputPort(shell, 1)
     surface_file = name + ("_shell.pvtp" if ranks > 1 else "_shell.vtp")
     pvs.SaveData(os.path.join(args.out, surface_file), proxy=surface)

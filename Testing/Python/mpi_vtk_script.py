@@ -1,0 +1,65 @@
+"""Run by test_mpi.py under `mpiexec -np N pvbatch --symmetric`: the plain VTK
+filter (no ParaView proxies) on every rank, each rank holding a different
+share of the cloud, updated as piece `rank` of N with 2 ghost levels. Each
+rank checks its piece against a serial run of the filter (SetController(None))
+and prints FAILED lines for the test to catch.
+
+    mpi_vtk_script.py CLOUD
+"""
+import sys
+
+import numpy as np
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkCommonDataModel import vtkDataSetAttributes
+from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+from vtkmodules.vtkParallelCore import vtkMultiProcessController
+
+import narrowvolume
+import nvtesting
+
+controller = vtkMultiProcessController.GetGlobalController()
+rank, size = controller.GetLocalProcessId(), controller.GetNumberOfProcesses()
+t = nvtesting.Checker("mpi_vtk_script rank %d of %d" % (rank, size))
+reader = vtkXMLPolyDataReader()
+reader.SetFileName(sys.argv[1])
+reader.Update()
+xyz = nvtesting.points_of(reader.GetOutput())
+
+
+def shell(points, distributed):
+    f = narrowvolume.vtkNarrowVolumeReconstruction()
+    f.SetInputData(nvtesting.cloud(points))
+    f.SetOffsetDistance(0.08)
+    f.SetMaximumDimension(70)
+    if not distributed:
+        f.SetController(None)
+    f.UpdatePiece(rank, size, 2)
+    return f
+
+
+# Rank r holds the points with index = r (mod size), sorted by x: pieces
+# that overlap in space and do not follow the z slabs.
+share = xyz[rank::size]
+share = share[np.argsort(share[:, 0])]
+piece = shell(share, True).GetVolumeOutput()
+whole = shell(xyz, False).GetVolumeOutput()
+nx, ny, nz = whole.GetDimensions()
+extent = piece.GetExtent()
+print("rank %d: piece extent %s of %s" % (rank, extent, whole.GetExtent()))
+t.check(extent[:4] == whole.GetExtent()[:4] and 0 <= extent[4] < extent[5] <= nz - 1,
+        "rank %d: a slab of the grid" % rank)
+phi = vtk_to_numpy(piece.GetPointData().GetArray("phi"))
+serial = vtk_to_numpy(whole.GetPointData().GetArray("phi"))[extent[4] * nx * ny:(extent[5] + 1) * nx * ny]
+t.check(phi.shape == serial.shape and float(np.max(np.abs(phi - serial))) <= 1e-6,
+        "rank %d: phi, ghost layers included, is the serial phi" % rank)
+# Ghost layers: 2 below (unless at the grid's start) and 2 above (unless at its end).
+ghosts = piece.GetPointData().GetArray(vtkDataSetAttributes.GhostArrayName())
+expected = (2 if extent[4] > 0 else 0) + (2 if extent[5] < nz - 1 else 0)
+if expected:
+    marked = int(np.count_nonzero(vtk_to_numpy(ghosts))) if ghosts else 0
+    t.check(marked == expected * nx * ny, "rank %d: %d ghost point layers marked (%d points)"
+            % (rank, expected, marked))
+    cells = piece.GetCellData().GetArray(vtkDataSetAttributes.GhostArrayName())
+    t.check(cells is not None and np.count_nonzero(vtk_to_numpy(cells)) == expected * (nx - 1) * (ny - 1),
+            "rank %d: the ghost cell layers are marked" % rank)
+print("rank %d: %d failed checks" % (rank, t.failures))
