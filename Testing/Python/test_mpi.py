@@ -5,10 +5,13 @@ the pieces are read back and compared with a serial run of the same filter:
 phi equal to the Gauss-Seidel tolerance on every node, and the surface made of
 the pieces closed (no cracks, no duplicate triangles at the seams) with the
 serial area and triangles. Also with OutputVolume off (surface by slabs), the
-plain VTK filter with 3 ranks and ghost levels, and the example script.
+plain VTK filter with 3 ranks and ghost levels, pvserver with a pvpython
+client, and the example script.
 (The pieces are read one by one: ParaView's .pvti header gets the first
 piece's extent as the whole extent, see the README.)"""
+import json
 import os
+import socket
 import subprocess
 import sys
 import tempfile
@@ -117,6 +120,38 @@ run = subprocess.run(command, capture_output=True, text=True, timeout=600, env=e
 print(run.stdout)
 t.check(run.returncode == 0 and run.stdout.count("0 failed checks") == 3 and "FAILED" not in run.stdout,
         "VTK filter with 3 ranks and 2 ghost levels: %s" % run.stderr[-2000:])
+
+# pvserver on 2 ranks with a pvpython client, as the GUI would use it
+# (pvserver_client.py): the plugin loaded on the server, the surface fetched.
+with socket.socket() as probe:
+    probe.bind(("localhost", 0))
+    port = probe.getsockname()[1]
+server = subprocess.Popen(["mpiexec", "--allow-run-as-root", "--oversubscribe", "-np", "2", "pvserver",
+                           "--server-port=%d" % port, "--force-offscreen-rendering"],
+                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=env)
+ready = False
+for line in server.stdout:
+    if "Accepting connection" in line:
+        ready = True
+        break
+if t.check(ready, "pvserver started"):
+    result_file = tempfile.mktemp(suffix=".json")
+    run = subprocess.run(["pvpython",
+                          os.path.join(here, "pvserver_client.py"), plugin, cloud, str(port), result_file],
+                         capture_output=True, text=True, timeout=300, env=env)
+    if t.check(run.returncode == 0 and os.path.exists(result_file), "pvserver client ran: %s %s"
+               % (run.stdout[-1000:], run.stderr[-2000:])):
+        result = json.load(open(result_file))
+        print("pvserver, 2 ranks:", result)
+        t.check(result["ranks"] == 2 and result["extent"] == [0, serial_dims[0] - 1, 0, serial_dims[1] - 1, 0,
+                                                               serial_dims[2] - 1],
+                "pvserver: 2 ranks, the volume's pieces make the serial grid")
+        t.check(result["triangles"] == s_triangles and result["open_edges"] == 0 and
+                abs(result["area"] - s_area) <= 1e-6 * s_area, "pvserver: the serial surface, closed")
+try:
+    server.wait(timeout=60)
+except subprocess.TimeoutExpired:
+    server.kill()
 
 # The example script, as a user runs it: with 2 ranks it writes a .pvti that
 # reads back as the serial .vti.
