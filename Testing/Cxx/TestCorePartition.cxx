@@ -1,0 +1,223 @@
+// The distributed scheme without MPI: the slabs of nvPartition, and ranks
+// simulated by threads that talk through an in-memory Communicator. Each
+// rank builds the band on its slab and runs the solver with the ghost-layer
+// exchange of nvHalo; its owned nodes must end with exactly the serial phi.
+#include "nvAllenCahnSolver.h"
+#include "nvCommunicator.h"
+#include "nvGrid.h"
+#include "nvHalo.h"
+#include "nvNarrowBand.h"
+#include "nvPartition.h"
+#include "nvTestUtilities.h"
+#include "nvTruncatedDistance.h"
+
+#include <condition_variable>
+#include <deque>
+#include <map>
+#include <mutex>
+#include <thread>
+#include <unordered_map>
+
+namespace
+{
+
+/// Messages and reductions between threads of one process.
+struct Hub
+{
+  explicit Hub(int size)
+    : Size(size)
+  {
+  }
+  int Size;
+  std::mutex Mutex;
+  std::condition_variable Changed;
+  std::map<std::pair<int, int>, std::deque<std::vector<double>>> Mail; ///< (from, to)
+  std::vector<double> Accumulator, Result;
+  int Arrived = 0;
+  int Generation = 0;
+};
+
+class ThreadCommunicator : public nv::Communicator
+{
+public:
+  ThreadCommunicator(Hub& hub, int rank)
+    : TheHub(hub)
+    , MyRank(rank)
+  {
+  }
+  int Rank() const override { return this->MyRank; }
+  int Size() const override { return this->TheHub.Size; }
+  void Send(int rank, const double* values, std::int64_t n) override
+  {
+    std::lock_guard<std::mutex> lock(this->TheHub.Mutex);
+    this->TheHub.Mail[{ this->MyRank, rank }].emplace_back(values, values + n);
+    this->TheHub.Changed.notify_all();
+  }
+  void Receive(int rank, double* values, std::int64_t n) override
+  {
+    std::unique_lock<std::mutex> lock(this->TheHub.Mutex);
+    auto& box = this->TheHub.Mail[{ rank, this->MyRank }];
+    this->TheHub.Changed.wait(lock, [&] { return !box.empty(); });
+    NV_CHECK(static_cast<std::int64_t>(box.front().size()) == n);
+    std::copy(box.front().begin(), box.front().begin() + std::min<std::size_t>(n, box.front().size()), values);
+    box.pop_front();
+  }
+  void MaxAll(double* values, int n) override { this->Reduce(values, n, true); }
+  void SumAll(double* values, int n) override { this->Reduce(values, n, false); }
+
+private:
+  void Reduce(double* values, int n, bool maximum)
+  {
+    std::unique_lock<std::mutex> lock(this->TheHub.Mutex);
+    Hub& hub = this->TheHub;
+    const int generation = hub.Generation;
+    if (hub.Arrived == 0)
+    {
+      hub.Accumulator.assign(values, values + n);
+    }
+    else
+    {
+      for (int i = 0; i < n; ++i)
+      {
+        hub.Accumulator[i] = maximum ? std::max(hub.Accumulator[i], values[i]) : hub.Accumulator[i] + values[i];
+      }
+    }
+    if (++hub.Arrived == hub.Size)
+    {
+      hub.Result = hub.Accumulator;
+      hub.Arrived = 0;
+      ++hub.Generation;
+      hub.Changed.notify_all();
+    }
+    else
+    {
+      hub.Changed.wait(lock, [&] { return hub.Generation != generation; });
+    }
+    std::copy(hub.Result.begin(), hub.Result.end(), values);
+  }
+  Hub& TheHub;
+  int MyRank;
+};
+
+void TestSplitLayers()
+{
+  // Equal weights: equal slabs; every layer in exactly one slab, in order.
+  for (int layers : { 1, 3, 7, 40 })
+  {
+    for (int parts : { 1, 2, 3, 5 })
+    {
+      const std::vector<nv::LayerRange> slabs = nv::SplitLayers(std::vector<double>(layers, 1.0), parts);
+      NV_CHECK(static_cast<int>(slabs.size()) == parts);
+      std::int64_t next = 0;
+      for (const nv::LayerRange& slab : slabs)
+      {
+        NV_CHECK(slab.Begin == next && slab.End >= slab.Begin);
+        NV_CHECK(!slab.Empty() || layers < parts);
+        next = slab.End;
+      }
+      NV_CHECK(next == layers);
+    }
+  }
+  // All the weight in the last layers: the early slabs take one layer each.
+  std::vector<double> weights(10, 0.0);
+  weights[8] = weights[9] = 5.0;
+  const std::vector<nv::LayerRange> slabs = nv::SplitLayers(weights, 3);
+  NV_CHECK(slabs[0].Begin == 0 && slabs[2].End == 10 && !slabs[1].Empty() && !slabs[2].Empty());
+  // Ghost layers stop at the grid's ends; an empty slab computes nothing.
+  const nv::Subdomain first = nv::Subdomain::Around(nv::LayerRange{ 0, 3 }, 10);
+  NV_CHECK(first.Computed.Begin == 0 && first.Computed.End == 4);
+  const nv::Subdomain last = nv::Subdomain::Around(nv::LayerRange{ 7, 10 }, 10);
+  NV_CHECK(last.Computed.Begin == 6 && last.Computed.End == 10);
+  NV_CHECK(nv::Subdomain::Around(nv::LayerRange{ 4, 4 }, 10).Computed.Empty());
+}
+
+/// The serial phi by grid node.
+std::unordered_map<std::int64_t, double> SerialPhi(
+  const nv::TruncatedDistance& distance, const nv::Parameters& parameters)
+{
+  const nv::NarrowBand band = nv::BuildNarrowBand(distance, parameters);
+  nv::AllenCahnSolver solver(band, parameters);
+  solver.Run();
+  std::unordered_map<std::int64_t, double> phi;
+  for (std::int64_t s = 0; s < band.Size(); ++s)
+  {
+    phi[band.Node[s]] = solver.GetPhi()[s];
+  }
+  return phi;
+}
+
+void TestDistributedSolve(nv::Domain mode, int ranks, std::vector<double> weights)
+{
+  const double center[3] = { 0.0, 0.1, -0.05 };
+  const std::vector<double> points = nvtest::SpherePoints(600, 0.5, center);
+  nv::Parameters parameters;
+  parameters.OffsetDistance = 0.08;
+  parameters.Spacing = 0.02;
+  parameters.MaximumNumberOfIterations = 3;
+  parameters.Mode = mode;
+  const double bounds[6] = { -0.5, 0.5, -0.4, 0.6, -0.55, 0.45 };
+  const nv::Grid grid = nv::MakeGrid(bounds, parameters.Spacing, nv::GridPadding(parameters.Reach(), parameters.Spacing));
+  const nv::TruncatedDistance distance(grid, points.data(), 600, parameters.Reach());
+  const std::unordered_map<std::int64_t, double> serial = SerialPhi(distance, parameters);
+
+  const std::int64_t layers = distance.GetBrickDims()[2];
+  weights.resize(static_cast<std::size_t>(layers), 1.0);
+  const std::vector<nv::LayerRange> owners = nv::SplitLayers(weights, ranks);
+  Hub hub(ranks);
+  std::vector<std::int64_t> owned(static_cast<std::size_t>(ranks), 0);
+  std::vector<int> mismatches(static_cast<std::size_t>(ranks), 0);
+  std::vector<int> agreed(static_cast<std::size_t>(ranks), 0);
+  std::vector<std::thread> threads;
+  for (int rank = 0; rank < ranks; ++rank)
+  {
+    threads.emplace_back([&, rank]() {
+      ThreadCommunicator communicator(hub, rank);
+      const nv::Subdomain part = nv::Subdomain::Around(owners[rank], layers);
+      const nv::NarrowBand band = nv::BuildNarrowBand(distance, parameters, nullptr, &part);
+      nv::Halo halo(band, part, owners, communicator);
+      agreed[rank] = halo.Agree();
+      nv::AllenCahnSolver solver(band, parameters, &halo);
+      solver.Run();
+      for (bool red : { true, false })
+      {
+        std::int64_t begin, end;
+        band.OwnedNodes(red, begin, end);
+        owned[rank] += end - begin;
+        for (std::int64_t s = begin; s < end; ++s)
+        {
+          const auto it = serial.find(band.Node[s]);
+          mismatches[rank] += (it == serial.end() || it->second != solver.GetPhi()[s]) ? 1 : 0;
+        }
+      }
+    });
+  }
+  for (std::thread& thread : threads)
+  {
+    thread.join();
+  }
+  std::int64_t total = 0;
+  for (int rank = 0; rank < ranks; ++rank)
+  {
+    NV_CHECK(agreed[rank]);
+    NV_CHECK(mismatches[rank] == 0);
+    total += owned[rank];
+  }
+  // Every band node is owned by exactly one rank.
+  NV_CHECK(total == static_cast<std::int64_t>(serial.size()));
+}
+
+} // namespace
+
+int main()
+{
+  TestSplitLayers();
+  for (int ranks : { 1, 2, 3, 5 })
+  {
+    TestDistributedSolve(nv::Domain::NarrowBand, ranks, {});
+  }
+  TestDistributedSolve(nv::Domain::WholeDomain, 3, {});
+  // Uneven slabs, and more ranks than brick layers (some ranks own nothing).
+  TestDistributedSolve(nv::Domain::NarrowBand, 4, { 0.0, 0.0, 9.0, 1.0, 0.0 });
+  TestDistributedSolve(nv::Domain::NarrowBand, 12, {});
+  return nvtest::Result("TestCorePartition");
+}
