@@ -13,6 +13,11 @@ namespace nv
 namespace
 {
 constexpr std::int64_t Grain = 4096;
+/// Plain Gauss-Seidel sweeps before the over-relaxation factor is estimated
+/// (at the ninth, the ratio of successive changes has settled: estimated at
+/// the fifth, it comes out lower, and the sweeps of 7 cases add up to 15 %
+/// more).
+constexpr int EstimationSweeps = 8;
 }
 
 double AllenCahnSolver::InitialPhi(double distance, double offset, double xi)
@@ -46,15 +51,10 @@ AllenCahnSolver::AllenCahnSolver(const NarrowBand& band, const Parameters& param
   const double xi = parameters.Xi();
   const double l = parameters.OffsetDistance;
   const EdgeStopping function = parameters.EdgeFunction;
-  // Over-relaxation: the Jacobi iteration of (10) contracts by at most
-  // rho = 6 c / (1 + 6 c) for the largest coupling c = dt max(g) / h^2
-  // (max g = 1/4 for eq. 4, 1 for eq. 3); for this red-black (consistently
-  // ordered) system the optimal factor is 2 / (1 + sqrt(1 - rho^2)), which
-  // cuts the sweeps about threefold at the paper's defaults.
-  const double gMax = function == EdgeStopping::Eq4 ? 0.25 : 1.0;
-  const double cMax = dt * gMax / (h * h);
-  const double rho = 6.0 * cMax / (1.0 + 6.0 * cMax);
-  this->Omega = parameters.Relaxation > 0.0 ? parameters.Relaxation : 2.0 / (1.0 + std::sqrt(1.0 - rho * rho));
+  // Over-relaxation: a fixed factor if given, else estimated during the
+  // first sweeps (see Diffuse).
+  this->Omega = parameters.Relaxation > 0.0 ? parameters.Relaxation : 1.0;
+  this->EstimateOmega = !(parameters.Relaxation > 0.0);
 
   ParallelFor(0, size, Grain, [&](std::int64_t begin, std::int64_t end) {
     for (std::int64_t s = begin; s < end; ++s)
@@ -106,6 +106,7 @@ int AllenCahnSolver::Diffuse(double* lastChange)
   this->Band.OwnedNodes(false, blackBegin, blackEnd);
   int sweeps = 0;
   double change = 0.0;
+  double previousChange = 0.0;
   do
   {
     const double red = this->HalfSweep(redBegin, redEnd);
@@ -123,6 +124,21 @@ int AllenCahnSolver::Diffuse(double* lastChange)
     {
       change = this->Exchange->GetCommunicator().MaxAll(change);
     }
+    if (this->EstimateOmega && sweeps == EstimationSweeps && previousChange > 0.0)
+    {
+      // Plain Gauss-Seidel sweeps of a consistently ordered (red-black)
+      // system contract by rho^2, rho the spectral radius of the Jacobi
+      // iteration; the optimal over-relaxation is then 2 / (1 + sqrt(1 - rho^2)).
+      // rho depends on the band's thickness and on g across it, so it is
+      // measured here, once, from the ratio of two successive changes (the
+      // bound from the largest coupling, 6 c / (1 + 6 c), over-relaxes the
+      // thin band: 78 sweeps instead of 57 on the teacup's 7 steps). Every
+      // process and thread count sees the same changes, so the same factor.
+      const double contraction = std::min(change / previousChange, 0.99);
+      this->Omega = 2.0 / (1.0 + std::sqrt(1.0 - contraction));
+      this->EstimateOmega = false;
+    }
+    previousChange = change;
     ++sweeps;
   } while (change >= this->Params.GaussSeidelTolerance && sweeps < this->Params.MaximumNumberOfSweeps);
   if (lastChange)

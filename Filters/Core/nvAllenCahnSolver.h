@@ -76,7 +76,8 @@ private:
   template <typename Fn>
   double OwnedSum(Fn&& fn);
 
-  double Omega = 1.0; ///< over-relaxation factor of the sweeps
+  double Omega = 1.0;         ///< over-relaxation factor of the sweeps
+  bool EstimateOmega = false; ///< measure Omega during the next sweeps (see Diffuse)
   const NarrowBand& Band;
   Halo* Exchange = nullptr;
   Parameters Params;

@@ -28,6 +28,10 @@ void ForEachBandNode(const TruncatedDistance& distance, const Parameters& parame
   const bool whole = parameters.Mode == Domain::WholeDomain;
   const double lower = parameters.OffsetDistance - parameters.HalfBandWidth();
   const double upper = distance.GetReach();
+  if (!whole && distance.BrickWithin(brick, lower))
+  {
+    return; // d <= l - eta/2 on the whole brick (deep inside the shell): no band node
+  }
   distance.ComputeBrick(brick, scratch);
   std::int64_t first[3];
   distance.BrickFirstNode(brick, first);

@@ -52,8 +52,8 @@ struct Parameters
   double GaussSeidelTolerance = 1e-6; ///< max-norm change of one red-black sweep
   int MaximumNumberOfSweeps = 1000;   ///< safety cap on Gauss-Seidel sweeps per step
   /// Over-relaxation factor of the red-black Gauss-Seidel sweeps: 1 is plain
-  /// Gauss-Seidel; 0 (default) picks the optimal factor for the strongest
-  /// coupling (see AllenCahnSolver). The converged step (10) is the same.
+  /// Gauss-Seidel; 0 (default) measures the optimal factor during the first
+  /// sweeps (see AllenCahnSolver::Diffuse). The converged step (10) is the same.
   double Relaxation = 0.0;
   double Delta = 0.01;                ///< delta of eq. (5): band is |phi0| < 1 - delta
   std::int64_t MaximumBandNodes = -1; ///< refuse a larger band (memory budget); < 0: no limit

@@ -105,6 +105,71 @@ std::vector<std::int64_t> TruncatedDistance::ReachedBricks() const
   return result;
 }
 
+bool TruncatedDistance::BrickWithin(std::int64_t brick, double radius) const
+{
+  // In cells, with a relative margin so that a node whose computed distance
+  // rounds just above the radius is never left out.
+  const double r = radius / this->GridNodes.Spacing * (1.0 - 1e-9);
+  if (!(r > 0.0))
+  {
+    return false;
+  }
+  const double r2 = r * r;
+  std::int64_t first[3], last[3];
+  this->BrickFirstNode(brick, first);
+  for (int a = 0; a < 3; ++a)
+  {
+    last[a] = std::min<std::int64_t>(first[a] + BrickSize, this->GridNodes.Dims[a]) - 1;
+  }
+  // The farthest node of the brick from x is a corner.
+  auto coversBrick = [&](const double* x) {
+    double far2 = 0.0;
+    for (int a = 0; a < 3; ++a)
+    {
+      const double far = std::max(std::fabs(x[a] - first[a]), std::fabs(x[a] - last[a]));
+      far2 += far * far;
+    }
+    return far2 <= r2;
+  };
+  auto scanBucket = [&](std::int64_t bucket) {
+    for (std::int64_t p = this->BucketStart[bucket]; p < this->BucketStart[bucket + 1]; ++p)
+    {
+      if (coversBrick(&this->Points[3 * p]))
+      {
+        return true;
+      }
+    }
+    return false;
+  };
+  if (scanBucket(brick))
+  {
+    return true;
+  }
+  // A covering point is within r of the brick's nodes: in the buckets around.
+  const std::int64_t margin = static_cast<std::int64_t>(std::ceil(r)) + 1;
+  std::int64_t lo[3], hi[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    lo[a] = std::max<std::int64_t>(0, last[a] - margin) >> BrickShift;
+    hi[a] = std::min<std::int64_t>(this->BrickDims[a] - 1, (first[a] + margin) >> BrickShift);
+  }
+  for (std::int64_t bk = lo[2]; bk <= hi[2]; ++bk)
+  {
+    for (std::int64_t bj = lo[1]; bj <= hi[1]; ++bj)
+    {
+      for (std::int64_t bi = lo[0]; bi <= hi[0]; ++bi)
+      {
+        const std::int64_t bucket = bi + this->BrickDims[0] * (bj + this->BrickDims[1] * bk);
+        if (bucket != brick && scanBucket(bucket))
+        {
+          return true;
+        }
+      }
+    }
+  }
+  return false;
+}
+
 void TruncatedDistance::ComputeBrick(std::int64_t brick, double distance[BrickNodes]) const
 {
   // Everything in cells: node (i, j, k) sits at (i, j, k), points at x / h.

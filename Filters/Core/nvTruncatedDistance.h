@@ -52,6 +52,15 @@ public:
    */
   void ComputeBrick(std::int64_t brick, double distance[BrickNodes]) const;
 
+  /**
+   * Whether one point lies within `radius` (world units) of every node of the
+   * brick, so that d <= radius on the whole brick: then no node of the brick
+   * can be a band node with d > radius, and its distances need not be
+   * computed. Cheap: it stops at the first such point, and looks at the
+   * brick's own points first.
+   */
+  bool BrickWithin(std::int64_t brick, double radius) const;
+
 private:
   std::int64_t BrickOfPoint(const double p[3], int axis) const;
 
