@@ -72,6 +72,8 @@ AllenCahnSolver::AllenCahnSolver(const NarrowBand& band, const Parameters& param
 double AllenCahnSolver::HalfSweep(std::int64_t begin, std::int64_t end)
 {
   double* phi = this->Phi.data();
+  const double* previous = this->Previous.data();
+  const double* coupling = this->Coupling.data();
   const std::uint32_t* neighbor = this->Band.Neighbor.data();
   const double omega = this->Omega;
   return ParallelMax(end - begin, [&](std::int64_t first, std::int64_t last) {
@@ -83,8 +85,8 @@ double AllenCahnSolver::HalfSweep(std::int64_t begin, std::int64_t end)
       // phi_s = phi^n_s + w (sum - 6 phi^n_s) with w = c / (1 + 6 c).
       const std::uint32_t* n = neighbor + 6 * s;
       const double sum = phi[n[0]] + phi[n[1]] + phi[n[2]] + phi[n[3]] + phi[n[4]] + phi[n[5]];
-      const double rhs = this->Previous[s];
-      const double solved = rhs + this->Coupling[s] * (sum - 6.0 * rhs);
+      const double rhs = previous[s];
+      const double solved = rhs + coupling[s] * (sum - 6.0 * rhs);
       const double step = omega * (solved - phi[s]);
       change = std::max(change, std::fabs(step));
       phi[s] += step;

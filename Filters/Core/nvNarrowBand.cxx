@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <bitset>
 #include <cmath>
 
 namespace nv
@@ -17,6 +16,15 @@ namespace
 bool IsRed(std::int64_t i, std::int64_t j, std::int64_t k)
 {
   return ((i + j + k) & 1) == 0;
+}
+
+/// Set bits of x (portable: no popcnt instruction is assumed).
+int Popcount(std::uint64_t x)
+{
+  x = x - ((x >> 1) & 0x5555555555555555ULL);
+  x = (x & 0x3333333333333333ULL) + ((x >> 2) & 0x3333333333333333ULL);
+  x = (x + (x >> 4)) & 0x0F0F0F0F0F0F0F0FULL;
+  return static_cast<int>((x * 0x0101010101010101ULL) >> 56);
 }
 
 /// Visits the band nodes of one brick in ascending grid index: fn(i, j, k, d).
@@ -236,6 +244,23 @@ NarrowBand BuildNarrowBand(
     const std::uint64_t even = (word % 2 == 0) ? evenWordMask : ~evenWordMask;
     return red ? even : ~even;
   };
+  // Per brick, colour and word: the same-coloured band nodes in the words
+  // before it, so that a neighbour's rank is one look-up and one count.
+  std::vector<std::uint16_t> before(static_cast<std::size_t>(numberOfBricks * 2 * Words), 0);
+  ParallelFor(0, numberOfBricks, 256, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t a = begin; a < end; ++a)
+    {
+      for (int colour = 0; colour < 2; ++colour)
+      {
+        int count = 0;
+        for (int w = 0; w < Words; ++w)
+        {
+          before[(a * 2 + colour) * Words + w] = static_cast<std::uint16_t>(count);
+          count += Popcount(occupied[a * Words + w] & sameColourMask(w, colour == 0));
+        }
+      }
+    }
+  });
   band.Neighbor.resize(static_cast<std::size_t>(6 * size));
   const double offset = parameters.OffsetDistance;
   ParallelFor(0, size, 1024, [&](std::int64_t begin, std::int64_t end) {
@@ -260,15 +285,10 @@ NarrowBand BuildNarrowBand(
           const std::uint64_t* mask = a >= 0 ? &occupied[static_cast<std::size_t>(a) * Words] : nullptr;
           if (mask && ((mask[local / 64] >> (local % 64)) & 1))
           {
-            std::int64_t rank = 0;
-            for (int w = 0; w < local / 64; ++w)
-            {
-              rank += static_cast<std::int64_t>(
-                std::bitset<64>(mask[w] & sameColourMask(w, neighbourIsRed)).count());
-            }
+            const int w = local / 64;
             const std::uint64_t below = (std::uint64_t(1) << (local % 64)) - 1;
-            rank += static_cast<std::int64_t>(
-              std::bitset<64>(mask[local / 64] & below & sameColourMask(local / 64, neighbourIsRed)).count());
+            const std::int64_t rank = before[(static_cast<std::size_t>(a) * 2 + (neighbourIsRed ? 0 : 1)) * Words + w] +
+              Popcount(mask[w] & below & sameColourMask(w, neighbourIsRed));
             found = static_cast<std::uint32_t>((neighbourIsRed ? redStart[a] : blackStart[a]) + rank);
           }
         }
