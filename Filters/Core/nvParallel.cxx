@@ -14,11 +14,12 @@ constexpr std::int64_t ReductionChunk = 8192;
 // Below this many items a reduction (one Gauss-Seidel half sweep, say) costs
 // less than the hand-off to the threads: it runs on the calling thread.
 // Measured on 2 cores: the sweeps of the sphere of Fig. 5 (95,000 nodes a
-// half sweep) take 25 % longer on two threads than on one, the teacup's
-// (231,000) as long; from the fine armadillo's (826,000) up, two threads
-// are 1.3x to 1.5x faster. A memory-bound sweep gains little from a second
-// thread and pays the threads' wake-up, twice a sweep.
-constexpr std::int64_t SerialReduction = 1 << 18;
+// half sweep) take 25 % longer on two threads than on one; the teacup's
+// (231,000) take about as long in a warm process and less in a fresh one;
+// from the fine armadillo's (826,000) up, two threads are 1.3x to 1.5x
+// faster. A memory-bound sweep gains little from a second thread and pays
+// the threads' wake-up, twice a sweep.
+constexpr std::int64_t SerialReduction = 1 << 17;
 // Chunks per task when a reduction does run on threads.
 constexpr std::int64_t ChunksPerTask = 8;
 
