@@ -6,7 +6,8 @@ import numpy as np
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkPolyData
-from vtkmodules.vtkFiltersCore import vtkFeatureEdges, vtkPolyDataConnectivityFilter
+from vtkmodules.vtkFiltersCore import (vtkCleanPolyData, vtkFeatureEdges, vtkMassProperties,
+                                      vtkPolyDataConnectivityFilter)
 
 
 def sphere_points(n, radius=0.5, center=(0.0, 0.0, 0.0)):
@@ -36,6 +37,46 @@ def boundary_edges(surface):
     edges.ManifoldEdgesOff()
     edges.Update()
     return edges.GetOutput().GetNumberOfCells()
+
+
+def merged_surface(surface):
+    """Merges the coincident points of surface pieces (exactly); returns
+    (triangles, open edges, area)."""
+    clean = vtkCleanPolyData()
+    clean.SetInputData(surface)
+    clean.SetTolerance(0.0)
+    clean.Update()
+    mass = vtkMassProperties()
+    mass.SetInputData(clean.GetOutput())
+    mass.Update()
+    return clean.GetOutput().GetNumberOfPolys(), boundary_edges(clean.GetOutput()), mass.GetSurfaceArea()
+
+
+def split_cloud_script(cloud):
+    """A ParaView ProgrammableSource script that gives piece p of n an uneven
+    share of the points of the .vtp file `cloud`, in shuffled order (so every
+    piece spreads over the whole shape): shares 3:0 for 2 pieces and 5:1:0:2
+    for 4 (one piece empty), equal shares otherwise."""
+    return """
+import numpy as np
+from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+from vtkmodules.vtkCommonCore import vtkPoints
+from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline as sddp
+from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+info = self.GetOutputInformation(0)
+piece, pieces = info.Get(sddp.UPDATE_PIECE_NUMBER()), info.Get(sddp.UPDATE_NUMBER_OF_PIECES())
+reader = vtkXMLPolyDataReader()
+reader.SetFileName(%r)
+reader.Update()
+xyz = vtk_to_numpy(reader.GetOutput().GetPoints().GetData()).astype(float)
+xyz = xyz[np.random.default_rng(7).permutation(len(xyz))]
+weights = np.array({2: [3.0, 0.0], 4: [5.0, 1.0, 0.0, 2.0]}.get(pieces, [1.0] * pieces))
+ends = np.round(np.cumsum(weights) / weights.sum() * len(xyz)).astype(int)
+begin = 0 if piece == 0 else ends[piece - 1]
+points = vtkPoints()
+points.SetData(numpy_to_vtk(np.ascontiguousarray(xyz[begin:ends[piece]]), deep=1))
+self.GetOutput().SetPoints(points)
+""" % cloud
 
 
 def regions(surface):

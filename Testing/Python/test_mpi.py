@@ -18,7 +18,6 @@ import tempfile
 
 import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkFiltersCore import vtkCleanPolyData, vtkMassProperties
 from vtkmodules.vtkIOXML import (vtkXMLImageDataReader, vtkXMLPImageDataReader, vtkXMLPPolyDataReader,
                                  vtkXMLPolyDataReader)
 
@@ -44,19 +43,7 @@ serial_phi = vtk_to_numpy(serial.GetVolumeOutput().GetPointData().GetArray("phi"
 serial_dims = serial.GetVolumeOutput().GetDimensions()
 
 
-def closed_area(surface):
-    """Merges the pieces' coincident points; returns (triangles, open edges, area)."""
-    clean = vtkCleanPolyData()
-    clean.SetInputData(surface)
-    clean.SetTolerance(0.0)
-    clean.Update()
-    mass = vtkMassProperties()
-    mass.SetInputData(clean.GetOutput())
-    mass.Update()
-    return clean.GetOutput().GetNumberOfPolys(), nvtesting.boundary_edges(clean.GetOutput()), mass.GetSurfaceArea()
-
-
-s_triangles, s_open, s_area = closed_area(serial.GetSurfaceOutput())
+s_triangles, s_open, s_area = nvtesting.merged_surface(serial.GetSurfaceOutput())
 print("serial: grid %s, %d band nodes, %d triangles, %d open edges, area %.6f"
       % (serial_dims, serial.GetNumberOfBandNodes(), s_triangles, s_open, s_area))
 t.check(s_open == 0 and s_triangles > 1000, "the serial surface is closed")
@@ -74,7 +61,7 @@ for ranks, output_volume in ((1, 1), (2, 1), (4, 1), (4, 0)):
     surface_reader.SetFileName(out + "/surface.pvtp")
     surface_reader.Update()
     pieces = surface_reader.GetNumberOfPieces()
-    triangles, open_edges, area = closed_area(surface_reader.GetOutput())
+    triangles, open_edges, area = nvtesting.merged_surface(surface_reader.GetOutput())
     print("%s: %d pieces, %d triangles, %d open edges, area %.6f" % (label, pieces, triangles, open_edges, area))
     t.check(pieces == ranks, "%s: one surface piece per rank" % label)
     t.check(open_edges == 0, "%s: the merged surface is closed (%d open edges)" % (label, open_edges))
