@@ -565,6 +565,7 @@ int vtkNarrowVolumeReconstruction::RequestData(
       surface->ShallowCopy(nv::ExtractSurfaceBySlabs(
         distance, band, solver.GetPhi(), parameters, &monitor, pieceBegin, pieceEnd));
       this->OutputTime = Seconds(start);
+      aborted = monitor.Aborted(); // the slabs stop early: a partial surface is no result
       return;
     }
     const vtkIdType nodes = static_cast<vtkIdType>(layerNodes) * (volumeEnd - volumeBegin);
@@ -651,6 +652,7 @@ int vtkNarrowVolumeReconstruction::RequestData(
     surface->Initialize();
     return 1;
   }
+  aborted = anywhere(aborted); // every process, whatever stage it stopped in
   if (aborted)
   {
     volume->Initialize();
