@@ -23,21 +23,15 @@ Halo::Halo(const NarrowBand& band, const Subdomain& part, const std::vector<Laye
     }
     return -1;
   };
-  // Band node ranges [begin, end) of one colour in brick layers [first, last).
-  auto nodes = [&](std::int64_t first, std::int64_t last, int colour, std::int64_t& begin, std::int64_t& end) {
-    std::int64_t b0, b1;
-    band.BricksInLayers(first, last, b0, b1);
-    const std::vector<std::int64_t>& start = colour == 0 ? band.RedStart : band.BlackStart;
-    begin = start[b0];
-    end = start[b1];
-  };
   auto makeLink = [&](int neighbour, std::int64_t ownLayer, std::int64_t ghostLayer) {
     Link link;
     link.Rank = neighbour;
     for (int colour = 0; colour < 2; ++colour)
     {
-      nodes(ownLayer, ownLayer + 1, colour, link.SendBegin[colour], link.SendEnd[colour]);
-      nodes(ghostLayer, ghostLayer + 1, colour, link.ReceiveBegin[colour], link.ReceiveEnd[colour]);
+      band.NodesInLayers(LayerRange{ ownLayer, ownLayer + 1 }, colour == 0, link.SendBegin[colour],
+        link.SendEnd[colour]);
+      band.NodesInLayers(LayerRange{ ghostLayer, ghostLayer + 1 }, colour == 0, link.ReceiveBegin[colour],
+        link.ReceiveEnd[colour]);
     }
     return link;
   };

@@ -61,31 +61,26 @@ void ForEachBandNode(const TruncatedDistance& distance, const Parameters& parame
 
 } // namespace
 
-std::int64_t NarrowBand::BricksPerLayer() const
+void NarrowBand::NodesInLayers(LayerRange layers, bool red, std::int64_t& begin, std::int64_t& end) const
 {
-  return ((this->GridNodes.Dims[0] + BrickSize - 1) >> BrickShift) *
+  const std::int64_t bricksPerLayer = ((this->GridNodes.Dims[0] + BrickSize - 1) >> BrickShift) *
     ((this->GridNodes.Dims[1] + BrickSize - 1) >> BrickShift);
-}
-
-void NarrowBand::BricksInLayers(
-  std::int64_t layerBegin, std::int64_t layerEnd, std::int64_t& first, std::int64_t& last) const
-{
-  const std::int64_t perLayer = this->BricksPerLayer();
-  first = std::lower_bound(this->Bricks.begin(), this->Bricks.end(), layerBegin * perLayer) - this->Bricks.begin();
-  last = std::lower_bound(this->Bricks.begin(), this->Bricks.end(), layerEnd * perLayer) - this->Bricks.begin();
+  std::int64_t first, last;
+  BricksInLayers(this->Bricks, bricksPerLayer, layers.Begin, layers.End, first, last);
+  const std::vector<std::int64_t>& start = red ? this->RedStart : this->BlackStart;
+  begin = start[first];
+  end = start[last];
 }
 
 void NarrowBand::OwnedNodes(bool red, std::int64_t& begin, std::int64_t& end) const
 {
-  const std::vector<std::int64_t>& start = red ? this->RedStart : this->BlackStart;
-  if (start.empty()) // a band without brick tables: all of it is owned
+  if (this->RedStart.empty()) // a band without brick tables: all of it is owned
   {
     begin = red ? 0 : this->RedCount;
     end = red ? this->RedCount : this->Size();
     return;
   }
-  begin = start[this->OwnedBricksBegin];
-  end = start[this->OwnedBricksEnd];
+  this->NodesInLayers(this->OwnedLayers, red, begin, end);
 }
 
 NarrowBand BuildNarrowBand(
@@ -299,7 +294,7 @@ NarrowBand BuildNarrowBand(
   band.Bricks = std::move(bricks);
   band.RedStart = std::move(redStart);
   band.BlackStart = std::move(blackStart);
-  band.BricksInLayers(part->Owned.Begin, part->Owned.End, band.OwnedBricksBegin, band.OwnedBricksEnd);
+  band.OwnedLayers = part->Owned;
   if (monitor)
   {
     monitor->Progress(1.0);

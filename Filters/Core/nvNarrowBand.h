@@ -41,11 +41,10 @@ struct NARROWVOLUMEFILTERS_EXPORT NarrowBand
   std::vector<std::int64_t> RedStart;
   std::vector<std::int64_t> BlackStart;
 
-  /// In a distributed run, the band covers this process's computed layers and
-  /// it updates only the nodes of its owned layers: the bricks
-  /// [OwnedBricksBegin, OwnedBricksEnd) of Bricks (all of them in a serial run).
-  std::int64_t OwnedBricksBegin = 0;
-  std::int64_t OwnedBricksEnd = 0;
+  /// In a distributed run, the band covers this process's computed brick
+  /// layers and it updates only the nodes of its owned ones (all of them in
+  /// a serial run).
+  LayerRange OwnedLayers;
 
   /// Set when the band would exceed Parameters::MaximumBandNodes: the band is
   /// then left empty, before its arrays are allocated.
@@ -55,10 +54,9 @@ struct NARROWVOLUMEFILTERS_EXPORT NarrowBand
   std::uint32_t InsideSlot() const { return static_cast<std::uint32_t>(this->Size()); }
   std::uint32_t OutsideSlot() const { return static_cast<std::uint32_t>(this->Size() + 1); }
 
-  /// Bricks per brick layer of the grid.
-  std::int64_t BricksPerLayer() const;
-  /// The index range [first, last) of Bricks in brick layers [layerBegin, layerEnd).
-  void BricksInLayers(std::int64_t layerBegin, std::int64_t layerEnd, std::int64_t& first, std::int64_t& last) const;
+  /// The red band nodes [begin, end) (red = true) or black ones in the brick
+  /// layers `layers`.
+  void NodesInLayers(LayerRange layers, bool red, std::int64_t& begin, std::int64_t& end) const;
   /// The owned red nodes [begin, end) (red = true) or black ones (all of
   /// them in a band without brick tables).
   void OwnedNodes(bool red, std::int64_t& begin, std::int64_t& end) const;

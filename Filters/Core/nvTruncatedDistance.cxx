@@ -105,6 +105,13 @@ std::vector<std::int64_t> TruncatedDistance::ReachedBricks() const
   return result;
 }
 
+void BricksInLayers(const std::vector<std::int64_t>& bricks, std::int64_t bricksPerLayer,
+  std::int64_t layerBegin, std::int64_t layerEnd, std::int64_t& first, std::int64_t& last)
+{
+  first = std::lower_bound(bricks.begin(), bricks.end(), layerBegin * bricksPerLayer) - bricks.begin();
+  last = std::lower_bound(bricks.begin(), bricks.end(), layerEnd * bricksPerLayer) - bricks.begin();
+}
+
 bool TruncatedDistance::BrickWithin(std::int64_t brick, double radius) const
 {
   // In cells, with a relative margin so that a node whose computed distance

@@ -71,6 +71,14 @@ private:
   std::vector<std::int64_t> BucketStart; ///< points of brick b: [BucketStart[b], BucketStart[b+1])
 };
 
+/**
+ * The index range [first, last) of `bricks` (ascending brick indices, hence
+ * ordered by brick layer) that lie in brick layers [layerBegin, layerEnd).
+ */
+NARROWVOLUMEFILTERS_EXPORT void BricksInLayers(const std::vector<std::int64_t>& bricks,
+  std::int64_t bricksPerLayer, std::int64_t layerBegin, std::int64_t layerEnd, std::int64_t& first,
+  std::int64_t& last);
+
 } // namespace nv
 
 #endif

@@ -12,15 +12,12 @@ namespace nv
 {
 namespace
 {
-/// The bricks of `bricks` (ascending brick index, so ordered by brick layer)
-/// whose layer of nodes overlaps [kBegin, kEnd): an index range into `bricks`.
-void BricksInLayers(const std::vector<std::int64_t>& bricks, std::int64_t bricksPerLayer,
+/// The bricks of `bricks` whose layer of nodes overlaps the node layers
+/// [kBegin, kEnd): an index range into `bricks`.
+void BricksInNodeLayers(const std::vector<std::int64_t>& bricks, std::int64_t bricksPerLayer,
   std::int64_t kBegin, std::int64_t kEnd, std::int64_t& first, std::int64_t& last)
 {
-  const std::int64_t layerBegin = kBegin >> BrickShift;
-  const std::int64_t layerEnd = ((kEnd - 1) >> BrickShift) + 1;
-  first = std::lower_bound(bricks.begin(), bricks.end(), layerBegin * bricksPerLayer) - bricks.begin();
-  last = std::lower_bound(bricks.begin(), bricks.end(), layerEnd * bricksPerLayer) - bricks.begin();
+  BricksInLayers(bricks, bricksPerLayer, kBegin >> BrickShift, ((kEnd - 1) >> BrickShift) + 1, first, last);
 }
 } // namespace
 
@@ -53,7 +50,7 @@ void FillVolume(const TruncatedDistance& distance, const NarrowBand& band, const
 
   // Nodes within reach: recompute their distance brick by brick.
   std::int64_t first, last;
-  BricksInLayers(reachedBricks, bricksPerLayer, kBegin, kEnd, first, last);
+  BricksInNodeLayers(reachedBricks, bricksPerLayer, kBegin, kEnd, first, last);
   const double offset = parameters.OffsetDistance;
   const double xi = parameters.Xi();
   ParallelFor(first, last, 16, [&](std::int64_t begin, std::int64_t end) {
@@ -91,7 +88,7 @@ void FillVolume(const TruncatedDistance& distance, const NarrowBand& band, const
   });
 
   // Band nodes: the evolved phi.
-  BricksInLayers(band.Bricks, bricksPerLayer, kBegin, kEnd, first, last);
+  BricksInNodeLayers(band.Bricks, bricksPerLayer, kBegin, kEnd, first, last);
   ParallelFor(first, last, 16, [&](std::int64_t begin, std::int64_t end) {
     for (std::int64_t b = begin; b < end; ++b)
     {
