@@ -31,27 +31,19 @@ CASES = {
 }
 
 RANK = r'''
-import json, math, resource, sys, time
+import json, resource, sys, time
 import numpy as np
-from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+from vtkmodules.util.numpy_support import numpy_to_vtk
 from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkPolyData
 from vtkmodules.vtkParallelCore import vtkMultiProcessController
+import clouds
 controller = vtkMultiProcessController.GetGlobalController()
 rank, size = controller.GetLocalProcessId(), controller.GetNumberOfProcesses()
 task = json.loads(sys.argv[1])
-if task["source"] == "sphere1024":
-    n = 500000
-    i = np.arange(n) + 0.5
-    polar = np.arccos(1 - 2 * i / n); azimuth = math.pi * (1 + 5 ** 0.5) * i
-    xyz = 0.5 + 0.45 * np.c_[np.cos(azimuth) * np.sin(polar), np.sin(azimuth) * np.sin(polar), np.cos(polar)]
-else:
-    from vtkmodules.vtkIOPLY import vtkPLYReader
-    reader = vtkPLYReader(); reader.SetFileName(task["path"]); reader.Update()
-    xyz = vtk_to_numpy(reader.GetOutput().GetPoints().GetData()).astype(float)
-lo, hi = xyz.min(axis=0), xyz.max(axis=0)
+xyz = clouds.load(task)
 m, lc = task["xi"], task["offset_cells"]
-h = float((hi - lo).max()) / (task["cells"] - 2 * (lc + m + 2))
+h = clouds.spacing(xyz, task)
 share = np.ascontiguousarray(xyz[rank::size])
 del xyz
 points = vtkPoints(); points.SetData(numpy_to_vtk(share, deep=1))
@@ -77,7 +69,7 @@ open("%s/rank%d.json" % (task["out"], rank), "w").write(json.dumps(dict(rank=ran
 
 def run(ranks, task):
     env = {k: v for k, v in os.environ.items() if not k.startswith(("OMPI_", "PMIX_", "OPAL_", "PMI_"))}
-    env["PYTHONPATH"] = os.path.join(BUILD, "lib", "python3.11", "dist-packages")
+    env["PYTHONPATH"] = os.pathsep.join([os.path.join(BUILD, "lib", "python3.11", "dist-packages"), HERE])
     task = dict(task, out=tempfile.mkdtemp())
     command = ["mpiexec", "--allow-run-as-root", "--oversubscribe", "-np", str(ranks), "pvbatch", "--symmetric",
                "-c", RANK, json.dumps(task)]

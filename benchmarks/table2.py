@@ -45,26 +45,17 @@ MEMORY_CASES = {
 CHILD = r'''
 import json, math, resource, sys, time
 import numpy as np
-from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+from vtkmodules.util.numpy_support import numpy_to_vtk
 from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkPolyData
+import clouds
 task = json.loads(sys.argv[1])
-if task["source"].startswith("sphere"):
-    n = 2964 if task["source"] == "sphere" else 500000
-    i = np.arange(n) + 0.5
-    polar = np.arccos(1 - 2 * i / n); azimuth = math.pi * (1 + 5 ** 0.5) * i
-    xyz = 0.5 + 0.45 * np.c_[np.cos(azimuth) * np.sin(polar), np.sin(azimuth) * np.sin(polar), np.cos(polar)]
-else:
-    from vtkmodules.vtkIOPLY import vtkPLYReader
-    reader = vtkPLYReader(); reader.SetFileName(task["path"]); reader.Update()
-    xyz = vtk_to_numpy(reader.GetOutput().GetPoints().GetData()).astype(float)
+xyz = clouds.load(task)
 points = vtkPoints(); points.SetData(numpy_to_vtk(np.ascontiguousarray(xyz), deep=1))
 cloud = vtkPolyData(); cloud.SetPoints(points)
 lo, hi = xyz.min(axis=0), xyz.max(axis=0)
-longest = float((hi - lo).max())
 m, lc = task["xi"], task["offset_cells"]
-# Cells along the longest side = D: longest + 2 (l + m h + 2 h) = D h, l = lc h.
-h = task.get("spacing") or longest / (task["cells"] - 2 * (lc + m + 2))
+h = task.get("spacing") or clouds.spacing(xyz, task)
 l = lc * h
 out = {"points": len(xyz), "h": h}
 if task["kind"] == "ours":
@@ -112,7 +103,8 @@ print("RESULT " + json.dumps(out))
 
 
 def run(task):
-    result = subprocess.run([PYTHON, "-c", CHILD, json.dumps(task)], capture_output=True, text=True)
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join(p for p in (HERE, os.environ.get("PYTHONPATH")) if p))
+    result = subprocess.run([PYTHON, "-c", CHILD, json.dumps(task)], capture_output=True, text=True, env=env)
     for line in result.stdout.splitlines():
         if line.startswith("RESULT "):
             return json.loads(line[7:])
