@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Generates Data/trefoil.vtp, the project's own demo point cloud.
 
 Points scattered at random (fixed seed) over a tube of radius 0.25 around a

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The core's Communicator (Core/nvCommunicator.h) on a vtkMultiProcessController,
 // and the redistribution of the points between processes, for the distributed
 // run of vtkNarrowVolumeReconstruction under MPI.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The phi = 0 surface, by vtkFlyingEdges3D, from the dense volume or slab by
 // slab without it.
 //

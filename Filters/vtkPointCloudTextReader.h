@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkPointCloudTextReader
  * @brief   Reads plain-text point clouds (.xyz, .pts, .txt) into vtkPolyData.

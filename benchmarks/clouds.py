@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+# SPDX-License-Identifier: BSD-3-Clause
 """The benchmarks' clouds and grids, shared by the child processes of
 table2.py and mpi_scaling.py (which put this folder on their PYTHONPATH)."""
 import math

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Benchmark: the filter under MPI with 1, 2 and 4 ranks (mpiexec pvbatch
 --symmetric), time and peak memory per rank.
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The OpenVDB route to a smoothed offset shell, for the benchmark: the union
 // of balls of radius l around the points (ParticlesToLevelSet; its boundary
 // is the paper's phi0 = 0), mean-curvature smoothing steps (LevelSetFilter),

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+# SPDX-License-Identifier: BSD-3-Clause
 """How the relative change and the sheets move with the number of steps, on
 the Table 1 sphere (radius 0.5, l = 0.1, default parameters): the measurement
 behind the default stopping rule. Prints a table and writes a plot.

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Benchmark: the paper's Table 2 rows that can run here, in Narrow Band and
 Whole Domain modes, beside the two routes a user would otherwise take on the
 same grid: VTK's dense offset pipeline (vtkUnsignedDistance +

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Renders doc/parameter_guide.png: what l, xi and eps do, on a sparse
 version of the demo cloud (every 6th point of Data/trefoil.vtp).
 

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Reconstruct a narrow volume (thick shell) around a point cloud and save it.
 
     pvpython examples/reconstruct.py [cloud] [--offset L] [--spacing H | --max-dim N] [--out DIR]
@@ -9,7 +11,13 @@ the project's demo cloud Data/trefoil.vtp. Writes, in DIR (default out/):
   NAME_shell.vtp    the phi = 0 surfaces with normals (output port 1; .pvtp under MPI)
   NAME_shell.stl    the same surfaces, watertight, for 3D printing
   NAME.png          a picture: the shell cut open, with the input points
+                  (skipped with a message when ParaView cannot render here:
+                  no X display for an X-only build; use scripts/with-xvfb.sh)
 The plugin is found through PV_PLUGIN_PATH or --plugin PATH.
+
+The VTK XML files are written in Binary mode, not in ParaView's default
+Appended mode: with Debian 12's current libexpat, VTK 9.2's XML readers
+(ParaView 5.11) read nothing from Appended files.
 """
 import argparse
 import os
@@ -37,6 +45,32 @@ def find_plugin(explicit):
         if os.path.exists(path):
             return path
     sys.exit("NarrowVolume.so not found: build the project, set PV_PLUGIN_PATH or pass --plugin")
+
+
+def can_render():
+    """Whether a render window can open here. A ParaView that renders through
+    X (Debian's) crashes in XSync without a display; EGL and OSMesa builds
+    render without one."""
+    from vtkmodules.vtkRenderingCore import vtkRenderWindow
+    import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (registers the window class)
+
+    if "XOpenGL" not in vtkRenderWindow().GetClassName():
+        return True
+    import ctypes
+    import ctypes.util
+
+    library = ctypes.util.find_library("X11")
+    if not library:
+        return False
+    x11 = ctypes.CDLL(library)
+    x11.XOpenDisplay.restype = ctypes.c_void_p
+    x11.XOpenDisplay.argtypes = [ctypes.c_char_p]
+    x11.XCloseDisplay.argtypes = [ctypes.c_void_p]
+    display = x11.XOpenDisplay(None)
+    if not display:
+        return False
+    x11.XCloseDisplay(display)
+    return True
 
 
 def fix_whole_extent(pvti, extent):
@@ -100,7 +134,7 @@ def main():
     # Under MPI, ParaView writes image data as a parallel .pvti (one piece a rank).
     ranks = servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
     volume_file = name + ("_phi.pvti" if ranks > 1 else "_phi.vti")
-    pvs.SaveData(os.path.join(args.out, volume_file), proxy=shell, PointDataArrays=["phi"])
+    pvs.SaveData(os.path.join(args.out, volume_file), proxy=shell, PointDataArrays=["phi"], DataMode="Binary")
     if ranks > 1:
         # The grid follows the points, so the filter knows its whole extent
         # only after it runs; ParaView's .pvti writer takes it before, from the
@@ -108,10 +142,15 @@ def main():
         fix_whole_extent(os.path.join(args.out, volume_file), volume_info.GetExtent())
     surface = pvs.OutputPort(shell, 1)
     surface_file = name + ("_shell.pvtp" if ranks > 1 else "_shell.vtp")
-    pvs.SaveData(os.path.join(args.out, surface_file), proxy=surface)
+    pvs.SaveData(os.path.join(args.out, surface_file), proxy=surface, DataMode="Binary")
     pvs.SaveData(os.path.join(args.out, name + "_shell.stl"), proxy=surface)
 
-    if not args.no_picture:
+    picture = not args.no_picture
+    if picture and not can_render():
+        print("no picture: ParaView cannot open a window here (no X display); run the script under "
+              "scripts/with-xvfb.sh, or pass --no-picture")
+        picture = False
+    if picture:
         view = pvs.CreateView("RenderView")
         pvs.SetActiveView(view)
         view.ViewSize = [1200, 900]
@@ -149,7 +188,7 @@ def main():
         pvs.Render(view)
         pvs.SaveScreenshot(os.path.join(args.out, name + ".png"), view, ImageResolution=[1200, 900])
     print("wrote %s/%s, %s, %s_shell.stl%s" %
-          (args.out, volume_file, surface_file, name, "" if args.no_picture else ", %s.png" % name))
+          (args.out, volume_file, surface_file, name, ", %s.png" % name if picture else ""))
 
 
 if __name__ == "__main__":

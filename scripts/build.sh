@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+# SPDX-License-Identifier: BSD-3-Clause
 # Configures and builds NarrowVolume (module, Python package, ParaView plugin)
 # in BUILD_DIR (default: build/ in the source tree).
 set -euo pipefail

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+# SPDX-License-Identifier: BSD-3-Clause
 # README command 1: install what is missing, build, and reconstruct the demo
 # point cloud (Data/trefoil.vtp) into out/: trefoil_phi.vti, trefoil_shell.vtp,
 # trefoil_shell.stl and trefoil.png. Extra arguments go to examples/reconstruct.py.

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+# SPDX-License-Identifier: BSD-3-Clause
 # Installs what NarrowVolume needs on Debian 12 (ParaView 5.11 and its headers,
 # the build tools, Xvfb for the GUI test, Open MPI). Idempotent: packages that
 # are already installed are skipped, so a second run costs a few seconds.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The operator-split Allen-Cahn scheme of section 3 on the band nodes:
 // implicit diffusion (10)-(11) by red-black Gauss-Seidel, then the closed-form
 // reaction step (12).

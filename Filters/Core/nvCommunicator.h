@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+// SPDX-License-Identifier: BSD-3-Clause
 // What the scheme needs from the other processes of a distributed run:
 // point-to-point messages for the ghost layers and global reductions for the
 // stopping tests. The core only sees this interface; the VTK glue implements

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The uniform grid of the method (section 3): nodes x_ijk = origin + (i, j, k) h.
 #ifndef nvGrid_h
 #define nvGrid_h

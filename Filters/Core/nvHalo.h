@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The exchange of ghost-layer values between neighbouring slabs (nvPartition.h).
 //
 // A red half sweep changes only red nodes, and red nodes read only black

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The discrete narrow band of section 3 and the paper's data structure box
 // (steps 1-3): the band nodes stored compactly, with their distance and the
 // indices of their six neighbours.

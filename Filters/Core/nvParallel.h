@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Parallel loops for the numerical core. The core states its loops as plain
 // functions of an index range; this file runs them with vtkSMPTools. Sums and
 // maxima are reduced over fixed-size chunks in a fixed order, so results are

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The parameters of the phase-field narrow volume method, in the paper's terms.
 // Paper: Li et al., "Fast and efficient narrow volume reconstruction from
 // scattered data", Pattern Recognition 48 (2015). Section numbers and equation

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The split of the grid between processes for a distributed (MPI) run.
 //
 // The grid is cut along z into slabs of whole brick layers (8 node layers,

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Which sheets of the phi = 0 surface to keep. The region phi < 0 splits into
 // the exterior (connected to the grid's boundary) and cavities (enclosed by
 // the shell). The outer sheet faces the exterior, the inner sheets face the

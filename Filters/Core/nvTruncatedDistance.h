@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The truncated unsigned distance of eq. (6), computed only where it matters.
 //
 // The paper loops over the points and, for each, over the box of nodes within

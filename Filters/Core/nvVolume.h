@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Writes the solution on the grid's nodes (dense arrays) for output and for
 // isosurfacing, for the whole grid or for a slab of z layers. Band nodes take
 // the evolved phi; every other node keeps its initial value phi0 of eq. (2),

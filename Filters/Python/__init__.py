@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+# SPDX-License-Identifier: BSD-3-Clause
 """NarrowVolume: narrow volume (thick shell) reconstruction from point clouds.
 
     from narrowvolume import vtkNarrowVolumeReconstruction

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The distributed scheme without MPI: the slabs of nvPartition, and ranks
 // simulated by threads that talk through an in-memory Communicator. Each
 // rank builds the band on its slab and runs the solver with the ghost-layer

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The time step of the scheme: one implicit diffusion step (10)-(11) against
 // the exact solution of its linear system, and the reaction step (12) against
 // its fixed points and a fine numerical integration of (9).

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Bad input gets a clear error, an empty output and no crash.
 #include "vtkNarrowVolumeReconstruction.h"
 

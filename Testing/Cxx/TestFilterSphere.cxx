@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The filter in a VTK C++ pipeline on a sampled sphere: phi stays in [-1, 1],
 // the surface is closed, and it has two sheets at radii R - l and R + l with
 // normals pointing out of the shell.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Small helpers shared by the C++ tests: checks that report what failed and
 // where, and sampled point clouds.
 #ifndef nvTestUtilities_h

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Runs inside the real ParaView client (paraview --script=gui_script.py):
 loads the plugin, opens a point cloud, applies the filter with the panel's
 defaults, shows both outputs beside the points, saves a screenshot, writes

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Run by test_mpi.py under `mpiexec -np N pvbatch`. Each rank's piece of the
 cloud is an uneven share of the points (in shuffled order, so every piece is
 spread over the whole shape), with one rank empty when there are several.
@@ -22,5 +24,5 @@ split.Script = nvtesting.split_cloud_script(cloud)
 shell = NarrowVolumeReconstruction(Input=split, OffsetDistance=0.08, MaximumDimension=90,  # noqa: F821
                                    OutputVolume=output_volume)
 shell.UpdatePipeline()
-pvs.SaveData(out + "/phi.pvti", proxy=pvs.OutputPort(shell, 0))
-pvs.SaveData(out + "/surface.pvtp", proxy=pvs.OutputPort(shell, 1))
+pvs.SaveData(out + "/phi.pvti", proxy=pvs.OutputPort(shell, 0), DataMode="Binary")
+pvs.SaveData(out + "/surface.pvtp", proxy=pvs.OutputPort(shell, 1), DataMode="Binary")

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Run by test_mpi.py under `mpiexec -np N pvbatch --symmetric`: the plain VTK
 filter (no ParaView proxies) on every rank, each rank holding a different
 share of the cloud, updated as piece `rank` of N with 2 ghost levels. Each

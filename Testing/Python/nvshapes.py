@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+# SPDX-License-Identifier: BSD-3-Clause
 """The accuracy test shapes of the paper's Table 1, sampled as point clouds,
 with the exact distance from any point to their inner offset surface.
 

@@ -1,5 +1,8 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Helpers shared by the Python tests: point clouds and surface checks."""
 import math
+import re
 import sys
 
 import numpy as np
@@ -89,6 +92,25 @@ def regions(surface):
 
 def points_of(dataset):
     return vtk_to_numpy(dataset.GetPoints().GetData())
+
+
+# Lines that say why a child process failed: VTK's and ParaView's errors, X
+# and MPI failures, Python exceptions, crashes.
+_EXPLAINING = re.compile(r"ERROR|Error|error:|ERR\||FAILED|Traceback|Exception|X connection|X server|XIO|"
+                         r"Segmentation|Aborted|abort|core dumped|Killed|signal|mpiexec|MPI_ABORT|"
+                         r"cannot|not found|No such")
+
+
+def explain(run, tail=8):
+    """A failed subprocess.run(..., capture_output=True, text=True) in a few
+    lines: its exit code, every line of its output that names an error (however
+    early it came), and the last lines of stderr."""
+    lines = [line for line in (run.stdout or "").splitlines() + (run.stderr or "").splitlines()
+             if _EXPLAINING.search(line)]
+    last = (run.stderr or run.stdout or "").splitlines()[-tail:]
+    picked = lines[:20] + (["..."] if len(lines) > 20 else [])
+    return "exit code %s\n    %s\n  last lines:\n    %s" % (
+        run.returncode, "\n    ".join(picked) or "(no line names an error)", "\n    ".join(last))
 
 
 class Checker:

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Run by test_mpi.py in pvpython, connected to `mpiexec -np N pvserver`: the
 plugin loaded on the server, the demo cloud split unevenly across the server's
 ranks (one rank empty), the filter applied as a GUI user would, and the surface fetched to the

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+# SPDX-License-Identifier: BSD-3-Clause
 """The real ParaView client under Xvfb: loads the plugin, opens the demo
 cloud, applies Narrow Volume Reconstruction with the panel's defaults and
 shows both outputs; the screenshot must show the shell.
@@ -24,7 +26,7 @@ env = dict(os.environ, NV_PLUGIN=plugin, NV_CLOUD=cloud, NV_SCREENSHOT=os.path.j
 script = os.path.join(os.path.dirname(os.path.abspath(__file__)), "gui_script.py")
 run = subprocess.run([with_xvfb, "paraview", "--script=" + script], env=env, capture_output=True, text=True,
                      timeout=300)
-t.check(os.path.exists(env["NV_GUI_RESULT"]), "the client ran the script (exit %d): %s" % (run.returncode, run.stderr[-2000:]))
+t.check(os.path.exists(env["NV_GUI_RESULT"]), "the client ran the script: %s" % nvtesting.explain(run))
 if os.path.exists(env["NV_GUI_RESULT"]):
     result = json.load(open(env["NV_GUI_RESULT"]))
     print(json.dumps(result, indent=1))

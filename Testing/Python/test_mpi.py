@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+# SPDX-License-Identifier: BSD-3-Clause
 """pvbatch under MPI gives the serial result. With 1, 2 and 4 ranks, the cloud
 split unevenly between them (one rank empty), the filter runs distributed
 (mpi_script.py) and ParaView's parallel writers save one piece per rank. Here
@@ -54,8 +56,8 @@ for ranks, output_volume in ((1, 1), (2, 1), (4, 1), (4, 0)):
                os.path.join(here, "mpi_script.py"), plugin, out, cloud, str(output_volume)]
     run = subprocess.run(command, capture_output=True, text=True, timeout=600, env=env)
     label = "%d ranks, OutputVolume %d" % (ranks, output_volume)
-    if not t.check(run.returncode == 0 and os.path.exists(out + "/surface.pvtp"), "%s ran (exit %d): %s %s" % (
-            label, run.returncode, run.stdout[-1000:], run.stderr[-2000:])):
+    if not t.check(run.returncode == 0 and os.path.exists(out + "/surface.pvtp"), "%s ran: %s" % (
+            label, nvtesting.explain(run))):
         continue
     surface_reader = vtkXMLPPolyDataReader()
     surface_reader.SetFileName(out + "/surface.pvtp")
@@ -106,7 +108,7 @@ command = ["mpiexec", "--allow-run-as-root", "--oversubscribe", "-np", "3", "env
 run = subprocess.run(command, capture_output=True, text=True, timeout=600, env=env)
 print(run.stdout)
 t.check(run.returncode == 0 and run.stdout.count("0 failed checks") == 3 and "FAILED" not in run.stdout,
-        "VTK filter with 3 ranks and 2 ghost levels: %s" % run.stderr[-2000:])
+        "VTK filter with 3 ranks and 2 ghost levels: %s" % nvtesting.explain(run))
 
 # pvserver on 2 ranks with a pvpython client, as the GUI would use it
 # (pvserver_client.py): the plugin loaded on the server, the surface fetched.
@@ -126,8 +128,8 @@ if t.check(ready, "pvserver started"):
     run = subprocess.run(["pvpython",
                           os.path.join(here, "pvserver_client.py"), plugin, cloud, str(port), result_file],
                          capture_output=True, text=True, timeout=300, env=env)
-    if t.check(run.returncode == 0 and os.path.exists(result_file), "pvserver client ran: %s %s"
-               % (run.stdout[-1000:], run.stderr[-2000:])):
+    if t.check(run.returncode == 0 and os.path.exists(result_file), "pvserver client ran: %s"
+               % nvtesting.explain(run)):
         result = json.load(open(result_file))
         print("pvserver, 2 ranks:", result)
         t.check(result["ranks"] == 2 and result["extent"] == [0, serial_dims[0] - 1, 0, serial_dims[1] - 1, 0,
@@ -150,8 +152,8 @@ for ranks in (1, 2):
                "--plugin", plugin, "--max-dim", "60", "--no-picture", "--out", out]
     run = subprocess.run(command, capture_output=True, text=True, timeout=600, env=env)
     name = os.path.splitext(os.path.basename(cloud))[0] + ("_phi.pvti" if ranks > 1 else "_phi.vti")
-    if t.check(run.returncode == 0 and os.path.exists(os.path.join(out, name)), "example script, %d ranks: %s %s"
-               % (ranks, run.stdout[-1000:], run.stderr[-2000:])):
+    if t.check(run.returncode == 0 and os.path.exists(os.path.join(out, name)), "example script, %d ranks: %s"
+               % (ranks, nvtesting.explain(run))):
         volume_reader = vtkXMLPImageDataReader() if ranks > 1 else vtkXMLImageDataReader()
         volume_reader.SetFileName(os.path.join(out, name))
         volume_reader.Update()

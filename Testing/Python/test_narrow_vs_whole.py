@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Narrow band against whole domain on the same case: the l2 difference of
 phi over the band, sqrt(sum_s (phi_s - phibar_s)^2 / L), as in the paper
 (which reports 2.955e-4 and 2.376e-4 on two dragon models).

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+# SPDX-License-Identifier: BSD-3-Clause
 """The paper's Fig. 6: a sphere of radius 0.5 sampled with 5 % and 10 % random
 noise, l = 0.1, xi = eps_4, eps = eps_12, h = 0.01. The average error of the
 offset surfaces, and the evolution leaving the surface smoother than the

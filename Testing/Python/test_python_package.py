@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+# SPDX-License-Identifier: BSD-3-Clause
 """The filter through the Python package narrowvolume, in a plain VTK pipeline."""
 import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy

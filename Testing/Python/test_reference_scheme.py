@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+# SPDX-License-Identifier: BSD-3-Clause
 """An independent check of the scheme: a slow, plain-loop reference written
 from the paper's equations (dense arrays, lexicographic Gauss-Seidel) against
 the filter's phi on a small grid after a fixed number of steps.

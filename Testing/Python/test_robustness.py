@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Degenerate but valid input gets the right shell, far-away clouds keep
 their precision, and many random small clouds and parameter sets keep the
 invariants: no NaN, phi in [-1, 1], a closed surface, the same phi on every run."""

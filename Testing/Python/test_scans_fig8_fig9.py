@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+# SPDX-License-Identifier: BSD-3-Clause
 """The paper's Fig. 8 (effect of xi) and Fig. 9 (effect of eps) on real scans
 from ../shared/data/scans. Skipped, with a message, when the folder is absent.
 

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+# SPDX-License-Identifier: BSD-3-Clause
 """The paper's Table 1: the inner (shrink) sheet of the cube, the sphere and
 the cylinder at l = 0.1, h = 0.01 and 0.005, default parameters, against
 the exact offset surface; each error no worse than the paper's.

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+# SPDX-License-Identifier: BSD-3-Clause
 """vtkPointCloudTextReader: plain .xyz / .pts point clouds, with the optional
 columns users' files carry, straight into the filter; malformed files give
 a clear error naming the line."""

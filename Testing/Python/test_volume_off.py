@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+# SPDX-License-Identifier: BSD-3-Clause
 """OutputVolume off: the same surface, without the dense volume, and a peak
 memory that follows the band rather than the box.
 
@@ -57,7 +59,7 @@ peaks = {}
 for volume in (True, False):
     result = subprocess.run(["pvpython", "-c", CHILD % (sys.path, volume)], capture_output=True, text=True)
     lines = [l for l in result.stdout.splitlines() if l.startswith("{")]
-    t.check(result.returncode == 0 and lines, "child ran: %s" % result.stderr[-1000:])
+    t.check(result.returncode == 0 and lines, "child ran: %s" % nvtesting.explain(result))
     if lines:
         peaks[volume] = json.loads(lines[-1])
 if len(peaks) == 2:
