@@ -2,23 +2,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkNarrowVolumeReconstruction.h"
 
-#include "nvAllenCahnSolver.h"
-#include "nvControllerCommunicator.h"
-#include "nvGrid.h"
-#include "nvHalo.h"
-#include "nvNarrowBand.h"
 #include "nvParallel.h"
-#include "nvParameters.h"
-#include "nvPartition.h"
+#include "nvReconstruction.h"
 #include "nvSheets.h"
-#include "nvSurface.h"
-#include "nvTruncatedDistance.h"
-#include "nvVolume.h"
+#include "vtkNarrowVolumeCommunicator.h"
+#include "vtkNarrowVolumeSurface.h"
 
-#include "vtkCommand.h"
-#include "vtkDataArray.h"
+#include "vtkAlgorithmOutput.h"
 #include "vtkDoubleArray.h"
-#include "vtkEventForwarderCommand.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkIdTypeArray.h"
@@ -39,24 +30,15 @@
 
 #include <vtksys/SystemInformation.hxx>
 
-#include <array>
 #include <atomic>
 #include <chrono>
-#include <cmath>
 #include <memory>
-#include <sstream>
-#include <string>
 #include <thread>
 
 vtkStandardNewMacro(vtkNarrowVolumeReconstruction);
 
 namespace
 {
-
-double Seconds(std::chrono::steady_clock::time_point start)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 /// Forwards the core's progress to the filter (main thread only) and polls
 /// the filter's abort flag there; worker threads see the cached answer.
@@ -68,16 +50,22 @@ public:
     , MainThread(std::this_thread::get_id())
   {
   }
-  void SetStage(double begin, double width)
+  void Stage(double begin, double width) override
   {
     this->Begin = begin;
     this->Width = width;
+    this->Progress(0.0);
   }
   void Progress(double fraction) override
   {
     if (std::this_thread::get_id() == this->MainThread)
     {
-      this->Filter->UpdateProgress(this->Begin + this->Width * fraction);
+      // Monotone: a stage's parts may report out of order.
+      const double progress = std::max(this->Filter->GetProgress(), this->Begin + this->Width * fraction);
+      if (progress > this->Filter->GetProgress() || fraction == 0.0)
+      {
+        this->Filter->UpdateProgress(progress);
+      }
       this->Stop = this->Stop || this->Filter->GetAbortExecute();
     }
   }
@@ -98,61 +86,31 @@ private:
   std::atomic<bool> Stop{ false };
 };
 
-/// The points as a flat xyz array of doubles, with their bounding box.
-/// Returns the index of the first non-finite point, or -1.
-vtkIdType GatherPoints(vtkPoints* points, std::vector<double>& xyz, double bounds[6])
+/// The points of a point set as xyz triples in double precision.
+std::vector<double> PointsOf(vtkPointSet* input)
 {
-  const vtkIdType n = points->GetNumberOfPoints();
-  xyz.resize(static_cast<std::size_t>(3 * n));
-  for (int a = 0; a < 3; ++a)
+  std::vector<double> xyz;
+  vtkPoints* points = input ? input->GetPoints() : nullptr;
+  if (points)
   {
-    bounds[2 * a] = VTK_DOUBLE_MAX;
-    bounds[2 * a + 1] = -VTK_DOUBLE_MAX;
-  }
-  for (vtkIdType p = 0; p < n; ++p)
-  {
-    double* x = &xyz[3 * p];
-    points->GetPoint(p, x);
-    for (int a = 0; a < 3; ++a)
+    xyz.resize(static_cast<std::size_t>(3 * points->GetNumberOfPoints()));
+    for (vtkIdType p = 0; p < points->GetNumberOfPoints(); ++p)
     {
-      if (!std::isfinite(x[a]))
-      {
-        return p;
-      }
-      bounds[2 * a] = std::min(bounds[2 * a], x[a]);
-      bounds[2 * a + 1] = std::max(bounds[2 * a + 1], x[a]);
+      points->GetPoint(p, &xyz[3 * p]);
     }
   }
-  return -1;
+  return xyz;
 }
 
-/// Marks the node layers of `volume` outside [pieceBegin, pieceEnd) (its
-/// ghost layers) as duplicate points, and the cells outside the piece's cell
-/// layers as duplicate cells, as ParaView expects of ghost levels.
-void MarkGhostLayers(vtkImageData* volume, std::int64_t pieceBegin, std::int64_t pieceEnd)
+/// A float array of `nodes` values named `name`, attached to the volume.
+template <class ArrayType>
+auto* AddArray(vtkImageData* volume, const char* name, vtkIdType nodes)
 {
-  int extent[6];
-  volume->GetExtent(extent);
-  const vtkIdType layerPoints = static_cast<vtkIdType>(extent[1] - extent[0] + 1) * (extent[3] - extent[2] + 1);
-  const vtkIdType layerCells = static_cast<vtkIdType>(std::max(extent[1] - extent[0], 1)) *
-    std::max(extent[3] - extent[2], 1);
-  vtkUnsignedCharArray* pointGhosts = volume->AllocatePointGhostArray();
-  vtkUnsignedCharArray* cellGhosts = volume->AllocateCellGhostArray();
-  for (int k = extent[4]; k <= extent[5]; ++k)
-  {
-    if (k < pieceBegin || k >= pieceEnd)
-    {
-      const vtkIdType first = layerPoints * (k - extent[4]);
-      std::fill(pointGhosts->GetPointer(first), pointGhosts->GetPointer(first) + layerPoints,
-        static_cast<unsigned char>(vtkDataSetAttributes::DUPLICATEPOINT));
-    }
-    if (k < extent[5] && (k < pieceBegin || k >= pieceEnd - 1))
-    {
-      const vtkIdType first = layerCells * (k - extent[4]);
-      std::fill(cellGhosts->GetPointer(first), cellGhosts->GetPointer(first) + layerCells,
-        static_cast<unsigned char>(vtkDataSetAttributes::DUPLICATECELL));
-    }
-  }
+  vtkNew<ArrayType> array;
+  array->SetName(name);
+  array->SetNumberOfTuples(nodes);
+  volume->GetPointData()->AddArray(array);
+  return array->GetPointer(0);
 }
 
 } // namespace
@@ -197,6 +155,10 @@ vtkPolyData* vtkNarrowVolumeReconstruction::GetSurfaceOutput()
 vtkTypeBool vtkNarrowVolumeReconstruction::ProcessRequest(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
+  if (request->Has(vtkDemandDrivenPipeline::REQUEST_INFORMATION()))
+  {
+    return this->RequestInformation(request, inputVector, outputVector);
+  }
   if (request->Has(vtkStreamingDemandDrivenPipeline::REQUEST_UPDATE_EXTENT()))
   {
     return this->RequestUpdateExtent(request, inputVector, outputVector);
@@ -214,9 +176,14 @@ void vtkNarrowVolumeReconstruction::SetController(vtkMultiProcessController* con
   vtkSetObjectBodyMacro(Controller, vtkMultiProcessController, controller);
 }
 
+bool vtkNarrowVolumeReconstruction::HasSeveralProcesses() const
+{
+  return this->Controller && this->Controller->GetNumberOfProcesses() > 1;
+}
+
 bool vtkNarrowVolumeReconstruction::IsDistributed(vtkInformationVector* outputVector) const
 {
-  if (!this->Controller || this->Controller->GetNumberOfProcesses() < 2)
+  if (!this->HasSeveralProcesses())
   {
     return false;
   }
@@ -232,6 +199,89 @@ bool vtkNarrowVolumeReconstruction::IsDistributed(vtkInformationVector* outputVe
     }
   }
   return false;
+}
+
+nv::Settings vtkNarrowVolumeReconstruction::GetSettings() const
+{
+  nv::Settings settings;
+  settings.OffsetDistance = this->OffsetDistance;
+  settings.SampleSpacing = this->SampleSpacing;
+  settings.MaximumDimension = this->MaximumDimension;
+  settings.XiCells = this->XiCells;
+  settings.EpsilonCells = this->EpsilonCells;
+  settings.TimeStep = this->TimeStep;
+  settings.MaximumNumberOfIterations = this->MaximumNumberOfIterations;
+  settings.ConvergenceTolerance = this->ConvergenceTolerance;
+  settings.GaussSeidelTolerance = this->GaussSeidelTolerance;
+  settings.Mode = this->Domain == WHOLE_DOMAIN ? nv::Domain::WholeDomain : nv::Domain::NarrowBand;
+  settings.EdgeFunction = this->EdgeStoppingFunction == EQUATION_3 ? nv::EdgeStopping::Eq3 : nv::EdgeStopping::Eq4;
+  double limitMiB = this->MemoryLimit;
+  if (limitMiB <= 0.0)
+  {
+    vtksys::SystemInformation info;
+    info.RunMemoryCheck();
+    limitMiB = 0.5 * static_cast<double>(info.GetTotalPhysicalMemory());
+  }
+  settings.MemoryLimitBytes = limitMiB * 1048576.0;
+  // phi, the optional arrays, and the isosurfacer's working memory.
+  settings.OutputBytesPerNode = this->OutputVolume ? 4.0 + (this->OutputInitialPhi ? 4.0 : 0.0) +
+      (this->OutputDistance ? 4.0 : 0.0) + (this->OutputNarrowBand ? 1.0 : 0.0) + 2.0
+                                                    : 0.0;
+  return settings;
+}
+
+//------------------------------------------------------------------------------
+int vtkNarrowVolumeReconstruction::RequestInformation(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  // The grid follows the points, so port 0 can declare its geometry only
+  // from the cloud's bounds: the input is brought up to date here (the piece
+  // this process will ask for, see RequestUpdateExtent), and under several
+  // processes their bounds are combined. The data pass then finds the input
+  // up to date and derives the same grid.
+  vtkInformation* volumeInfo = outputVector->GetInformationObject(0);
+  const bool several = this->HasSeveralProcesses();
+  double bounds[6] = { 1.0, 0.0, 1.0, 0.0, 1.0, 0.0 };
+  vtkAlgorithmOutput* connection = this->GetInputConnection(0, 0);
+  if (connection)
+  {
+    vtkNew<vtkInformationVector> requests;
+    requests->SetNumberOfInformationObjects(connection->GetProducer()->GetNumberOfOutputPorts());
+    vtkInformation* request = requests->GetInformationObject(connection->GetIndex());
+    request->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(),
+      several ? this->Controller->GetLocalProcessId() : 0);
+    request->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(),
+      several ? this->Controller->GetNumberOfProcesses() : 1);
+    request->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+    connection->GetProducer()->Update(connection->GetIndex(), requests);
+    vtkPointSet* input = vtkPointSet::GetData(inputVector[0], 0);
+    if (input && input->GetNumberOfPoints() > 0)
+    {
+      input->GetBounds(bounds);
+    }
+  }
+  if (several)
+  {
+    vtkNarrowVolumeCommunicator communicator(this->Controller);
+    nv::GlobalBounds(communicator, bounds);
+  }
+  const nv::Plan plan = nv::MakePlan(this->GetSettings(), bounds);
+  if (!plan.Valid())
+  {
+    // No grid: RequestData says why.
+    const int empty[6] = { 0, -1, 0, -1, 0, -1 };
+    volumeInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), empty, 6);
+    return 1;
+  }
+  const nv::Grid& grid = plan.TheGrid;
+  const int wholeExtent[6] = { 0, static_cast<int>(grid.Dims[0] - 1), 0, static_cast<int>(grid.Dims[1] - 1), 0,
+    static_cast<int>(grid.Dims[2] - 1) };
+  volumeInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), wholeExtent, 6);
+  volumeInfo->Set(vtkDataObject::ORIGIN(), grid.Origin.data(), 3);
+  const double spacing[3] = { grid.Spacing, grid.Spacing, grid.Spacing };
+  volumeInfo->Set(vtkDataObject::SPACING(), spacing, 3);
+  vtkDataObject::SetPointDataActiveScalarInfo(volumeInfo, VTK_FLOAT, 1);
+  return 1;
 }
 
 //------------------------------------------------------------------------------
@@ -256,8 +306,6 @@ int vtkNarrowVolumeReconstruction::RequestUpdateExtent(
 int vtkNarrowVolumeReconstruction::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPointSet* input = vtkPointSet::GetData(inputVector[0], 0);
-  vtkInformation* volumeInfo = outputVector->GetInformationObject(0);
   vtkImageData* volume = vtkImageData::GetData(outputVector, 0);
   vtkPolyData* surface = vtkPolyData::GetData(outputVector, 1);
   volume->Initialize();
@@ -271,416 +319,172 @@ int vtkNarrowVolumeReconstruction::RequestData(
   // then the requests for pieces other than 0 leave their outputs empty, so
   // that gathered pieces hold the serial result once.
   const bool distributed = this->IsDistributed(outputVector);
-  vtkInformation* surfaceInfo = outputVector->GetInformationObject(1);
-  if (!distributed && surfaceInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) > 0)
+  if (!distributed &&
+    outputVector->GetInformationObject(1)->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) > 0)
   {
     return 1;
   }
-  std::unique_ptr<nv::ControllerCommunicator> communicator;
+  std::unique_ptr<vtkNarrowVolumeCommunicator> communicator;
   if (distributed)
   {
-    communicator.reset(new nv::ControllerCommunicator(this->Controller));
-  }
-  // In a distributed run every error must be every process's: a flag raised
-  // on one process is seen by all (a maximum over them).
-  auto anywhere = [&](bool flag) { return communicator ? communicator->MaxAll(flag ? 1.0 : 0.0) > 0.0 : flag; };
-
-  // --- Validate the input and the parameters before allocating anything large.
-  std::vector<double> points;
-  double bounds[6] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX,
-    -VTK_DOUBLE_MAX };
-  vtkIdType bad = -1;
-  if (input && input->GetPoints())
-  {
-    bad = GatherPoints(input->GetPoints(), points, bounds);
-  }
-  double totals[2] = { static_cast<double>(points.size() / 3), bad >= 0 ? 1.0 : 0.0 };
-  if (communicator)
-  {
-    communicator->SumAll(totals, 2);
-    // The global box: maxima of (-xmin, xmax, -ymin, ...).
-    double box[6];
-    for (int a = 0; a < 6; ++a)
-    {
-      box[a] = a % 2 ? bounds[a] : -bounds[a];
-    }
-    communicator->MaxAll(box, 6);
-    for (int a = 0; a < 6; ++a)
-    {
-      bounds[a] = a % 2 ? box[a] : -box[a];
-    }
-  }
-  if (totals[0] < 1.0)
-  {
-    vtkErrorMacro("The input has no points: nothing to reconstruct.");
-    return 1;
-  }
-  if (totals[1] > 0.0)
-  {
-    if (bad >= 0)
-    {
-      vtkErrorMacro("Input point " << bad << " has a non-finite coordinate (NaN or infinity); "
-                                   << "remove such points before reconstructing.");
-    }
-    else
-    {
-      vtkErrorMacro("A point of another process's piece has a non-finite coordinate (NaN or "
-                    "infinity); remove such points before reconstructing.");
-    }
-    return 1;
-  }
-  if (!std::isfinite(this->OffsetDistance) || this->OffsetDistance <= 0.0)
-  {
-    vtkErrorMacro("OffsetDistance must be a finite value > 0, not "
-      << this->OffsetDistance
-      << ". (In ParaView its default follows the input's size: in a script, update the input "
-         "before creating the filter, or set OffsetDistance.)");
-    return 1;
-  }
-  if (!std::isfinite(this->SampleSpacing))
-  {
-    vtkErrorMacro("SampleSpacing must be finite, not " << this->SampleSpacing << ".");
-    return 1;
-  }
-  if (!std::isfinite(this->TimeStep))
-  {
-    vtkErrorMacro("TimeStep must be finite, not " << this->TimeStep << ".");
-    return 1;
-  }
-  if (!(this->XiCells >= 1.0 && this->XiCells <= 64.0))
-  {
-    vtkErrorMacro("XiCells must be in [1, 64], not " << this->XiCells << ".");
-    return 1;
-  }
-  if (!(this->EpsilonCells >= 0.5 && this->EpsilonCells <= 256.0))
-  {
-    vtkErrorMacro("EpsilonCells must be in [0.5, 256], not " << this->EpsilonCells << ".");
-    return 1;
+    communicator.reset(new vtkNarrowVolumeCommunicator(this->Controller));
   }
 
-  nv::Parameters parameters;
-  parameters.OffsetDistance = this->OffsetDistance;
-  parameters.XiCells = this->XiCells;
-  parameters.EpsilonCells = this->EpsilonCells;
-  parameters.TimeStep = this->TimeStep;
-  parameters.MaximumNumberOfIterations = this->MaximumNumberOfIterations;
-  parameters.ConvergenceTolerance = this->ConvergenceTolerance;
-  parameters.GaussSeidelTolerance = this->GaussSeidelTolerance;
-  parameters.Mode = this->Domain == WHOLE_DOMAIN ? nv::Domain::WholeDomain : nv::Domain::NarrowBand;
-  parameters.EdgeFunction =
-    this->EdgeStoppingFunction == EQUATION_3 ? nv::EdgeStopping::Eq3 : nv::EdgeStopping::Eq4;
-  parameters.Spacing = this->SampleSpacing > 0.0
-    ? this->SampleSpacing
-    : nv::SpacingForMaximumDimension(bounds, this->OffsetDistance, this->XiCells, this->MaximumDimension);
-  if (!(parameters.Spacing > 0.0) || !std::isfinite(parameters.Spacing))
-  {
-    vtkErrorMacro("Cannot derive a grid spacing from MaximumDimension " << this->MaximumDimension
-                                                                       << "; set SampleSpacing.");
-    return 1;
-  }
-
-  // The grid's size, in floating point so that no integer can overflow.
-  const double padding = nv::GridPadding(parameters.Reach(), parameters.Spacing);
-  double cells[3];
-  for (int a = 0; a < 3; ++a)
-  {
-    cells[a] = (bounds[2 * a + 1] - bounds[2 * a] + 2.0 * padding) / parameters.Spacing + 2.0;
-  }
-  const double gridNodes = cells[0] * cells[1] * cells[2];
-  if (gridNodes > static_cast<double>(VTK_ID_MAX) || cells[2] > static_cast<double>(VTK_INT_MAX))
-  {
-    vtkErrorMacro("The grid is too large: about " << gridNodes << " nodes (spacing " << parameters.Spacing
-                                                  << "). Increase SampleSpacing or lower MaximumDimension.");
-    return 1;
-  }
-  const nv::Grid grid = nv::MakeGrid(bounds, parameters.Spacing, padding);
-  this->NumberOfGridNodes = static_cast<vtkIdType>(grid.NumberOfNodes());
-
-  // This process's part of the grid: all of it, or a slab of brick layers
-  // balanced by the number of points per layer (nvPartition.h).
-  const std::int64_t layers = (grid.Dims[2] + nv::BrickSize - 1) >> nv::BrickShift;
-  nv::Subdomain part = nv::Subdomain::Whole(layers);
-  std::vector<nv::LayerRange> owners(1, part.Owned);
-  if (communicator)
-  {
-    std::vector<double> weights(static_cast<std::size_t>(layers), 0.0);
-    for (std::size_t p = 0; p < points.size(); p += 3)
-    {
-      const std::int64_t k = static_cast<std::int64_t>((points[p + 2] - grid.Origin[2]) / grid.Spacing);
-      weights[static_cast<std::size_t>(std::min(layers - 1, std::max<std::int64_t>(0, k >> nv::BrickShift)))] += 1.0;
-    }
-    communicator->SumAll(weights.data(), static_cast<int>(layers));
-    owners = nv::SplitLayers(weights, communicator->Size());
-    part = nv::Subdomain::Around(owners[communicator->Rank()], layers);
-  }
-  // The node layers this process computes, and those of its output piece
-  // (its owned layers and the first layer of the next piece, which both share).
-  const std::int64_t computedBegin = part.Computed.Begin * nv::BrickSize;
-  const std::int64_t computedEnd = std::min(part.Computed.End * nv::BrickSize, grid.Dims[2]);
-  const std::int64_t pieceBegin = part.Owned.Begin * nv::BrickSize;
-  const std::int64_t pieceEnd = std::min(part.Owned.End * nv::BrickSize + 1, grid.Dims[2]);
-  const bool emptyPiece = part.Owned.Empty();
-
-  // Memory, checked in two stages. Here, before any allocation that grows with
-  // the grid: the dense output (phi, the optional arrays, the isosurfacer's
-  // working memory), the per-brick tables (24 bytes a brick of 512 nodes), the
-  // points, and in Whole Domain mode the band arrays on every computed node.
-  // The narrow band's own size is known only once its distances are
-  // computed: BuildNarrowBand refuses it then, before allocating its arrays,
-  // if it would not fit in what is left.
-  const double layerNodes = static_cast<double>(grid.Dims[0] * grid.Dims[1]);
-  const double computedNodes = layerNodes * static_cast<double>(computedEnd - computedBegin);
-  const double pieceNodes = layerNodes * static_cast<double>(pieceEnd - pieceBegin);
-  const double pointsCount = static_cast<double>(points.size() / 3);
-  const bool whole = parameters.Mode == nv::Domain::WholeDomain;
-  constexpr double BytesPerBandNode = 72.0 + 16.0; // arrays and solver vectors, plus the transient lists
-  const double perNode = this->OutputVolume ? 4.0 + (this->OutputInitialPhi ? 4.0 : 0.0) +
-      (this->OutputDistance ? 4.0 : 0.0) + (this->OutputNarrowBand ? 1.0 : 0.0) + 2.0
-                                           : 0.0;
-  const double bytesEstimate = pieceNodes * perNode + gridNodes * 24.0 / 512.0 +
-    (whole ? computedNodes * BytesPerBandNode : 0.0) + pointsCount * 48.0;
-  double limitMiB = this->MemoryLimit;
-  if (limitMiB <= 0.0)
-  {
-    vtksys::SystemInformation info;
-    info.RunMemoryCheck();
-    limitMiB = 0.5 * static_cast<double>(info.GetTotalPhysicalMemory());
-  }
-  const double limitBytes = limitMiB * 1048576.0;
-  if (anywhere(bytesEstimate > limitBytes || (whole && computedNodes > static_cast<double>(nv::MaximumBandSize))))
-  {
-    vtkErrorMacro("The grid is too large: about " << gridNodes << " nodes (spacing " << parameters.Spacing
-                                                  << ") need about " << bytesEstimate / 1048576.0
-                                                  << " MiB" << (communicator ? " on some process" : "")
-                                                  << ", over the limit of " << limitMiB
-                                                  << " MiB. Increase SampleSpacing, lower "
-                                                  << "MaximumDimension, raise MemoryLimit"
-                                                  << (this->OutputVolume ? " or turn OutputVolume off." : "."));
-    return 1;
-  }
-  if (!whole)
-  {
-    parameters.MaximumBandNodes = static_cast<std::int64_t>((limitBytes - bytesEstimate) / BytesPerBandNode);
-  }
-
-  // A distributed run moves the points within reach of each slab (with one
-  // spare cell) to its process.
-  if (communicator)
-  {
-    std::vector<std::array<double, 2>> zRanges(owners.size());
-    for (std::size_t q = 0; q < owners.size(); ++q)
-    {
-      const nv::Subdomain other = nv::Subdomain::Around(owners[q], layers);
-      const double margin = parameters.Reach() + grid.Spacing;
-      zRanges[q] = { grid.Origin[2] + other.Computed.Begin * nv::BrickSize * grid.Spacing - margin,
-        grid.Origin[2] + (std::min(other.Computed.End * nv::BrickSize, grid.Dims[2]) - 1) * grid.Spacing + margin };
-      if (other.Computed.Empty())
-      {
-        zRanges[q] = { 1.0, 0.0 }; // nothing
-      }
-    }
-    points = nv::ExchangePoints(this->Controller, points, zRanges);
-  }
-
-  // --- Run, with all cores when the process-wide backend is Sequential.
+  // Run, with all cores when the process-wide backend is Sequential.
   std::string backend = vtkSMPTools::GetBackend() ? vtkSMPTools::GetBackend() : "Sequential";
   if (backend == "Sequential")
   {
     backend = "STDThread";
   }
-  bool aborted = false;
-  bool disagree = false;
-  double refusedBand = 0;
+  bool ok = false;
   vtkSMPTools::LocalScope(vtkSMPTools::Config{ this->NumberOfThreads, backend, false }, [&]() {
     FilterMonitor monitor(this);
-    auto start = std::chrono::steady_clock::now();
-
-    // Distance (eq. 6, 7) and band (steps 1-3).
-    monitor.SetStage(0.0, 0.2);
-    nv::TruncatedDistance distance(grid, points.data(), static_cast<std::int64_t>(points.size() / 3),
-      parameters.Reach());
-    std::vector<double>().swap(points);
-    const nv::NarrowBand band = nv::BuildNarrowBand(distance, parameters, &monitor, &part);
-    this->SetupTime = Seconds(start);
-    double failed[2] = { static_cast<double>(band.RefusedSize), monitor.Aborted() ? 1.0 : 0.0 };
-    if (communicator)
+    nv::Reconstruction run(this->GetSettings(), communicator.get(), &monitor);
+    if (!run.Run(PointsOf(vtkPointSet::GetData(inputVector[0], 0))))
     {
-      communicator->MaxAll(failed, 2);
-    }
-    refusedBand = failed[0];
-    aborted = failed[1] > 0.0;
-    if (refusedBand > 0 || aborted)
-    {
-      return;
-    }
-    std::int64_t redBegin, redEnd, blackBegin, blackEnd;
-    band.OwnedNodes(true, redBegin, redEnd);
-    band.OwnedNodes(false, blackBegin, blackEnd);
-    double bandNodes = static_cast<double>(redEnd - redBegin + blackEnd - blackBegin);
-    if (communicator)
-    {
-      communicator->SumAll(&bandNodes, 1);
-    }
-    this->NumberOfBandNodes = static_cast<vtkIdType>(bandNodes);
-
-    // Evolution: (10)-(12) per time step.
-    start = std::chrono::steady_clock::now();
-    monitor.SetStage(0.2, 0.7);
-    std::unique_ptr<nv::Halo> halo;
-    if (communicator)
-    {
-      halo.reset(new nv::Halo(band, part, owners, *communicator));
-      if (!halo->Agree())
+      if (!run.Error().empty())
       {
-        disagree = true;
-        return;
+        vtkErrorMacro(<< run.Error());
       }
-    }
-    nv::AllenCahnSolver solver(band, parameters, halo.get());
-    for (const nv::StepReport& step : solver.Run(&monitor))
-    {
-      this->RelativeChanges.push_back(step.RelativeChange);
-    }
-    this->EvolutionTime = Seconds(start);
-    aborted = anywhere(monitor.Aborted());
-    if (aborted || emptyPiece)
-    {
       return;
     }
+    this->NumberOfGridNodes = static_cast<vtkIdType>(run.GetGrid().NumberOfNodes());
+    this->NumberOfBandNodes = static_cast<vtkIdType>(run.NumberOfBandNodes());
+    this->RelativeChanges = run.RelativeChanges();
+    this->SetupTime = run.SetupSeconds();
+    this->EvolutionTime = run.EvolutionSeconds();
+    const auto start = std::chrono::steady_clock::now();
+    bool explained = false;
+    ok = this->ProduceOutputs(
+      run, monitor, outputVector->GetInformationObject(0), volume, surface, distributed, explained);
+    this->OutputTime = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    ok = !run.Anywhere(!ok); // every process, whatever stage it stopped in
+    const double surfacePoints = run.SumAll(static_cast<double>(surface->GetNumberOfPoints()));
+    if (ok && surfacePoints == 0 && !explained && (!communicator || communicator->Rank() == 0))
+    {
+      vtkWarningMacro("The surface is empty: the shell did not survive the evolution. The offset distance ("
+        << this->OffsetDistance << ") is probably small against the gaps between points or the grid spacing ("
+        << run.GetGrid().Spacing << "): increase OffsetDistance or XiCells, or refine the grid.");
+    }
+  });
+  if (!ok)
+  {
+    volume->Initialize();
+    surface->Initialize();
+    return 1;
+  }
+  this->AddRunSummary(volume);
+  this->UpdateProgress(1.0);
+  return 1;
+}
 
-    // Output 0: the volume, this process's piece of it (its geometry always,
-    // its arrays on request), with ghost layers if the pipeline asks.
-    start = std::chrono::steady_clock::now();
-    const std::int64_t ghosts = communicator && this->OutputVolume
-      ? volumeInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS())
-      : 0;
-    const std::int64_t volumeBegin = std::max(computedBegin, pieceBegin - ghosts);
-    const std::int64_t volumeEnd = std::min(computedEnd, pieceEnd + ghosts);
-    volume->SetOrigin(grid.Origin[0], grid.Origin[1], grid.Origin[2]);
-    volume->SetSpacing(grid.Spacing, grid.Spacing, grid.Spacing);
-    volume->SetExtent(0, static_cast<int>(grid.Dims[0] - 1), 0, static_cast<int>(grid.Dims[1] - 1),
-      static_cast<int>(volumeBegin), static_cast<int>(volumeEnd - 1));
-    monitor.SetStage(0.9, 0.1);
-    if (!this->OutputVolume && (this->Sheets == BOTH_SHEETS || communicator))
+//------------------------------------------------------------------------------
+bool vtkNarrowVolumeReconstruction::ProduceOutputs(nv::Reconstruction& run, nv::Monitor& monitor,
+  vtkInformation* volumeInfo, vtkImageData* volume, vtkPolyData* surface, bool distributed, bool& explained)
+{
+  const nv::Grid& grid = run.GetGrid();
+  if (run.EmptyPiece())
+  {
+    return true;
+  }
+  // Output 0: the volume, this process's piece of it (its geometry always,
+  // its arrays on request), with ghost layers if the pipeline asks.
+  const std::int64_t ghosts = distributed && this->OutputVolume
+    ? volumeInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS())
+    : 0;
+  const std::int64_t volumeBegin = std::max(run.ComputedBegin(), run.PieceBegin() - ghosts);
+  const std::int64_t volumeEnd = std::min(run.ComputedEnd(), run.PieceEnd() + ghosts);
+  volume->SetOrigin(grid.Origin[0], grid.Origin[1], grid.Origin[2]);
+  volume->SetSpacing(grid.Spacing, grid.Spacing, grid.Spacing);
+  volume->SetExtent(0, static_cast<int>(grid.Dims[0] - 1), 0, static_cast<int>(grid.Dims[1] - 1),
+    static_cast<int>(volumeBegin), static_cast<int>(volumeEnd - 1));
+  if (!this->OutputVolume && (this->Sheets == BOTH_SHEETS || distributed))
+  {
+    // Output 1 without a dense volume: slab by slab.
+    monitor.Stage(0.6, 0.4);
+    surface->ShallowCopy(nv::ExtractSurfaceBySlabs(run.GetDistance(), run.GetBand(), run.GetPhi(),
+      run.GetParameters(), &monitor, run.PieceBegin(), run.PieceEnd()));
+    return !monitor.Aborted(); // the slabs stop early: a partial surface is no result
+  }
+  const vtkIdType layerNodes = static_cast<vtkIdType>(grid.Dims[0] * grid.Dims[1]);
+  const vtkIdType nodes = layerNodes * (volumeEnd - volumeBegin);
+  vtkNew<vtkFloatArray> phi;
+  phi->SetName("phi");
+  phi->SetNumberOfTuples(nodes);
+  nv::VolumeArrays arrays;
+  arrays.Phi = phi->GetPointer(0);
+  if (this->OutputVolume)
+  {
+    volume->GetPointData()->SetScalars(phi);
+    if (this->OutputInitialPhi)
     {
-      // Output 1 without a dense volume: slab by slab.
-      surface->ShallowCopy(nv::ExtractSurfaceBySlabs(
-        distance, band, solver.GetPhi(), parameters, &monitor, pieceBegin, pieceEnd));
-      this->OutputTime = Seconds(start);
-      aborted = monitor.Aborted(); // the slabs stop early: a partial surface is no result
-      return;
+      arrays.InitialPhi = AddArray<vtkFloatArray>(volume, "InitialPhi", nodes);
     }
-    const vtkIdType nodes = static_cast<vtkIdType>(layerNodes) * (volumeEnd - volumeBegin);
-    nv::VolumeArrays arrays;
-    vtkNew<vtkFloatArray> phi;
-    phi->SetName("phi");
-    phi->SetNumberOfTuples(nodes);
-    arrays.Phi = phi->GetPointer(0);
-    if (this->OutputVolume)
+    if (this->OutputDistance)
     {
-      volume->GetPointData()->SetScalars(phi);
+      arrays.Distance = AddArray<vtkFloatArray>(volume, "Distance", nodes);
+    }
+    if (this->OutputNarrowBand)
+    {
+      arrays.Band = AddArray<vtkUnsignedCharArray>(volume, "NarrowBand", nodes);
+    }
+  }
+  else
+  {
+    vtkWarningMacro("Keeping one sheet needs the dense grid: memory follows the box although "
+                    "OutputVolume is off.");
+  }
+  monitor.Stage(0.6, 0.2);
+  run.FillVolume(arrays, volumeBegin, volumeEnd);
+  if (monitor.Aborted())
+  {
+    return false;
+  }
+  if (volumeBegin < run.PieceBegin() || volumeEnd > run.PieceEnd())
+  {
+    // The piece without its ghost layers; the last node layer is shared with
+    // the next piece, which owns the cells above it.
+    int piece[6] = { 0, static_cast<int>(grid.Dims[0] - 1), 0, static_cast<int>(grid.Dims[1] - 1),
+      static_cast<int>(run.PieceBegin()), static_cast<int>(run.PieceEnd() - 1) };
+    volume->GenerateGhostArray(piece);
+  }
+
+  // Output 1: the phi = 0 surfaces of the piece (without its ghost layers),
+  // all or some of them. Choosing sheets works on a copy: phi stays phi.
+  monitor.Stage(0.8, 0.2);
+  vtkNew<vtkFloatArray> contoured;
+  contoured->SetArray(arrays.Phi + layerNodes * (run.PieceBegin() - volumeBegin),
+    layerNodes * (run.PieceEnd() - run.PieceBegin()), 1); // borrowed
+  if (this->Sheets != BOTH_SHEETS)
+  {
+    if (distributed)
+    {
+      vtkWarningMacro("Keeping one sheet needs the whole grid on one process: both sheets are "
+                      "output in a distributed run.");
     }
     else
     {
-      vtkWarningMacro("Keeping one sheet needs the dense grid: memory follows the box although "
-                      "OutputVolume is off.");
-    }
-    // The optional arrays: named, sized and attached to the volume.
-    auto addArray = [&](auto* array, const char* name) {
-      array->SetName(name);
-      array->SetNumberOfTuples(nodes);
-      volume->GetPointData()->AddArray(array);
-      array->Delete(); // the point data holds it now
-      return array->GetPointer(0);
-    };
-    if (this->OutputVolume && this->OutputInitialPhi)
-    {
-      arrays.InitialPhi = addArray(vtkFloatArray::New(), "InitialPhi");
-    }
-    if (this->OutputVolume && this->OutputDistance)
-    {
-      arrays.Distance = addArray(vtkFloatArray::New(), "Distance");
-    }
-    if (this->OutputVolume && this->OutputNarrowBand)
-    {
-      arrays.Band = addArray(vtkUnsignedCharArray::New(), "NarrowBand");
-    }
-    nv::FillVolume(
-      distance, band, solver.GetPhi(), parameters, distance.ReachedBricks(), arrays, volumeBegin, volumeEnd);
-    if (volumeBegin < pieceBegin || volumeEnd > pieceEnd)
-    {
-      MarkGhostLayers(volume, pieceBegin, pieceEnd);
-    }
-    this->UpdateProgress(0.92);
-
-    // Output 1: the phi = 0 surfaces of the piece (without its ghost layers),
-    // all or some of them.
-    vtkNew<vtkFloatArray> contoured;
-    contoured->SetArray(arrays.Phi + static_cast<vtkIdType>(layerNodes) * (pieceBegin - volumeBegin),
-      static_cast<vtkIdType>(layerNodes) * (pieceEnd - pieceBegin), 1); // borrowed
-    if (this->Sheets != BOTH_SHEETS)
-    {
-      if (communicator)
+      vtkNew<vtkFloatArray> copy;
+      copy->DeepCopy(phi);
+      contoured->ShallowCopy(copy);
+      const std::int64_t cavities = nv::KeepSheets(
+        grid, contoured->GetPointer(0), this->Sheets == OUTER_SHEET ? nv::Sheets::Outer : nv::Sheets::Inner);
+      explained = this->Sheets == INNER_SHEETS && cavities == 0;
+      if (explained)
       {
-        vtkWarningMacro("Keeping one sheet needs the whole grid on one process: both sheets are "
-                        "output in a distributed run.");
-      }
-      else
-      {
-        contoured->DeepCopy(phi);
-        nv::KeepSheets(grid, contoured->GetPointer(0),
-          this->Sheets == OUTER_SHEET ? nv::Sheets::Outer : nv::Sheets::Inner);
+        vtkWarningMacro("There is no inner sheet: the shell encloses no cavity, so its two sheets join "
+                        "into one. The input's surface is open (a one-sided scan, or holes wider than "
+                        "twice the offset distance); its shell has only an outer sheet.");
       }
     }
-    surface->ShallowCopy(nv::ExtractSurface(grid, contoured, pieceBegin, pieceEnd));
-    this->OutputTime = Seconds(start);
-  });
-  if (refusedBand > 0)
-  {
-    vtkErrorMacro("The narrow band is too large: " << refusedBand << " nodes"
-                    << (communicator ? " on one process" : "") << " need about "
-                    << refusedBand * BytesPerBandNode / 1048576.0 << " MiB, more than the "
-                    << (limitBytes - bytesEstimate) / 1048576.0 << " MiB left under the limit of " << limitMiB
-                    << " MiB. Increase SampleSpacing, lower MaximumDimension, raise MemoryLimit"
-                    << (this->OutputVolume ? " or turn OutputVolume off." : "."));
-    volume->Initialize();
-    surface->Initialize();
-    return 1;
   }
-  if (disagree)
-  {
-    vtkErrorMacro("Internal error: neighbouring processes disagree on their shared band layers.");
-    volume->Initialize();
-    surface->Initialize();
-    return 1;
-  }
-  aborted = anywhere(aborted); // every process, whatever stage it stopped in
-  if (aborted)
-  {
-    volume->Initialize();
-    surface->Initialize();
-    return 1;
-  }
+  surface->ShallowCopy(nv::ExtractSurface(grid, contoured, run.PieceBegin(), run.PieceEnd(), &monitor));
+  return !monitor.Aborted();
+}
 
-  const int wholeExtent[6] = { 0, static_cast<int>(grid.Dims[0] - 1), 0, static_cast<int>(grid.Dims[1] - 1), 0,
-    static_cast<int>(grid.Dims[2] - 1) };
-  // The grid follows the points, so the whole extent is known only now, not
-  // in the information pass. (ParaView's .pvti writer reads it from there and
-  // so writes the first piece's extent as the whole one; see the README.)
-  volumeInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), wholeExtent, 6);
-  double surfacePoints = static_cast<double>(surface->GetNumberOfPoints());
-  if (communicator)
-  {
-    communicator->SumAll(&surfacePoints, 1);
-  }
-  if (surfacePoints == 0 && (!communicator || communicator->Rank() == 0))
-  {
-    vtkWarningMacro("The surface is empty: the shell did not survive the evolution. The offset "
-                    "distance ("
-      << this->OffsetDistance << ") is probably small against the gaps between points or the "
-      << "grid spacing (" << parameters.Spacing << "): increase OffsetDistance or XiCells, or refine the grid.");
-  }
-
+//------------------------------------------------------------------------------
+void vtkNarrowVolumeReconstruction::AddRunSummary(vtkImageData* volume)
+{
   // Run summary in the volume's field data, for scripts and the GUI's Information panel.
   vtkNew<vtkIntArray> iterations;
   iterations->SetName("NumberOfIterations");
@@ -697,8 +501,6 @@ int vtkNarrowVolumeReconstruction::RequestData(
   volume->GetFieldData()->AddArray(iterations);
   volume->GetFieldData()->AddArray(bandNodes);
   volume->GetFieldData()->AddArray(changes);
-  this->UpdateProgress(1.0);
-  return 1;
 }
 
 //------------------------------------------------------------------------------

@@ -48,7 +48,15 @@
 
 #include <vector> // for the per-step history
 
+namespace nv
+{
+class Monitor;
+class Reconstruction;
+struct Settings;
+}
+
 class vtkImageData;
+class vtkInformation;
 class vtkMultiProcessController;
 class vtkPointSet;
 class vtkPolyData;
@@ -300,10 +308,23 @@ protected:
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int FillOutputPortInformation(int port, vtkInformation* info) override;
+  /// Declares the volume's grid (whole extent, origin, spacing, float
+  /// scalars), which follows the input's points.
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+  /// Whether the controller has several processes (a run may be distributed).
+  bool HasSeveralProcesses() const;
   /// Whether this request is one piece of a distributed run (see SetController).
   bool IsDistributed(vtkInformationVector* outputVector) const;
+  /// The properties, as the core takes them.
+  nv::Settings GetSettings() const;
+  /// The volume piece and the surface of a finished run; false if aborted.
+  /// explained: a warning already said why the surface is empty.
+  bool ProduceOutputs(nv::Reconstruction& run, nv::Monitor& monitor, vtkInformation* volumeInfo,
+    vtkImageData* volume, vtkPolyData* surface, bool distributed, bool& explained);
+  /// NumberOfIterations, NarrowBandNodes and RelativeChange as field data.
+  void AddRunSummary(vtkImageData* volume);
 
   double OffsetDistance = 0.1;
   double SampleSpacing = 0.0;

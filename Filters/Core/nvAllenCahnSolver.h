@@ -6,7 +6,6 @@
 #ifndef nvAllenCahnSolver_h
 #define nvAllenCahnSolver_h
 
-#include "NarrowVolumeFiltersModule.h"
 #include "nvParameters.h"
 
 #include <cmath>
@@ -27,7 +26,7 @@ struct StepReport
   double RelativeChange = 0.0; ///< ||phi^{n+1} - phi^n||_2 / ||phi^n||_2 (section 4)
 };
 
-class NARROWVOLUMEFILTERS_EXPORT AllenCahnSolver
+class AllenCahnSolver
 {
 public:
   /**

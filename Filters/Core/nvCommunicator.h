@@ -7,14 +7,13 @@
 #ifndef nvCommunicator_h
 #define nvCommunicator_h
 
-#include "NarrowVolumeFiltersModule.h"
-
 #include <cstdint>
+#include <vector>
 
 namespace nv
 {
 
-class NARROWVOLUMEFILTERS_EXPORT Communicator
+class Communicator
 {
 public:
   virtual ~Communicator();
@@ -34,6 +33,11 @@ public:
     this->MaxAll(&value, 1);
     return value;
   }
+
+  /// Collective: process `root` gets every process's values, in rank order;
+  /// the others get nothing. Built on Send and Receive (the root only
+  /// receives, so blocking sends cannot deadlock).
+  std::vector<double> Gather(const std::vector<double>& values, int root);
 };
 
 } // namespace nv

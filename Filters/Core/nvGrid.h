@@ -4,15 +4,13 @@
 #ifndef nvGrid_h
 #define nvGrid_h
 
-#include "NarrowVolumeFiltersModule.h"
-
 #include <array>
 #include <cstdint>
 
 namespace nv
 {
 
-struct NARROWVOLUMEFILTERS_EXPORT Grid
+struct Grid
 {
   std::array<double, 3> Origin{ { 0.0, 0.0, 0.0 } };
   double Spacing = 1.0;
@@ -39,20 +37,20 @@ struct NARROWVOLUMEFILTERS_EXPORT Grid
  * spacing h, and the box padded by `padding` on every side so that the band
  * and one spare layer of nodes fit inside.
  */
-NARROWVOLUMEFILTERS_EXPORT Grid MakeGrid(const double bounds[6], double spacing, double padding);
+Grid MakeGrid(const double bounds[6], double spacing, double padding);
 
 /**
  * The padding around the points' box: the band reaches l + eta/2 from the
  * points, and two spare cells keep every band node's neighbours on the grid.
  */
-NARROWVOLUMEFILTERS_EXPORT double GridPadding(double reach, double spacing);
+double GridPadding(double reach, double spacing);
 
 /**
  * The spacing h that puts `maximumDimension` cells along the longest side of
  * the padded box, for offset l and xi = eps_m (so that reach = l + m h).
  * Returns 0 when maximumDimension is too small to hold the padding.
  */
-NARROWVOLUMEFILTERS_EXPORT double SpacingForMaximumDimension(
+double SpacingForMaximumDimension(
   const double bounds[6], double offset, double xiCells, int maximumDimension);
 
 } // namespace nv

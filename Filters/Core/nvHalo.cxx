@@ -8,8 +8,6 @@
 namespace nv
 {
 
-Communicator::~Communicator() = default;
-
 Halo::Halo(const NarrowBand& band, const Subdomain& part, const std::vector<LayerRange>& owners,
   Communicator& communicator)
   : Comm(communicator)

@@ -13,7 +13,6 @@
 #ifndef nvHalo_h
 #define nvHalo_h
 
-#include "NarrowVolumeFiltersModule.h"
 #include "nvPartition.h"
 
 #include <cstdint>
@@ -24,7 +23,7 @@ namespace nv
 class Communicator;
 struct NarrowBand;
 
-class NARROWVOLUMEFILTERS_EXPORT Halo
+class Halo
 {
 public:
   /**

@@ -6,7 +6,6 @@
 #ifndef nvNarrowBand_h
 #define nvNarrowBand_h
 
-#include "NarrowVolumeFiltersModule.h"
 #include "nvGrid.h"
 #include "nvParameters.h"
 #include "nvPartition.h"
@@ -29,7 +28,7 @@ class TruncatedDistance;
  * when the node's own phi0 > 0 and slot L + 1 (-1 + delta) otherwise, as in
  * the paper's step 3.
  */
-struct NARROWVOLUMEFILTERS_EXPORT NarrowBand
+struct NarrowBand
 {
   Grid GridNodes;
   std::int64_t RedCount = 0;           ///< nodes [0, RedCount) are red
@@ -74,7 +73,7 @@ constexpr std::int64_t MaximumBandSize = 4294967295LL - 2;
  * part: in a distributed run, the layers this process computes and owns
  * (nvPartition.h); null for the whole grid.
  */
-NARROWVOLUMEFILTERS_EXPORT NarrowBand BuildNarrowBand(const TruncatedDistance& distance,
+NarrowBand BuildNarrowBand(const TruncatedDistance& distance,
   const Parameters& parameters, Monitor* monitor = nullptr, const Subdomain* part = nullptr);
 
 } // namespace nv

@@ -81,6 +81,7 @@ double ParallelMax(std::int64_t n, const RangeReduction& fn)
 }
 
 Monitor::~Monitor() = default;
+void Monitor::Stage(double, double) {}
 void Monitor::Progress(double) {}
 bool Monitor::Aborted()
 {

@@ -7,8 +7,6 @@
 #ifndef nvParallel_h
 #define nvParallel_h
 
-#include "NarrowVolumeFiltersModule.h"
-
 #include <cstdint>
 #include <functional>
 
@@ -19,20 +17,23 @@ using RangeFunction = std::function<void(std::int64_t begin, std::int64_t end)>;
 using RangeReduction = std::function<double(std::int64_t begin, std::int64_t end)>;
 
 /// Calls fn on disjoint sub-ranges covering [begin, end), possibly concurrently.
-NARROWVOLUMEFILTERS_EXPORT void ParallelFor(
+void ParallelFor(
   std::int64_t begin, std::int64_t end, std::int64_t grain, const RangeFunction& fn);
 
 /// Sum of fn over fixed chunks of [0, n), added in chunk order (deterministic).
-NARROWVOLUMEFILTERS_EXPORT double ParallelSum(std::int64_t n, const RangeReduction& fn);
+double ParallelSum(std::int64_t n, const RangeReduction& fn);
 
 /// Maximum of fn over fixed chunks of [0, n) (0 for an empty range).
-NARROWVOLUMEFILTERS_EXPORT double ParallelMax(std::int64_t n, const RangeReduction& fn);
+double ParallelMax(std::int64_t n, const RangeReduction& fn);
 
 /// Receives progress and answers whether the caller wants the work stopped.
-class NARROWVOLUMEFILTERS_EXPORT Monitor
+class Monitor
 {
 public:
   virtual ~Monitor();
+  /// A stage of the run begins; it covers [begin, begin + width) of the whole
+  /// run's progress (fractions in [0, 1]).
+  virtual void Stage(double begin, double width);
   /// fraction in [0, 1] of the current stage
   virtual void Progress(double fraction);
   virtual bool Aborted();

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "nvPartition.h"
 
+#include "nvCommunicator.h"
+
 #include <algorithm>
 
 namespace nv
@@ -66,6 +68,31 @@ std::vector<LayerRange> SplitLayers(const std::vector<double>& weights, int part
     begin = end;
   }
   return ranges;
+}
+
+std::vector<double> ExchangePoints(
+  Communicator& communicator, const std::vector<double>& xyz, const std::vector<std::array<double, 2>>& zRanges)
+{
+  std::vector<double> mine;
+  std::vector<double> send;
+  for (int q = 0; q < communicator.Size(); ++q)
+  {
+    // One gather per destination: the points of every process that q needs.
+    send.clear();
+    for (std::size_t p = 0; p + 2 < xyz.size(); p += 3)
+    {
+      if (zRanges[q][0] <= xyz[p + 2] && xyz[p + 2] <= zRanges[q][1])
+      {
+        send.insert(send.end(), &xyz[p], &xyz[p] + 3);
+      }
+    }
+    std::vector<double> gathered = communicator.Gather(send, q);
+    if (q == communicator.Rank())
+    {
+      mine.swap(gathered);
+    }
+  }
+  return mine;
 }
 
 } // namespace nv

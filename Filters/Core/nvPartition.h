@@ -12,8 +12,7 @@
 #ifndef nvPartition_h
 #define nvPartition_h
 
-#include "NarrowVolumeFiltersModule.h"
-
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -47,7 +46,17 @@ struct Subdomain
  * per layer). Every range is non-empty when there are at least `parts`
  * layers; the later ranges are empty otherwise.
  */
-NARROWVOLUMEFILTERS_EXPORT std::vector<LayerRange> SplitLayers(const std::vector<double>& weights, int parts);
+std::vector<LayerRange> SplitLayers(const std::vector<double>& weights, int parts);
+
+class Communicator;
+
+/**
+ * Every process gets the points (xyz triples) of all processes whose z lies
+ * in its interval zRanges[rank] = {zmin, zmax} (zmin > zmax: none); returns
+ * this process's. Collective.
+ */
+std::vector<double> ExchangePoints(
+  Communicator& communicator, const std::vector<double>& xyz, const std::vector<std::array<double, 2>>& zRanges);
 
 } // namespace nv
 

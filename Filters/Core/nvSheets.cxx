@@ -8,11 +8,11 @@
 namespace nv
 {
 
-void KeepSheets(const Grid& grid, float* phi, Sheets which)
+std::int64_t KeepSheets(const Grid& grid, float* phi, Sheets which)
 {
   if (which == Sheets::Both)
   {
-    return;
+    return -1;
   }
   const std::int64_t nx = grid.Dims[0], ny = grid.Dims[1], nz = grid.Dims[2];
   const std::int64_t nodes = grid.NumberOfNodes();
@@ -52,14 +52,18 @@ void KeepSheets(const Grid& grid, float* phi, Sheets which)
     if (k < nz - 1)
       visit(n + nx * ny);
   }
+  std::int64_t cavityNodes = 0;
   for (std::int64_t n = 0; n < nodes; ++n)
   {
-    const bool fill = which == Sheets::Outer ? (phi[n] < 0.0f && !exterior[n]) : exterior[n] != 0;
+    const bool cavity = phi[n] < 0.0f && !exterior[n];
+    cavityNodes += cavity ? 1 : 0;
+    const bool fill = which == Sheets::Outer ? cavity : exterior[n] != 0;
     if (fill)
     {
       phi[n] = 1.0f;
     }
   }
+  return cavityNodes;
 }
 
 } // namespace nv

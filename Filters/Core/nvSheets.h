@@ -8,7 +8,6 @@
 #ifndef nvSheets_h
 #define nvSheets_h
 
-#include "NarrowVolumeFiltersModule.h"
 #include "nvGrid.h"
 
 namespace nv
@@ -25,8 +24,11 @@ enum class Sheets
  * Rewrites phi (one value per grid node) so that contouring it at 0 gives
  * only the chosen sheets: cavities are filled (set to +1) to drop the inner
  * sheets, or the exterior is (to drop the outer sheet). Both: no change.
+ * Returns the number of cavity nodes (phi < 0, not reachable from the
+ * grid's boundary): 0 when the shell encloses nothing, as around an open
+ * scan whose two sheets join at its rim; -1 for Both.
  */
-NARROWVOLUMEFILTERS_EXPORT void KeepSheets(const Grid& grid, float* phi, Sheets which);
+std::int64_t KeepSheets(const Grid& grid, float* phi, Sheets which);
 
 } // namespace nv
 

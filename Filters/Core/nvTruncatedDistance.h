@@ -12,7 +12,6 @@
 #ifndef nvTruncatedDistance_h
 #define nvTruncatedDistance_h
 
-#include "NarrowVolumeFiltersModule.h"
 #include "nvGrid.h"
 
 #include <array>
@@ -26,7 +25,7 @@ constexpr int BrickShift = 3;
 constexpr int BrickSize = 1 << BrickShift;               ///< nodes per brick side
 constexpr int BrickNodes = BrickSize * BrickSize * BrickSize; ///< 512
 
-class NARROWVOLUMEFILTERS_EXPORT TruncatedDistance
+class TruncatedDistance
 {
 public:
   /**
@@ -77,7 +76,7 @@ private:
  * The index range [first, last) of `bricks` (ascending brick indices, hence
  * ordered by brick layer) that lie in brick layers [layerBegin, layerEnd).
  */
-NARROWVOLUMEFILTERS_EXPORT void BricksInLayers(const std::vector<std::int64_t>& bricks,
+void BricksInLayers(const std::vector<std::int64_t>& bricks,
   std::int64_t bricksPerLayer, std::int64_t layerBegin, std::int64_t layerEnd, std::int64_t& first,
   std::int64_t& last);
 

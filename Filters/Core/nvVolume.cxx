@@ -8,6 +8,7 @@
 #include "nvTruncatedDistance.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 namespace nv
@@ -25,7 +26,7 @@ void BricksInNodeLayers(const std::vector<std::int64_t>& bricks, std::int64_t br
 
 void FillVolume(const TruncatedDistance& distance, const NarrowBand& band, const std::vector<double>& phi,
   const Parameters& parameters, const std::vector<std::int64_t>& reachedBricks, const VolumeArrays& arrays,
-  std::int64_t kBegin, std::int64_t kEnd)
+  std::int64_t kBegin, std::int64_t kEnd, Monitor* monitor)
 {
   const Grid& grid = distance.GetGrid();
   if (kEnd < 0)
@@ -55,7 +56,13 @@ void FillVolume(const TruncatedDistance& distance, const NarrowBand& band, const
   BricksInNodeLayers(reachedBricks, bricksPerLayer, kBegin, kEnd, first, last);
   const double offset = parameters.OffsetDistance;
   const double xi = parameters.Xi();
+  std::atomic<std::int64_t> done{ 0 };
+  const double total = static_cast<double>(std::max<std::int64_t>(last - first, 1));
   ParallelFor(first, last, 16, [&](std::int64_t begin, std::int64_t end) {
+    if (monitor && monitor->Aborted())
+    {
+      return;
+    }
     double d[BrickNodes];
     for (std::int64_t b = begin; b < end; ++b)
     {
@@ -86,6 +93,10 @@ void FillVolume(const TruncatedDistance& distance, const NarrowBand& band, const
           }
         }
       }
+    }
+    if (monitor)
+    {
+      monitor->Progress((done += end - begin) / total);
     }
   });
 

@@ -7,7 +7,6 @@
 #ifndef nvVolume_h
 #define nvVolume_h
 
-#include "NarrowVolumeFiltersModule.h"
 #include "nvParameters.h"
 
 #include <cstdint>
@@ -15,6 +14,7 @@
 
 namespace nv
 {
+class Monitor;
 struct NarrowBand;
 class TruncatedDistance;
 
@@ -31,11 +31,12 @@ struct VolumeArrays
  * Fills the arrays for the nodes with kBegin <= k < kEnd (the whole grid by
  * default). phi: the solver's values at band nodes (at least band.Size()).
  * reachedBricks: distance.ReachedBricks(), passed in so that slab after slab
- * need not recompute it.
+ * need not recompute it. monitor: progress, and a request to stop, after
+ * which the arrays are left incomplete.
  */
-NARROWVOLUMEFILTERS_EXPORT void FillVolume(const TruncatedDistance& distance, const NarrowBand& band,
+void FillVolume(const TruncatedDistance& distance, const NarrowBand& band,
   const std::vector<double>& phi, const Parameters& parameters, const std::vector<std::int64_t>& reachedBricks,
-  const VolumeArrays& arrays, std::int64_t kBegin = 0, std::int64_t kEnd = -1);
+  const VolumeArrays& arrays, std::int64_t kBegin = 0, std::int64_t kEnd = -1, Monitor* monitor = nullptr);
 
 } // namespace nv
 

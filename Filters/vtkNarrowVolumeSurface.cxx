@@ -1,13 +1,15 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
 // SPDX-License-Identifier: BSD-3-Clause
-#include "nvSurface.h"
+#include "vtkNarrowVolumeSurface.h"
 
 #include "nvNarrowBand.h"
 #include "nvParallel.h"
 #include "nvTruncatedDistance.h"
 #include "nvVolume.h"
 
+#include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
+#include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkFlyingEdges3D.h"
 #include "vtkFloatArray.h"
@@ -29,8 +31,20 @@ namespace
 {
 using Key = std::array<float, 2>; // (x, y) of a vertex on a shared plane
 
+/// The isosurfacer's progress to the monitor, and the monitor's abort to it.
+void ForwardProgress(vtkObject* caller, unsigned long, void* clientData, void* callData)
+{
+  Monitor* monitor = static_cast<Monitor*>(clientData);
+  monitor->Progress(*static_cast<double*>(callData));
+  if (monitor->Aborted())
+  {
+    vtkAlgorithm::SafeDownCast(caller)->SetAbortExecute(1);
+  }
+}
+
 /// Contours phi (nodes of z layers [kBegin, kEnd)) in the grid's own frame.
-vtkSmartPointer<vtkPolyData> ContourLocal(const Grid& grid, vtkDataArray* phi, std::int64_t kBegin, std::int64_t kEnd)
+vtkSmartPointer<vtkPolyData> ContourLocal(
+  const Grid& grid, vtkDataArray* phi, std::int64_t kBegin, std::int64_t kEnd, Monitor* monitor = nullptr)
 {
   vtkNew<vtkImageData> image;
   image->SetOrigin(0.0, 0.0, 0.0);
@@ -44,6 +58,13 @@ vtkSmartPointer<vtkPolyData> ContourLocal(const Grid& grid, vtkDataArray* phi, s
   contour->ComputeNormalsOn();
   contour->ComputeGradientsOff();
   contour->ComputeScalarsOff();
+  if (monitor)
+  {
+    vtkNew<vtkCallbackCommand> forward;
+    forward->SetCallback(ForwardProgress);
+    forward->SetClientData(monitor);
+    contour->AddObserver(vtkCommand::ProgressEvent, forward);
+  }
   contour->Update();
   return contour->GetOutput();
 }
@@ -70,9 +91,9 @@ void MoveToWorld(vtkPolyData* surface, const Grid& grid)
 } // namespace
 
 vtkSmartPointer<vtkPolyData> ExtractSurface(
-  const Grid& grid, vtkDataArray* phi, std::int64_t kBegin, std::int64_t kEnd)
+  const Grid& grid, vtkDataArray* phi, std::int64_t kBegin, std::int64_t kEnd, Monitor* monitor)
 {
-  auto surface = ContourLocal(grid, phi, kBegin, kEnd < 0 ? grid.Dims[2] : kEnd);
+  auto surface = ContourLocal(grid, phi, kBegin, kEnd < 0 ? grid.Dims[2] : kEnd, monitor);
   MoveToWorld(surface, grid);
   return surface;
 }

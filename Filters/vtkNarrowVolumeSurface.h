@@ -13,8 +13,8 @@
 // the box. The vertices and triangles are those of contouring the whole
 // volume; only the normals on the shared planes differ slightly (one-sided
 // gradients there).
-#ifndef nvSurface_h
-#define nvSurface_h
+#ifndef vtkNarrowVolumeSurface_h
+#define vtkNarrowVolumeSurface_h
 
 #include "vtkSmartPointer.h"
 
@@ -36,9 +36,11 @@ class TruncatedDistance;
 constexpr int SlabCells = 16;
 
 /// The phi = 0 surface of a dense phi array, one value per node of the z
-/// layers [kBegin, kEnd) (kEnd < 0: to the grid's end).
-vtkSmartPointer<vtkPolyData> ExtractSurface(
-  const Grid& grid, vtkDataArray* phi, std::int64_t kBegin = 0, std::int64_t kEnd = -1);
+/// layers [kBegin, kEnd) (kEnd < 0: to the grid's end). monitor: the
+/// isosurfacer's progress, and a request to stop it (which VTK 9.2's
+/// vtkFlyingEdges3D sees only when it is done).
+vtkSmartPointer<vtkPolyData> ExtractSurface(const Grid& grid, vtkDataArray* phi, std::int64_t kBegin = 0,
+  std::int64_t kEnd = -1, Monitor* monitor = nullptr);
 
 /// The same surface without the dense array.
 vtkSmartPointer<vtkPolyData> ExtractSurfaceBySlabs(const TruncatedDistance& distance,

@@ -1,0 +1,385 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+// SPDX-License-Identifier: BSD-3-Clause
+#include "nvReconstruction.h"
+
+#include "nvCommunicator.h"
+#include "nvParallel.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace nv
+{
+namespace
+{
+/// Bytes a band node takes: its arrays and the solver's vectors, plus the
+/// transient lists of the band's construction.
+constexpr double BytesPerBandNode = 72.0 + 16.0;
+/// The per-brick tables: 24 bytes for a brick of 512 nodes.
+constexpr double BytesPerGridNode = 24.0 / 512.0;
+/// A point: its coordinates here and in the distance's buckets.
+constexpr double BytesPerPoint = 48.0;
+
+double Seconds(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::string MiB(double bytes)
+{
+  std::ostringstream text;
+  text << bytes / 1048576.0 << " MiB";
+  return text.str();
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+Plan MakePlan(const Settings& settings, const double bounds[6])
+{
+  Plan plan;
+  std::ostringstream error;
+  if (!std::isfinite(settings.OffsetDistance) || settings.OffsetDistance <= 0.0)
+  {
+    error << "OffsetDistance must be a finite value > 0, not " << settings.OffsetDistance
+          << ". (In ParaView its default follows the input's size: in a script, update the input "
+             "before creating the filter, or set OffsetDistance.)";
+  }
+  else if (!std::isfinite(settings.SampleSpacing))
+  {
+    error << "SampleSpacing must be finite, not " << settings.SampleSpacing << ".";
+  }
+  else if (!std::isfinite(settings.TimeStep))
+  {
+    error << "TimeStep must be finite, not " << settings.TimeStep << ".";
+  }
+  else if (!(settings.XiCells >= 1.0 && settings.XiCells <= 64.0))
+  {
+    error << "XiCells must be in [1, 64], not " << settings.XiCells << ".";
+  }
+  else if (!(settings.EpsilonCells >= 0.5 && settings.EpsilonCells <= 256.0))
+  {
+    error << "EpsilonCells must be in [0.5, 256], not " << settings.EpsilonCells << ".";
+  }
+  else if (!(bounds[0] <= bounds[1] && bounds[2] <= bounds[3] && bounds[4] <= bounds[5]))
+  {
+    error << "The input has no points: nothing to reconstruct.";
+  }
+  if (!error.str().empty())
+  {
+    plan.Error = error.str();
+    return plan;
+  }
+
+  Parameters& parameters = plan.Scheme;
+  parameters.OffsetDistance = settings.OffsetDistance;
+  parameters.XiCells = settings.XiCells;
+  parameters.EpsilonCells = settings.EpsilonCells;
+  parameters.TimeStep = settings.TimeStep;
+  parameters.MaximumNumberOfIterations = settings.MaximumNumberOfIterations;
+  parameters.ConvergenceTolerance = settings.ConvergenceTolerance;
+  parameters.GaussSeidelTolerance = settings.GaussSeidelTolerance;
+  parameters.Mode = settings.Mode;
+  parameters.EdgeFunction = settings.EdgeFunction;
+  parameters.Spacing = settings.SampleSpacing > 0.0
+    ? settings.SampleSpacing
+    : SpacingForMaximumDimension(bounds, settings.OffsetDistance, settings.XiCells, settings.MaximumDimension);
+  if (!(parameters.Spacing > 0.0) || !std::isfinite(parameters.Spacing))
+  {
+    error << "Cannot derive a grid spacing from MaximumDimension " << settings.MaximumDimension
+          << "; set SampleSpacing.";
+    plan.Error = error.str();
+    return plan;
+  }
+
+  // The grid's size, in floating point so that no integer can overflow; a
+  // grid must also fit VTK's int extents.
+  const double padding = GridPadding(parameters.Reach(), parameters.Spacing);
+  double nodes = 1.0;
+  bool fits = true;
+  for (int a = 0; a < 3; ++a)
+  {
+    const double cells = (bounds[2 * a + 1] - bounds[2 * a] + 2.0 * padding) / parameters.Spacing + 2.0;
+    nodes *= cells;
+    fits = fits && std::isfinite(cells) && cells < static_cast<double>(std::numeric_limits<int>::max());
+  }
+  if (!fits || !(nodes < 9.2e18))
+  {
+    error << "The grid is too large: about " << nodes << " nodes (spacing " << parameters.Spacing
+          << "). Increase SampleSpacing or lower MaximumDimension.";
+    plan.Error = error.str();
+    return plan;
+  }
+  plan.TheGrid = MakeGrid(bounds, parameters.Spacing, padding);
+  return plan;
+}
+
+std::int64_t PointBounds(const std::vector<double>& xyz, double bounds[6])
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    bounds[2 * a] = std::numeric_limits<double>::max();
+    bounds[2 * a + 1] = -std::numeric_limits<double>::max();
+  }
+  for (std::size_t p = 0; p + 2 < xyz.size(); p += 3)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      const double x = xyz[p + a];
+      if (!std::isfinite(x))
+      {
+        return static_cast<std::int64_t>(p / 3);
+      }
+      bounds[2 * a] = std::min(bounds[2 * a], x);
+      bounds[2 * a + 1] = std::max(bounds[2 * a + 1], x);
+    }
+  }
+  return -1;
+}
+
+void GlobalBounds(Communicator& communicator, double bounds[6])
+{
+  // Maxima of (-xmin, xmax, -ymin, ...).
+  double box[6];
+  for (int a = 0; a < 6; ++a)
+  {
+    box[a] = a % 2 ? bounds[a] : -bounds[a];
+  }
+  communicator.MaxAll(box, 6);
+  for (int a = 0; a < 6; ++a)
+  {
+    bounds[a] = a % 2 ? box[a] : -box[a];
+  }
+}
+
+//------------------------------------------------------------------------------
+Reconstruction::Reconstruction(const Settings& settings, Communicator* communicator, Monitor* monitor)
+  : TheSettings(settings)
+  , Comm(communicator)
+  , TheMonitor(monitor)
+{
+}
+
+Reconstruction::~Reconstruction() = default;
+
+bool Reconstruction::Anywhere(bool flag)
+{
+  return this->Comm ? this->Comm->MaxAll(flag ? 1.0 : 0.0) > 0.0 : flag;
+}
+
+double Reconstruction::SumAll(double value)
+{
+  if (this->Comm)
+  {
+    this->Comm->SumAll(&value, 1);
+  }
+  return value;
+}
+
+bool Reconstruction::Fail(const std::string& message)
+{
+  this->Message = message;
+  return false;
+}
+
+//------------------------------------------------------------------------------
+bool Reconstruction::Run(std::vector<double> xyz)
+{
+  // 1. The points: counted and checked on every process, errors agreed by all.
+  double bounds[6];
+  const std::int64_t bad = PointBounds(xyz, bounds);
+  double totals[2] = { static_cast<double>(xyz.size() / 3), bad >= 0 ? 1.0 : 0.0 };
+  if (this->Comm)
+  {
+    this->Comm->SumAll(totals, 2);
+    GlobalBounds(*this->Comm, bounds);
+  }
+  if (totals[0] < 1.0)
+  {
+    return this->Fail("The input has no points: nothing to reconstruct.");
+  }
+  if (totals[1] > 0.0)
+  {
+    std::ostringstream error;
+    if (bad >= 0)
+    {
+      error << "Input point " << bad << " has a non-finite coordinate (NaN or infinity); ";
+    }
+    else
+    {
+      error << "A point of another process's piece has a non-finite coordinate (NaN or infinity); ";
+    }
+    error << "remove such points before reconstructing.";
+    return this->Fail(error.str());
+  }
+
+  // 2. The grid.
+  this->ThePlan = MakePlan(this->TheSettings, bounds);
+  if (!this->ThePlan.Valid())
+  {
+    return this->Fail(this->ThePlan.Error);
+  }
+  const Grid& grid = this->ThePlan.TheGrid;
+  const std::int64_t layers = (grid.Dims[2] + BrickSize - 1) >> BrickShift;
+
+  // 3. This process's slab, and the points within its reach.
+  this->Partition(xyz, layers);
+
+  // 4. Memory before any allocation that grows with the grid.
+  if (!this->CheckMemory(static_cast<double>(grid.NumberOfNodes()), static_cast<double>(xyz.size() / 3)))
+  {
+    return false;
+  }
+  if (this->Comm)
+  {
+    std::vector<std::array<double, 2>> zRanges(this->Owners.size());
+    for (std::size_t q = 0; q < this->Owners.size(); ++q)
+    {
+      const Subdomain other = Subdomain::Around(this->Owners[q], layers);
+      const double margin = this->ThePlan.Scheme.Reach() + grid.Spacing;
+      zRanges[q] = { grid.Origin[2] + other.Computed.Begin * BrickSize * grid.Spacing - margin,
+        grid.Origin[2] + (std::min(other.Computed.End * BrickSize, grid.Dims[2]) - 1) * grid.Spacing + margin };
+      if (other.Computed.Empty())
+      {
+        zRanges[q] = { 1.0, 0.0 }; // nothing
+      }
+    }
+    xyz = ExchangePoints(*this->Comm, xyz, zRanges);
+  }
+
+  // 5. Distance (eq. 6, 7) and band (steps 1-3).
+  auto start = std::chrono::steady_clock::now();
+  if (this->TheMonitor)
+  {
+    this->TheMonitor->Stage(0.0, 0.2);
+  }
+  this->Distance.reset(new TruncatedDistance(
+    grid, xyz.data(), static_cast<std::int64_t>(xyz.size() / 3), this->ThePlan.Scheme.Reach()));
+  std::vector<double>().swap(xyz);
+  this->Band = BuildNarrowBand(*this->Distance, this->ThePlan.Scheme, this->TheMonitor, &this->Part);
+  this->SetupTime = Seconds(start);
+  double failed[2] = { static_cast<double>(this->Band.RefusedSize),
+    this->TheMonitor && this->TheMonitor->Aborted() ? 1.0 : 0.0 };
+  if (this->Comm)
+  {
+    this->Comm->MaxAll(failed, 2);
+  }
+  if (failed[0] > 0.0)
+  {
+    std::ostringstream error;
+    error << "The narrow band is too large: " << failed[0] << " nodes" << (this->Comm ? " on one process" : "")
+          << " need about " << MiB(failed[0] * BytesPerBandNode) << ", more than the "
+          << MiB(this->TheSettings.MemoryLimitBytes - this->BytesBeforeBand) << " left under the limit of "
+          << MiB(this->TheSettings.MemoryLimitBytes)
+          << ". Increase SampleSpacing, lower MaximumDimension, raise MemoryLimit"
+          << (this->TheSettings.OutputBytesPerNode > 0.0 ? " or turn OutputVolume off." : ".");
+    return this->Fail(error.str());
+  }
+  if (failed[1] > 0.0)
+  {
+    this->Stopped = true;
+    return false;
+  }
+  std::int64_t red[2], black[2];
+  this->Band.OwnedNodes(true, red[0], red[1]);
+  this->Band.OwnedNodes(false, black[0], black[1]);
+  this->BandNodes = static_cast<std::int64_t>(this->SumAll(static_cast<double>(red[1] - red[0] + black[1] - black[0])));
+
+  // 6. Evolution: (10)-(12) per time step.
+  start = std::chrono::steady_clock::now();
+  if (this->TheMonitor)
+  {
+    this->TheMonitor->Stage(0.2, 0.5);
+  }
+  if (this->Comm)
+  {
+    this->TheHalo.reset(new Halo(this->Band, this->Part, this->Owners, *this->Comm));
+    if (!this->TheHalo->Agree())
+    {
+      return this->Fail("Internal error: neighbouring processes disagree on their shared band layers.");
+    }
+  }
+  this->Solver.reset(new AllenCahnSolver(this->Band, this->ThePlan.Scheme, this->TheHalo.get()));
+  for (const StepReport& step : this->Solver->Run(this->TheMonitor))
+  {
+    this->Changes.push_back(step.RelativeChange);
+  }
+  this->EvolutionTime = Seconds(start);
+  if (this->Anywhere(this->TheMonitor && this->TheMonitor->Aborted()))
+  {
+    this->Stopped = true;
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void Reconstruction::Partition(const std::vector<double>& xyz, std::int64_t layers)
+{
+  // The whole grid, or a slab of brick layers balanced by the number of
+  // points per layer (nvPartition.h).
+  const Grid& grid = this->ThePlan.TheGrid;
+  this->Part = Subdomain::Whole(layers);
+  this->Owners.assign(1, this->Part.Owned);
+  if (this->Comm)
+  {
+    std::vector<double> weights(static_cast<std::size_t>(layers), 0.0);
+    for (std::size_t p = 0; p + 2 < xyz.size(); p += 3)
+    {
+      const std::int64_t k = static_cast<std::int64_t>((xyz[p + 2] - grid.Origin[2]) / grid.Spacing);
+      weights[static_cast<std::size_t>(std::min(layers - 1, std::max<std::int64_t>(0, k >> BrickShift)))] += 1.0;
+    }
+    this->Comm->SumAll(weights.data(), static_cast<int>(layers));
+    this->Owners = SplitLayers(weights, this->Comm->Size());
+    this->Part = Subdomain::Around(this->Owners[this->Comm->Rank()], layers);
+  }
+  this->Computed[0] = this->Part.Computed.Begin * BrickSize;
+  this->Computed[1] = std::min(this->Part.Computed.End * BrickSize, grid.Dims[2]);
+  this->Piece[0] = this->Part.Owned.Begin * BrickSize;
+  this->Piece[1] = this->Part.Owned.Empty() ? this->Piece[0]
+                                            : std::min(this->Part.Owned.End * BrickSize + 1, grid.Dims[2]);
+}
+
+bool Reconstruction::CheckMemory(double gridNodes, double points)
+{
+  // Checked in two stages. Here, before any allocation that grows with the
+  // grid: the dense output, the per-brick tables, the points, and in Whole
+  // Domain mode the band arrays on every computed node. The narrow band's own
+  // size is known only once its distances are computed: BuildNarrowBand
+  // refuses it then, before allocating its arrays, if it would not fit in
+  // what is left.
+  const Grid& grid = this->ThePlan.TheGrid;
+  const double layerNodes = static_cast<double>(grid.Dims[0] * grid.Dims[1]);
+  const double computedNodes = layerNodes * static_cast<double>(this->Computed[1] - this->Computed[0]);
+  const double pieceNodes = layerNodes * static_cast<double>(this->Piece[1] - this->Piece[0]);
+  const bool whole = this->ThePlan.Scheme.Mode == Domain::WholeDomain;
+  const double bytes = pieceNodes * this->TheSettings.OutputBytesPerNode + gridNodes * BytesPerGridNode +
+    (whole ? computedNodes * BytesPerBandNode : 0.0) + points * BytesPerPoint;
+  const double limit = this->TheSettings.MemoryLimitBytes;
+  this->BytesBeforeBand = bytes;
+  if (this->Anywhere(bytes > limit || (whole && computedNodes > static_cast<double>(MaximumBandSize))))
+  {
+    std::ostringstream error;
+    error << "The grid is too large: about " << gridNodes << " nodes (spacing " << grid.Spacing << ") need about "
+          << MiB(bytes) << (this->Comm ? " on some process" : "") << ", over the limit of " << MiB(limit)
+          << ". Increase SampleSpacing, lower MaximumDimension, raise MemoryLimit"
+          << (this->TheSettings.OutputBytesPerNode > 0.0 ? " or turn OutputVolume off." : ".");
+    return this->Fail(error.str());
+  }
+  if (!whole)
+  {
+    this->ThePlan.Scheme.MaximumBandNodes = static_cast<std::int64_t>((limit - bytes) / BytesPerBandNode);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void Reconstruction::FillVolume(const VolumeArrays& arrays, std::int64_t kBegin, std::int64_t kEnd) const
+{
+  nv::FillVolume(*this->Distance, this->Band, this->Solver->GetPhi(), this->ThePlan.Scheme,
+    this->Distance->ReachedBricks(), arrays, kBegin, kEnd, this->TheMonitor);
+}
+
+} // namespace nv

@@ -1,0 +1,157 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+// SPDX-License-Identifier: BSD-3-Clause
+// The whole run of the narrow volume method, in the order of the paper's
+// section 3, for one process or for each process of a distributed run:
+//
+//   1. check the user's settings and the points (a message says what to change);
+//   2. the grid around the points' box (all processes' box), spacing h given
+//      or from the number of cells along the longest side (MakePlan);
+//   3. in a distributed run, the slab of brick layers this process owns
+//      (nvPartition.h), balanced by the points per layer, and the points
+//      within reach of it, moved here from the other processes;
+//   4. the memory budget: the dense output and the per-brick tables before
+//      anything large exists, the band once its size is known;
+//   5. the truncated distance (eq. 6, 7) and the narrow band (steps 1-3);
+//   6. the time steps of the operator-split scheme (eq. 10-12);
+//   7. the dense arrays of the output on request (FillVolume).
+//
+// The VTK filter (vtkNarrowVolumeReconstruction) only converts: the input's
+// points in, the image and the surface out.
+#ifndef nvReconstruction_h
+#define nvReconstruction_h
+
+#include "nvAllenCahnSolver.h"
+#include "nvGrid.h"
+#include "nvHalo.h"
+#include "nvNarrowBand.h"
+#include "nvParameters.h"
+#include "nvPartition.h"
+#include "nvTruncatedDistance.h"
+#include "nvVolume.h"
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace nv
+{
+class Communicator;
+class Monitor;
+
+/// What the user chooses (the filter's properties), before the grid is known.
+struct Settings
+{
+  double OffsetDistance = 0.1; ///< l, world units
+  double SampleSpacing = 0.0;  ///< h, world units; <= 0: from MaximumDimension
+  int MaximumDimension = 100;  ///< cells along the padded box's longest side
+  double XiCells = 2.0;
+  double EpsilonCells = 6.0;
+  double TimeStep = 0.0;
+  int MaximumNumberOfIterations = 3;
+  double ConvergenceTolerance = 0.0;
+  double GaussSeidelTolerance = 1e-6;
+  Domain Mode = Domain::NarrowBand;
+  EdgeStopping EdgeFunction = EdgeStopping::Eq4;
+  double MemoryLimitBytes = 0.0;  ///< the largest allocation of a run (> 0)
+  double OutputBytesPerNode = 0.0; ///< dense output arrays, bytes per node of the piece
+};
+
+/// The grid that points with given bounds get, and the scheme's parameters on it.
+struct Plan
+{
+  Grid TheGrid;
+  Parameters Scheme;
+  std::string Error; ///< why there is no grid; empty when there is one
+  bool Valid() const { return this->Error.empty(); }
+};
+
+/**
+ * Checks the settings and derives the grid from the points' bounds (xmin,
+ * xmax, ymin, ...): the information a pipeline needs before the run, and
+ * the run's own first step. The message of an invalid plan says what to change.
+ */
+Plan MakePlan(const Settings& settings, const double bounds[6]);
+
+/// Bounds of xyz triples (empty: xmin > xmax). Returns the index of the first
+/// point with a non-finite coordinate, or -1.
+std::int64_t PointBounds(const std::vector<double>& xyz, double bounds[6]);
+
+/// The bounds of all processes' points (in place), collective.
+void GlobalBounds(Communicator& communicator, double bounds[6]);
+
+class Reconstruction
+{
+public:
+  /// communicator: the other processes of a distributed run, or null.
+  /// monitor: progress and abort, or null.
+  Reconstruction(const Settings& settings, Communicator* communicator, Monitor* monitor);
+  ~Reconstruction();
+
+  /**
+   * Steps 1-6 for this process's points (xyz triples). Returns false when the
+   * run stops: Error() says why (the same on every process), or Aborted().
+   * In a distributed run every process must call it.
+   */
+  bool Run(std::vector<double> xyz);
+  const std::string& Error() const { return this->Message; }
+  bool Aborted() const { return this->Stopped; }
+
+  /// Collective: whether `flag` is true on any process (itself when serial).
+  bool Anywhere(bool flag);
+  /// Collective: the sum over processes (itself when serial).
+  double SumAll(double value);
+
+  const Grid& GetGrid() const { return this->ThePlan.TheGrid; }
+  const Parameters& GetParameters() const { return this->ThePlan.Scheme; }
+  /// The node layers along z of this process's output piece: its owned brick
+  /// layers and the first node layer of the next piece, which both share.
+  std::int64_t PieceBegin() const { return this->Piece[0]; }
+  std::int64_t PieceEnd() const { return this->Piece[1]; }
+  /// The node layers this process computes (its piece and ghost layers).
+  std::int64_t ComputedBegin() const { return this->Computed[0]; }
+  std::int64_t ComputedEnd() const { return this->Computed[1]; }
+  bool EmptyPiece() const { return this->Piece[1] <= this->Piece[0]; }
+  /// Band nodes of all processes.
+  std::int64_t NumberOfBandNodes() const { return this->BandNodes; }
+  const std::vector<double>& RelativeChanges() const { return this->Changes; }
+  double SetupSeconds() const { return this->SetupTime; }
+  double EvolutionSeconds() const { return this->EvolutionTime; }
+
+  /// Step 7: the dense arrays of the node layers [kBegin, kEnd) (within the
+  /// computed layers), in parallel; stops early if the monitor aborts.
+  void FillVolume(const VolumeArrays& arrays, std::int64_t kBegin, std::int64_t kEnd) const;
+  /// What the surface extraction needs.
+  const TruncatedDistance& GetDistance() const { return *this->Distance; }
+  const NarrowBand& GetBand() const { return this->Band; }
+  const std::vector<double>& GetPhi() const { return this->Solver->GetPhi(); }
+
+private:
+  bool Fail(const std::string& message);
+  bool CheckMemory(double gridNodes, double points);
+  void Partition(const std::vector<double>& xyz, std::int64_t layers);
+
+  Settings TheSettings;
+  Communicator* Comm;
+  Monitor* TheMonitor;
+  Plan ThePlan;
+  std::vector<LayerRange> Owners;
+  Subdomain Part;
+  std::int64_t Piece[2] = { 0, 0 };
+  std::int64_t Computed[2] = { 0, 0 };
+  double BytesBeforeBand = 0.0;
+  std::unique_ptr<TruncatedDistance> Distance;
+  NarrowBand Band;
+  std::unique_ptr<Halo> TheHalo;
+  std::unique_ptr<AllenCahnSolver> Solver;
+  std::int64_t BandNodes = 0;
+  std::vector<double> Changes;
+  double SetupTime = 0.0;
+  double EvolutionTime = 0.0;
+  std::string Message;
+  bool Stopped = false;
+};
+
+} // namespace nv
+
+#endif
