@@ -401,7 +401,7 @@ bool vtkNarrowVolumeReconstruction::ProduceOutputs(nv::Reconstruction& run, nv::
   if (!this->OutputVolume && (this->Sheets == BOTH_SHEETS || distributed))
   {
     // Output 1 without a dense volume: slab by slab.
-    monitor.Stage(0.6, 0.4);
+    monitor.Stage(0.65, 0.35);
     surface->ShallowCopy(nv::ExtractSurfaceBySlabs(run.GetDistance(), run.GetBand(), run.GetPhi(),
       run.GetParameters(), &monitor, run.PieceBegin(), run.PieceEnd()));
     return !monitor.Aborted(); // the slabs stop early: a partial surface is no result
@@ -434,7 +434,7 @@ bool vtkNarrowVolumeReconstruction::ProduceOutputs(nv::Reconstruction& run, nv::
     vtkWarningMacro("Keeping one sheet needs the dense grid: memory follows the box although "
                     "OutputVolume is off.");
   }
-  monitor.Stage(0.6, 0.2);
+  monitor.Stage(0.65, 0.15);
   run.FillVolume(arrays, volumeBegin, volumeEnd);
   if (monitor.Aborted())
   {

@@ -119,18 +119,6 @@ NarrowBand BuildNarrowBand(
     }
   }
   const std::int64_t numberOfBricks = static_cast<std::int64_t>(bricks.size());
-  std::atomic<bool> aborted(false);
-  auto checkAbort = [&](std::int64_t done, std::int64_t total, double base) {
-    if (monitor && (done & 63) == 0)
-    {
-      monitor->Progress(base + 0.5 * done / std::max<std::int64_t>(total, 1));
-      if (monitor->Aborted())
-      {
-        aborted = true;
-      }
-    }
-    return aborted.load();
-  };
 
   // Distances brick by brick; each brick keeps its band nodes, red and black
   // apart, in ascending grid index. This transient list grows with the band.
@@ -144,9 +132,9 @@ NarrowBand BuildNarrowBand(
     std::vector<Entry> Red, Black;
   };
   std::vector<BrickBand> perBrick(static_cast<std::size_t>(numberOfBricks));
-  ParallelFor(0, numberOfBricks, 16, [&](std::int64_t begin, std::int64_t end) {
+  const bool done = MonitoredFor(0, numberOfBricks, 16, monitor, [&](std::int64_t begin, std::int64_t end) {
     double scratch[BrickNodes];
-    for (std::int64_t a = begin; a < end && !checkAbort(a, numberOfBricks, 0.0); ++a)
+    for (std::int64_t a = begin; a < end; ++a)
     {
       BrickBand& out = perBrick[a];
       ForEachBandNode(distance, parameters, bricks[a], scratch,
@@ -155,7 +143,7 @@ NarrowBand BuildNarrowBand(
         });
     }
   });
-  if (aborted)
+  if (!done)
   {
     return NarrowBand{};
   }

@@ -60,6 +60,27 @@ void ParallelFor(std::int64_t begin, std::int64_t end, std::int64_t grain, const
   vtkSMPTools::For(begin, end, grain, [&fn](std::int64_t first, std::int64_t last) { fn(first, last); });
 }
 
+bool MonitoredFor(
+  std::int64_t begin, std::int64_t end, std::int64_t grain, Monitor* monitor, const RangeFunction& fn)
+{
+  constexpr std::int64_t Rounds = 16;
+  const std::int64_t n = end - begin;
+  const std::int64_t round = monitor ? std::max<std::int64_t>(grain, (n + Rounds - 1) / Rounds) : n;
+  for (std::int64_t first = begin; first < end; first += round)
+  {
+    if (monitor && monitor->Aborted())
+    {
+      return false;
+    }
+    ParallelFor(first, std::min(end, first + round), grain, fn);
+    if (monitor)
+    {
+      monitor->Progress(static_cast<double>(std::min(end, first + round) - begin) / n);
+    }
+  }
+  return !(monitor && monitor->Aborted());
+}
+
 double ParallelSum(std::int64_t n, const RangeReduction& fn)
 {
   double sum = 0.0;

@@ -20,6 +20,17 @@ using RangeReduction = std::function<double(std::int64_t begin, std::int64_t end
 void ParallelFor(
   std::int64_t begin, std::int64_t end, std::int64_t grain, const RangeFunction& fn);
 
+class Monitor;
+
+/**
+ * ParallelFor in about 16 rounds: after each round, on the calling thread,
+ * reports the fraction done to the monitor and stops early if it asks to.
+ * (Worker threads cannot report: a GUI takes progress from its own thread.)
+ * Returns false if it stopped early. monitor may be null.
+ */
+bool MonitoredFor(
+  std::int64_t begin, std::int64_t end, std::int64_t grain, Monitor* monitor, const RangeFunction& fn);
+
 /// Sum of fn over fixed chunks of [0, n), added in chunk order (deterministic).
 double ParallelSum(std::int64_t n, const RangeReduction& fn);
 

@@ -253,7 +253,7 @@ bool Reconstruction::Run(std::vector<double> xyz)
   auto start = std::chrono::steady_clock::now();
   if (this->TheMonitor)
   {
-    this->TheMonitor->Stage(0.0, 0.2);
+    this->TheMonitor->Stage(0.0, 0.3);
   }
   this->Distance.reset(new TruncatedDistance(
     grid, xyz.data(), static_cast<std::int64_t>(xyz.size() / 3), this->ThePlan.Scheme.Reach()));
@@ -291,7 +291,7 @@ bool Reconstruction::Run(std::vector<double> xyz)
   start = std::chrono::steady_clock::now();
   if (this->TheMonitor)
   {
-    this->TheMonitor->Stage(0.2, 0.5);
+    this->TheMonitor->Stage(0.3, 0.35);
   }
   if (this->Comm)
   {

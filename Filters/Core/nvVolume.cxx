@@ -8,7 +8,6 @@
 #include "nvTruncatedDistance.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 
 namespace nv
@@ -56,13 +55,7 @@ void FillVolume(const TruncatedDistance& distance, const NarrowBand& band, const
   BricksInNodeLayers(reachedBricks, bricksPerLayer, kBegin, kEnd, first, last);
   const double offset = parameters.OffsetDistance;
   const double xi = parameters.Xi();
-  std::atomic<std::int64_t> done{ 0 };
-  const double total = static_cast<double>(std::max<std::int64_t>(last - first, 1));
-  ParallelFor(first, last, 16, [&](std::int64_t begin, std::int64_t end) {
-    if (monitor && monitor->Aborted())
-    {
-      return;
-    }
+  if (!MonitoredFor(first, last, 16, monitor, [&](std::int64_t begin, std::int64_t end) {
     double d[BrickNodes];
     for (std::int64_t b = begin; b < end; ++b)
     {
@@ -94,11 +87,10 @@ void FillVolume(const TruncatedDistance& distance, const NarrowBand& band, const
         }
       }
     }
-    if (monitor)
-    {
-      monitor->Progress((done += end - begin) / total);
-    }
-  });
+  }))
+  {
+    return; // stopped: the arrays are incomplete
+  }
 
   // Band nodes: the evolved phi.
   BricksInNodeLayers(band.Bricks, bricksPerLayer, kBegin, kEnd, first, last);
