@@ -10,13 +10,16 @@
 #include "nvHalo.h"
 #include "nvNarrowBand.h"
 #include "nvPartition.h"
+#include "nvReconstruction.h"
 #include "nvTestUtilities.h"
 #include "nvTruncatedDistance.h"
 
+#include <cmath>
 #include <condition_variable>
 #include <deque>
 #include <map>
 #include <mutex>
+#include <string>
 #include <thread>
 #include <unordered_map>
 
@@ -208,6 +211,123 @@ void TestDistributedSolve(nv::Domain mode, int ranks, std::vector<double> weight
   NV_CHECK(total == static_cast<std::int64_t>(serial.size()));
 }
 
+/// The shipped run (nv::Reconstruction): each rank holds an uneven share of
+/// the points, spread over the whole shape (one rank holds none); the run
+/// weights the brick layers by the points, splits them, moves the points to
+/// the ranks that need them and evolves the band. Every rank agrees on the
+/// grid, and its owned nodes have exactly the serial phi.
+void TestDistributedRun(int ranks)
+{
+  const double center[3] = { 0.1, -0.2, 0.3 };
+  const std::vector<double> points = nvtest::SpherePoints(800, 0.5, center);
+  nv::Settings settings;
+  settings.OffsetDistance = 0.08;
+  settings.MaximumDimension = 60;
+  settings.MemoryLimitBytes = 1e9;
+  nv::Reconstruction serial(settings, nullptr, nullptr);
+  NV_CHECK(serial.Run(points));
+  std::unordered_map<std::int64_t, double> serialPhi;
+  for (std::int64_t s = 0; s < serial.GetBand().Size(); ++s)
+  {
+    serialPhi[serial.GetBand().Node[s]] = serial.GetPhi()[s];
+  }
+
+  Hub hub(ranks);
+  std::vector<std::int64_t> owned(static_cast<std::size_t>(ranks), 0);
+  std::vector<int> mismatches(static_cast<std::size_t>(ranks), 0);
+  std::vector<int> sameGrid(static_cast<std::size_t>(ranks), 0);
+  std::vector<std::thread> threads;
+  for (int rank = 0; rank < ranks; ++rank)
+  {
+    threads.emplace_back([&, rank]() {
+      // Point p goes to rank (p mod (ranks + 1)), the last rank also taking
+      // the extra share; rank 1 holds nothing when there are 3 or more.
+      std::vector<double> mine;
+      for (std::size_t p = 0; p < points.size() / 3; ++p)
+      {
+        int to = static_cast<int>(p % static_cast<std::size_t>(ranks + 1));
+        to = to >= ranks ? ranks - 1 : to;
+        if (ranks >= 3 && to == 1)
+        {
+          to = 0;
+        }
+        if (to == rank)
+        {
+          mine.insert(mine.end(), &points[3 * p], &points[3 * p] + 3);
+        }
+      }
+      ThreadCommunicator communicator(hub, rank);
+      nv::Reconstruction run(settings, &communicator, nullptr);
+      if (!run.Run(mine))
+      {
+        mismatches[rank] = -1;
+        return;
+      }
+      sameGrid[rank] = run.GetGrid().Dims == serial.GetGrid().Dims &&
+        run.GetGrid().Origin == serial.GetGrid().Origin && run.GetGrid().Spacing == serial.GetGrid().Spacing &&
+        run.NumberOfBandNodes() == serial.NumberOfBandNodes();
+      for (bool red : { true, false })
+      {
+        std::int64_t begin, end;
+        run.GetBand().OwnedNodes(red, begin, end);
+        owned[rank] += end - begin;
+        for (std::int64_t s = begin; s < end; ++s)
+        {
+          const auto it = serialPhi.find(run.GetBand().Node[s]);
+          mismatches[rank] += (it == serialPhi.end() || it->second != run.GetPhi()[s]) ? 1 : 0;
+        }
+      }
+    });
+  }
+  for (std::thread& thread : threads)
+  {
+    thread.join();
+  }
+  std::int64_t total = 0;
+  for (int rank = 0; rank < ranks; ++rank)
+  {
+    NV_CHECK(sameGrid[rank]);
+    NV_CHECK(mismatches[rank] == 0);
+    total += owned[rank];
+  }
+  NV_CHECK(total == static_cast<std::int64_t>(serialPhi.size()));
+}
+
+/// Errors are every rank's: no points anywhere, or a NaN on one rank.
+void TestDistributedErrors()
+{
+  for (int bad : { 0, 1 })
+  {
+    Hub hub(3);
+    std::vector<std::string> errors(3);
+    std::vector<std::thread> threads;
+    for (int rank = 0; rank < 3; ++rank)
+    {
+      threads.emplace_back([&, rank]() {
+        std::vector<double> mine;
+        if (bad && rank == 2)
+        {
+          mine = { 0.0, 0.0, 0.0, 1.0, std::nan(""), 0.0 };
+        }
+        nv::Settings settings;
+        settings.MemoryLimitBytes = 1e9;
+        ThreadCommunicator communicator(hub, rank);
+        nv::Reconstruction run(settings, &communicator, nullptr);
+        NV_CHECK(!run.Run(mine));
+        errors[rank] = run.Error();
+      });
+    }
+    for (std::thread& thread : threads)
+    {
+      thread.join();
+    }
+    for (const std::string& error : errors)
+    {
+      NV_CHECK(error.find(bad ? "non-finite" : "no points") != std::string::npos);
+    }
+  }
+}
+
 } // namespace
 
 int main()
@@ -221,5 +341,10 @@ int main()
   // Uneven slabs, and more ranks than brick layers (some ranks own nothing).
   TestDistributedSolve(nv::Domain::NarrowBand, 4, { 0.0, 0.0, 9.0, 1.0, 0.0 });
   TestDistributedSolve(nv::Domain::NarrowBand, 12, {});
+  for (int ranks : { 1, 2, 3, 5 })
+  {
+    TestDistributedRun(ranks);
+  }
+  TestDistributedErrors();
   return nvtest::Result("TestCorePartition");
 }
