@@ -21,7 +21,6 @@ Appended mode: with Debian 12's current libexpat, VTK 9.2's XML readers
 """
 import argparse
 import os
-import re
 import sys
 import time
 
@@ -71,14 +70,6 @@ def can_render():
         return False
     x11.XCloseDisplay(display)
     return True
-
-
-def fix_whole_extent(pvti, extent):
-    with open(pvti) as f:
-        text = f.read()
-    text = re.sub(r'WholeExtent="[^"]*"', 'WholeExtent="%s"' % " ".join(str(e) for e in extent), text, count=1)
-    with open(pvti, "w") as f:
-        f.write(text)
 
 
 def main():
@@ -135,11 +126,6 @@ def main():
     ranks = servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
     volume_file = name + ("_phi.pvti" if ranks > 1 else "_phi.vti")
     pvs.SaveData(os.path.join(args.out, volume_file), proxy=shell, PointDataArrays=["phi"], DataMode="Binary")
-    if ranks > 1:
-        # The grid follows the points, so the filter knows its whole extent
-        # only after it runs; ParaView's .pvti writer takes it before, from the
-        # first piece. The pieces are right: give the header their union.
-        fix_whole_extent(os.path.join(args.out, volume_file), volume_info.GetExtent())
     surface = pvs.OutputPort(shell, 1)
     surface_file = name + ("_shell.pvtp" if ranks > 1 else "_shell.vtp")
     pvs.SaveData(os.path.join(args.out, surface_file), proxy=surface, DataMode="Binary")

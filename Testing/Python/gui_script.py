@@ -2,8 +2,10 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """Runs inside the real ParaView client (paraview --script=gui_script.py):
 loads the plugin, opens a point cloud, applies the filter with the panel's
-defaults, shows both outputs beside the points, saves a screenshot, writes
-what it saw to NV_GUI_RESULT (JSON) and closes the client."""
+defaults, shows both outputs beside the points, saves a screenshot, applies
+ParaView's Slice, Clip, Threshold, Contour, Resample To Image and Plot Over
+Line to the Volume output, writes what it saw to NV_GUI_RESULT (JSON) and
+closes the client."""
 import json
 import os
 import traceback
@@ -22,6 +24,15 @@ try:
     shell = NarrowVolumeReconstruction(Input=cloud)  # noqa: F821 (from LoadPlugin)
     result["offset_default"] = shell.OffsetDistance
     result["label"] = shell.GetXMLLabel()
+    # The information pass, before the run: the Volume's grid is already
+    # declared in its pipeline information (the client is a builtin session,
+    # so the proxy's VTK object is here).
+    from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline as sddp
+    shell.UpdatePipelineInformation()
+    algorithm = shell.GetClientSideObject()
+    info = algorithm.GetOutputInformation(0)
+    result["info_whole_extent"] = list(info.Get(sddp.WHOLE_EXTENT())) if info.Has(sddp.WHOLE_EXTENT()) else None
+    result["points_before_run"] = algorithm.GetOutputDataObject(0).GetNumberOfPoints()
     surface = Show(OutputPort(shell, 1), view)
     volume = Show(OutputPort(shell, 0), view)  # an image shows as its outline
     surface.DiffuseColor = [0.9, 0.5, 0.2]
@@ -31,7 +42,33 @@ try:
     result["surface_cells"] = shell.GetDataInformation(1).GetNumberOfCells()
     result["volume_points"] = shell.GetDataInformation(0).GetNumberOfPoints()
     result["cloud_visible"] = bool(pvs.GetDisplayProperties(cloud, view).Visibility)
+    result["volume_extent"] = list(shell.GetDataInformation(0).GetExtent())
     SaveScreenshot(os.environ["NV_SCREENSHOT"], view, ImageResolution=[800, 600])
+    # ParaView's filters on the Volume port, as a user applies them (and
+    # Apply shows them), with their defaults except for what the test needs:
+    # Slice and Clip through the centre of the bounds, Threshold phi in
+    # [0, 1], Contour phi = 0, ResampleToImage 100^3, Plot Over Line along the
+    # bounds' diagonal.
+    volume_port = OutputPort(shell, 0)
+    downstream = {"Slice": pvs.Slice(Input=volume_port), "Clip": pvs.Clip(Input=volume_port)}
+    threshold = pvs.Threshold(Input=volume_port)
+    threshold.Scalars = ["POINTS", "phi"]
+    threshold.LowerThreshold = 0.0
+    threshold.UpperThreshold = 1.0
+    downstream["Threshold"] = threshold
+    contour = pvs.Contour(Input=volume_port)
+    contour.ContourBy = ["POINTS", "phi"]
+    contour.Isosurfaces = [0.0]
+    downstream["Contour"] = contour
+    downstream["ResampleToImage"] = pvs.ResampleToImage(Input=volume_port)
+    downstream["PlotOverLine"] = pvs.PlotOverLine(Input=volume_port)
+    for name, proxy in downstream.items():
+        Show(proxy, view)
+        information = proxy.GetDataInformation()
+        phi_range = proxy.PointData["phi"].GetRange() if "phi" in proxy.PointData.keys() else None
+        result["downstream_" + name] = {"points": information.GetNumberOfPoints(),
+                                        "cells": information.GetNumberOfCells(), "phi_range": phi_range}
+    Render(view)
     result["ok"] = True
 except Exception:  # reported to the test, which fails on it
     result["error"] = traceback.format_exc()

@@ -3,8 +3,9 @@
 """Run by test_mpi.py under `mpiexec -np N pvbatch --symmetric`: the plain VTK
 filter (no ParaView proxies) on every rank, each rank holding a different
 share of the cloud, updated as piece `rank` of N with 2 ghost levels. Each
-rank checks its piece against a serial run of the filter (SetController(None))
-and prints FAILED lines for the test to catch.
+rank checks the grid its information pass declares (UpdateInformation, before
+the run) and its piece against a serial run of the filter
+(SetController(None)), and prints FAILED lines for the test to catch.
 
     mpi_vtk_script.py CLOUD
 """
@@ -12,7 +13,9 @@ import sys
 
 import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkCommonDataModel import vtkDataSetAttributes
+from vtkmodules.vtkCommonCore import VTK_FLOAT
+from vtkmodules.vtkCommonDataModel import vtkDataObject, vtkDataSetAttributes
+from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline as sddp
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 from vtkmodules.vtkParallelCore import vtkMultiProcessController
 
@@ -35,16 +38,31 @@ def shell(points, distributed):
     f.SetMaximumDimension(70)
     if not distributed:
         f.SetController(None)
+    # The information pass first: the grid port 0 declares before the run.
+    f.UpdateInformation()
+    info = f.GetOutputInformation(0)
+    scalars = vtkDataObject.GetActiveFieldInformation(info, vtkDataObject.FIELD_ASSOCIATION_POINTS,
+                                                      vtkDataSetAttributes.SCALARS)
+    declared = (tuple(info.Get(sddp.WHOLE_EXTENT())), tuple(info.Get(vtkDataObject.ORIGIN())),
+                tuple(info.Get(vtkDataObject.SPACING())),
+                scalars.Get(vtkDataObject.FIELD_ARRAY_TYPE()) if scalars else None)
     f.UpdatePiece(rank, size, 2)
-    return f
+    return f, declared
 
 
 # Rank r holds the points with index = r (mod size), sorted by x: pieces
 # that overlap in space and do not follow the z slabs.
 share = xyz[rank::size]
 share = share[np.argsort(share[:, 0])]
-piece = shell(share, True).GetVolumeOutput()
-whole = shell(xyz, False).GetVolumeOutput()
+distributed, declared = shell(share, True)
+alone, declared_alone = shell(xyz, False)
+piece, whole = distributed.GetVolumeOutput(), alone.GetVolumeOutput()
+# Every rank's information pass, from its own share of the points, declares
+# the grid of the serial run's data.
+print("rank %d: information pass: whole extent %s, origin %s, spacing %s, scalar type %s" % ((rank,) + declared))
+t.check(declared == (tuple(whole.GetExtent()), tuple(whole.GetOrigin()), tuple(whole.GetSpacing()), VTK_FLOAT),
+        "rank %d: the information pass declares the serial grid" % rank)
+t.check(declared_alone == declared, "rank %d: the same as a serial information pass" % rank)
 nx, ny, nz = whole.GetDimensions()
 extent = piece.GetExtent()
 print("rank %d: piece extent %s of %s" % (rank, extent, whole.GetExtent()))

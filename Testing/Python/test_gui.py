@@ -2,7 +2,10 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """The real ParaView client under Xvfb: loads the plugin, opens the demo
 cloud, applies Narrow Volume Reconstruction with the panel's defaults and
-shows both outputs; the screenshot must show the shell.
+shows both outputs; the screenshot must show the shell. The Volume's grid is
+declared in the information pass, before the run, and ParaView's Slice,
+Clip, Threshold, Contour, Resample To Image and Plot Over Line applied to the
+Volume output give points and cells.
 
     pvpython test_gui.py PLUGIN CLOUD WITH_XVFB
 """
@@ -36,6 +39,23 @@ if os.path.exists(env["NV_GUI_RESULT"]):
     t.check(result.get("surface_cells", 0) > 10000, "surface computed with the panel's defaults")
     t.check(result.get("volume_points", 0) > 100000, "volume computed")
     t.check(result.get("cloud_visible"), "the input points stay visible")
+    # The information pass declared the grid the run produced.
+    declared = result.get("info_whole_extent")
+    t.check(declared is not None and declared[::2] == [0, 0, 0] and min(declared[1::2]) > 10 and
+            result.get("points_before_run") == 0, "the information pass declares a grid before the run: %s"
+            % (declared,))
+    t.check(declared == result.get("volume_extent"), "the run's extent is the declared one: %s"
+            % result.get("volume_extent"))
+    # ParaView's filters applied to the Volume output.
+    for name in ("Slice", "Clip", "Threshold", "Contour", "ResampleToImage", "PlotOverLine"):
+        counts = result.get("downstream_" + name) or {}
+        phi_range = counts.get("phi_range") or [2.0, -2.0]  # phi missing: fails the range check
+        print("%s on the Volume: %s points, %s cells, phi in %s" % (name, counts.get("points"), counts.get("cells"),
+                                                                    phi_range))
+        t.check(counts.get("points", 0) > 0 and counts.get("cells", 0) > 0, "%s on the Volume: points and cells" % name)
+        t.check(-1.0 <= phi_range[0] <= phi_range[1] <= 1.0, "%s on the Volume: phi in [-1, 1]" % name)
+    t.check(((result.get("downstream_Threshold") or {}).get("phi_range") or [-1])[0] >= 0.0,
+            "Threshold on the Volume: phi >= 0")
     png = vtkPNGReader()
     png.SetFileName(env["NV_SCREENSHOT"])
     png.Update()

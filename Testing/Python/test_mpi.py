@@ -1,17 +1,22 @@
 # SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
 # SPDX-License-Identifier: BSD-3-Clause
-"""pvbatch under MPI gives the serial result. With 1, 2 and 4 ranks, the cloud
-split unevenly between them (one rank empty), the filter runs distributed
-(mpi_script.py) and ParaView's parallel writers save one piece per rank. Here
-the pieces are read back and compared with a serial run of the same filter:
-phi equal to the Gauss-Seidel tolerance on every node, and the surface made of
-the pieces closed (no cracks, no duplicate triangles at the seams) with the
-serial area and triangles. Also with OutputVolume off (surface by slabs), the
-plain VTK filter with 3 ranks and ghost levels, pvserver with a pvpython
-client, and the example script.
-(The pieces are read one by one: ParaView's .pvti header gets the first
-piece's extent as the whole extent, see the README.)"""
+"""pvbatch under MPI gives the serial result. With 1, 2, 3 and 4 ranks, the
+cloud split unevenly between them (one rank empty), the filter runs
+distributed (mpi_script.py) and ParaView's parallel writers save one piece per
+rank. Every rank's information pass declares the serial grid before the run.
+Here the files are read back and compared with a serial run of the same
+filter: the .pvti, read whole, has the serial grid (its header's whole extent
+as SaveData wrote it) and phi equal to the Gauss-Seidel tolerance on every
+node; the surface made of the pieces is closed (no cracks, no duplicate
+triangles at the seams) with the serial area and triangles; ParaView's Slice,
+Clip, Threshold, Contour, ResampleToImage and PlotOverLine on the distributed
+volume give the cells of the 1-rank run. Also with OutputVolume off (surface
+by slabs), the plain VTK filter with 3 ranks and ghost levels, pvserver with
+a pvpython client, and the example script."""
+import ast
 import json
+import re
+import xml.etree.ElementTree as ElementTree
 import os
 import socket
 import subprocess
@@ -50,7 +55,12 @@ print("serial: grid %s, %d band nodes, %d triangles, %d open edges, area %.6f"
       % (serial_dims, serial.GetNumberOfBandNodes(), s_triangles, s_open, s_area))
 t.check(s_open == 0 and s_triangles > 1000, "the serial surface is closed")
 
-for ranks, output_volume in ((1, 1), (2, 1), (4, 1), (4, 0)):
+serial_extent = (0, serial_dims[0] - 1, 0, serial_dims[1] - 1, 0, serial_dims[2] - 1)
+serial_origin, serial_spacing = serial.GetVolumeOutput().GetOrigin(), serial.GetVolumeOutput().GetSpacing()
+declared = re.compile(r"information pass, rank (\d+) of (\d+): whole extent (\(.*?\)), origin (\(.*?\)), "
+                      r"spacing (\(.*?\)), scalar type (\w+), points (\d+)")
+downstream_reference = None
+for ranks, output_volume in ((1, 1), (2, 1), (3, 1), (4, 1), (4, 0)):
     out = tempfile.mkdtemp()
     command = ["mpiexec", "--allow-run-as-root", "--oversubscribe", "-np", str(ranks), "pvbatch",
                os.path.join(here, "mpi_script.py"), plugin, out, cloud, str(output_volume)]
@@ -59,6 +69,17 @@ for ranks, output_volume in ((1, 1), (2, 1), (4, 1), (4, 0)):
     if not t.check(run.returncode == 0 and os.path.exists(out + "/surface.pvtp"), "%s ran: %s" % (
             label, nvtesting.explain(run))):
         continue
+    # The information pass: every rank declares the serial grid, float
+    # scalars (VTK_FLOAT = 10), before the filter has run (no points yet).
+    passes = {int(m.group(1)): m for m in declared.finditer(run.stdout)}
+    print("%s: information pass on ranks %s: whole extent %s" % (
+        label, sorted(passes), sorted({m.group(3) for m in passes.values()})))
+    t.check(sorted(passes) == list(range(ranks)) and all(int(m.group(2)) == ranks for m in passes.values()),
+            "%s: every rank ran the information pass" % label)
+    for rank, m in sorted(passes.items()):
+        t.check(ast.literal_eval(m.group(3)) == serial_extent and ast.literal_eval(m.group(4)) == serial_origin and
+                ast.literal_eval(m.group(5)) == serial_spacing and m.group(6) == "10" and m.group(7) == "0",
+                "%s: rank %d declares the serial grid before the run: %s" % (label, rank, m.group(0)))
     surface_reader = vtkXMLPPolyDataReader()
     surface_reader.SetFileName(out + "/surface.pvtp")
     surface_reader.Update()
@@ -69,37 +90,62 @@ for ranks, output_volume in ((1, 1), (2, 1), (4, 1), (4, 0)):
     t.check(open_edges == 0, "%s: the merged surface is closed (%d open edges)" % (label, open_edges))
     t.check(triangles == s_triangles, "%s: serial triangles (%d vs %d)" % (label, triangles, s_triangles))
     t.check(abs(area - s_area) <= 1e-6 * s_area, "%s: serial area (%.9f vs %.9f)" % (label, area, s_area))
-    if output_volume:
-        # phi, piece by piece: each piece file holds its extent of the grid.
-        phi = np.full(serial_phi.shape, np.nan)
-        nx, ny, nz = serial_dims
-        slabs = []
-        for index in range(ranks):
-            piece_reader = vtkXMLImageDataReader()
-            piece_reader.SetFileName("%s/phi/phi_%d.vti" % (out, index))
-            piece_reader.Update()
-            piece = piece_reader.GetOutput()
-            extent = piece.GetExtent()
-            if piece.GetNumberOfPoints() == 0:
-                continue
-            t.check(extent[:4] == (0, nx - 1, 0, ny - 1), "%s: piece %d spans x and y" % (label, index))
-            slabs.append(extent[4:])
-            values = vtk_to_numpy(piece.GetPointData().GetArray("phi"))
-            phi[extent[4] * nx * ny:(extent[5] + 1) * nx * ny] = values
-            band = piece.GetFieldData().GetArray("NarrowBandNodes").GetValue(0)
-            t.check(band == serial.GetNumberOfBandNodes(), "%s: the serial band (%d nodes)" % (label, band))
-        # The work was shared: one slab of z layers per rank, each starting
-        # where the one below ends (the layer they share).
-        print("%s: slabs %s" % (label, slabs))
-        t.check(len(slabs) == ranks and slabs[0][0] == 0 and slabs[-1][1] == nz - 1 and
-                all(slabs[i][1] == slabs[i + 1][0] for i in range(len(slabs) - 1)),
-                "%s: one slab per rank, tiling z" % label)
-        covered = not np.isnan(phi).any()
-        t.check(covered, "%s: the pieces cover the grid" % label)
-        if covered:
-            difference = float(np.max(np.abs(phi - serial_phi)))
-            print("%s: max |phi - serial phi| = %.3g" % (label, difference))
-            t.check(difference <= 1e-6, "%s: phi equals the serial phi to the Gauss-Seidel tolerance" % label)
+    if not output_volume:
+        continue
+    # The .pvti as SaveData wrote it: the serial whole extent, origin and
+    # spacing in its header, one piece per rank, each a slab of z layers
+    # starting where the one below ends (the layer they share).
+    header = ElementTree.parse(out + "/phi.pvti").getroot().find("PImageData")
+    whole = tuple(int(v) for v in header.get("WholeExtent").split())
+    slabs = [tuple(int(v) for v in piece.get("Extent").split()) for piece in header.findall("Piece")]
+    print("%s: .pvti whole extent %s, pieces %s" % (label, whole, [piece[4:] for piece in slabs]))
+    t.check(whole == serial_extent, "%s: the .pvti's whole extent is the serial grid's (%s)" % (label, whole))
+    t.check(np.allclose([float(v) for v in header.get("Origin").split()], serial_origin, rtol=0, atol=1e-12) and
+            np.allclose([float(v) for v in header.get("Spacing").split()], serial_spacing, rtol=0, atol=1e-15),
+            "%s: the .pvti's origin and spacing are the serial grid's" % label)
+    t.check(len(slabs) == ranks and all(piece[:4] == serial_extent[:4] for piece in slabs) and slabs[0][4] == 0 and
+            slabs[-1][5] == serial_extent[5] and all(slabs[i][5] == slabs[i + 1][4] for i in range(len(slabs) - 1)),
+            "%s: one slab per rank, tiling z" % label)
+    # Read whole, as any reader of a .pvti does.
+    volume_reader = vtkXMLPImageDataReader()
+    volume_reader.SetFileName(out + "/phi.pvti")
+    volume_reader.Update()
+    volume = volume_reader.GetOutput()
+    t.check(tuple(volume.GetExtent()) == serial_extent and volume.GetNumberOfPoints() == len(serial_phi),
+            "%s: the .pvti reads back as the serial grid (%s)" % (label, volume.GetExtent()))
+    phi_array = volume.GetPointData().GetArray("phi")
+    if t.check(phi_array is not None and phi_array.GetNumberOfTuples() == len(serial_phi),
+               "%s: the .pvti holds phi on every node" % label):
+        difference = float(np.max(np.abs(vtk_to_numpy(phi_array) - serial_phi)))
+        print("%s: max |phi - serial phi| = %.3g" % (label, difference))
+        t.check(difference <= 1e-6, "%s: phi equals the serial phi to the Gauss-Seidel tolerance" % label)
+    band = volume.GetFieldData().GetArray("NarrowBandNodes")
+    t.check(band is not None and band.GetValue(0) == serial.GetNumberOfBandNodes(),
+            "%s: the serial band (%d nodes)" % (label, band.GetValue(0) if band else -1))
+    # ParaView's filters on the distributed volume: the cells of the 1-rank
+    # run (each slab brings its own cells; the node layer two slabs share
+    # counts once per slab in points, never in cells), the same phi range;
+    # the contour is the serial surface (see test_pipeline_pvpython.py: no
+    # node has phi exactly 0 here).
+    downstream = json.load(open(out + "/downstream.json")) if os.path.exists(out + "/downstream.json") else {}
+    print("%s: downstream %s" % (label, ", ".join("%s %d points %d cells" % (name, d["points"], d["cells"])
+                                                  for name, d in downstream.items())))
+    t.check(len(downstream) == 6 and all(d["cells"] > 0 and -1.0 <= d["phi_range"][0] <= d["phi_range"][1] <= 1.0
+                                         for d in downstream.values()),
+            "%s: Slice, Clip, Threshold, Contour, ResampleToImage, PlotOverLine give cells, phi in [-1, 1]" % label)
+    if len(downstream) == 6:
+        t.check(downstream["Contour"]["cells"] == s_triangles and np.count_nonzero(serial_phi == 0) == 0,
+                "%s: Contour phi = 0 gives the serial surface's triangles" % label)
+        t.check(downstream["Threshold"]["phi_range"][0] >= 0.0, "%s: Threshold keeps phi >= 0" % label)
+        t.check(downstream["PlotOverLine"]["points"] == 1001, "%s: PlotOverLine samples the line once" % label)
+        if downstream_reference is None:
+            downstream_reference = downstream
+        for name, d in downstream.items():
+            reference = downstream_reference[name]
+            t.check(d["cells"] == reference["cells"] and
+                    np.allclose(d["phi_range"], reference["phi_range"], rtol=0, atol=1e-6),
+                    "%s: %s gives the 1-rank run's cells and phi range (%d vs %d)" % (
+                        label, name, d["cells"], reference["cells"]))
 # The plain VTK filter under MPI, updated piece by piece with ghost levels
 # (mpi_vtk_script.py checks each rank's piece against a serial run).
 command = ["mpiexec", "--allow-run-as-root", "--oversubscribe", "-np", "3", "env",
@@ -143,7 +189,7 @@ except subprocess.TimeoutExpired:
     server.kill()
 
 # The example script, as a user runs it: with 2 ranks it writes a .pvti that
-# reads back as the serial .vti.
+# reads back as the serial .vti (the file as SaveData wrote it).
 example = os.path.join(here, "..", "..", "examples", "reconstruct.py")
 volumes = {}
 for ranks in (1, 2):
