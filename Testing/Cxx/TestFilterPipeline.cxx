@@ -8,7 +8,7 @@
 // on that grid implies.
 #include "vtkNarrowVolumeReconstruction.h"
 
-#include "nvTestUtilities.h"
+#include "nvTestClouds.h"
 
 #include <vtkCellArray.h>
 #include <vtkDataArray.h>
@@ -65,14 +65,7 @@ double PhiAt(vtkImageData* volume, int i, int j, int k)
 
 int main()
 {
-  const std::vector<double> xyz = nvtest::SpherePoints(6000, Radius, Center);
-  vtkNew<vtkPoints> points;
-  for (std::size_t p = 0; p < xyz.size(); p += 3)
-  {
-    points->InsertNextPoint(&xyz[p]);
-  }
-  vtkNew<vtkPolyData> cloud;
-  cloud->SetPoints(points);
+  const auto cloud = nvtest::SphereCloud<vtkPolyData>(6000, Radius, Center);
 
   vtkNew<vtkNarrowVolumeReconstruction> filter;
   filter->SetInputData(cloud);

@@ -5,7 +5,7 @@
 // normals pointing out of the shell.
 #include "vtkNarrowVolumeReconstruction.h"
 
-#include "nvTestUtilities.h"
+#include "nvTestClouds.h"
 
 #include <vtkCellArray.h>
 #include <vtkDataArray.h>
@@ -113,15 +113,8 @@ void CheckVolume(vtkNarrowVolumeReconstruction* filter)
 
 int main()
 {
-  const std::vector<double> xyz = nvtest::SpherePoints(6000, Radius, Center);
-  vtkNew<vtkPoints> points;
-  for (std::size_t p = 0; p < xyz.size(); p += 3)
-  {
-    points->InsertNextPoint(&xyz[p]);
-  }
   // Any vtkPointSet: an unstructured grid with points and no cells.
-  vtkNew<vtkUnstructuredGrid> cloud;
-  cloud->SetPoints(points);
+  const auto cloud = nvtest::SphereCloud<vtkUnstructuredGrid>(6000, Radius, Center);
 
   vtkNew<vtkNarrowVolumeReconstruction> filter;
   filter->SetInputData(cloud);
