@@ -102,7 +102,19 @@ std::vector<double> PointsOf(vtkPointSet* input)
   return xyz;
 }
 
-/// A float array of `nodes` values named `name`, attached to the volume.
+/// MemoryLimit (MiB; 0: half the physical memory) in bytes.
+double MemoryLimitBytes(double limitMiB)
+{
+  if (limitMiB <= 0.0)
+  {
+    vtksys::SystemInformation info;
+    info.RunMemoryCheck();
+    limitMiB = 0.5 * static_cast<double>(info.GetTotalPhysicalMemory());
+  }
+  return limitMiB * 1048576.0;
+}
+
+/// An array of `nodes` values named `name`, attached to the volume; its values.
 template <class ArrayType>
 auto* AddArray(vtkImageData* volume, const char* name, vtkIdType nodes)
 {
@@ -215,14 +227,6 @@ nv::Settings vtkNarrowVolumeReconstruction::GetSettings() const
   settings.GaussSeidelTolerance = this->GaussSeidelTolerance;
   settings.Mode = this->Domain == WHOLE_DOMAIN ? nv::Domain::WholeDomain : nv::Domain::NarrowBand;
   settings.EdgeFunction = this->EdgeStoppingFunction == EQUATION_3 ? nv::EdgeStopping::Eq3 : nv::EdgeStopping::Eq4;
-  double limitMiB = this->MemoryLimit;
-  if (limitMiB <= 0.0)
-  {
-    vtksys::SystemInformation info;
-    info.RunMemoryCheck();
-    limitMiB = 0.5 * static_cast<double>(info.GetTotalPhysicalMemory());
-  }
-  settings.MemoryLimitBytes = limitMiB * 1048576.0;
   // phi, the optional arrays, and the isosurfacer's working memory.
   settings.OutputBytesPerNode = this->OutputVolume ? 4.0 + (this->OutputInitialPhi ? 4.0 : 0.0) +
       (this->OutputDistance ? 4.0 : 0.0) + (this->OutputNarrowBand ? 1.0 : 0.0) + 2.0
@@ -339,7 +343,9 @@ int vtkNarrowVolumeReconstruction::RequestData(
   bool ok = false;
   vtkSMPTools::LocalScope(vtkSMPTools::Config{ this->NumberOfThreads, backend, false }, [&]() {
     FilterMonitor monitor(this);
-    nv::Reconstruction run(this->GetSettings(), communicator.get(), &monitor);
+    nv::Settings settings = this->GetSettings();
+    settings.MemoryLimitBytes = MemoryLimitBytes(this->MemoryLimit);
+    nv::Reconstruction run(settings, communicator.get(), &monitor);
     if (!run.Run(PointsOf(vtkPointSet::GetData(inputVector[0], 0))))
     {
       if (!run.Error().empty())

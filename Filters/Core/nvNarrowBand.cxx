@@ -6,7 +6,6 @@
 #include "nvTruncatedDistance.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 
 namespace nv

@@ -3,7 +3,7 @@
 // Bad input gets a clear error, an empty output and no crash.
 #include "vtkNarrowVolumeReconstruction.h"
 
-#include "nvTestUtilities.h"
+#include "nvTestClouds.h"
 
 #include <vtkCommand.h>
 #include <vtkImageData.h>
@@ -33,14 +33,7 @@ public:
 
 vtkSmartPointer<vtkPolyData> Cloud(const std::vector<double>& xyz)
 {
-  vtkNew<vtkPoints> points;
-  for (std::size_t p = 0; p < xyz.size(); p += 3)
-  {
-    points->InsertNextPoint(&xyz[p]);
-  }
-  auto cloud = vtkSmartPointer<vtkPolyData>::New();
-  cloud->SetPoints(points);
-  return cloud;
+  return nvtest::Cloud<vtkPolyData>(xyz);
 }
 
 /// Runs the filter and checks it reported an error containing `expected`

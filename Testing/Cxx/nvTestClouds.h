@@ -14,11 +14,10 @@
 namespace nvtest
 {
 
-/// n points spread over a sphere, as a point set of type DataSet (points, no cells).
+/// xyz triples as a point set of type DataSet (points, no cells).
 template <class DataSet>
-vtkSmartPointer<DataSet> SphereCloud(int n, double radius, const double center[3])
+vtkSmartPointer<DataSet> Cloud(const std::vector<double>& xyz)
 {
-  const std::vector<double> xyz = SpherePoints(n, radius, center);
   vtkNew<vtkPoints> points;
   for (std::size_t p = 0; p < xyz.size(); p += 3)
   {
@@ -27,6 +26,13 @@ vtkSmartPointer<DataSet> SphereCloud(int n, double radius, const double center[3
   auto cloud = vtkSmartPointer<DataSet>::New();
   cloud->SetPoints(points);
   return cloud;
+}
+
+/// n points spread over a sphere, as a point set of type DataSet.
+template <class DataSet>
+vtkSmartPointer<DataSet> SphereCloud(int n, double radius, const double center[3])
+{
+  return Cloud<DataSet>(SpherePoints(n, radius, center));
 }
 
 } // namespace nvtest
