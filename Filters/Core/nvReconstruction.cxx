@@ -83,6 +83,7 @@ Plan MakePlan(const Settings& settings, const double bounds[6])
   parameters.GaussSeidelTolerance = settings.GaussSeidelTolerance;
   parameters.Mode = settings.Mode;
   parameters.EdgeFunction = settings.EdgeFunction;
+  parameters.PreserveOffset = settings.PreserveOffset;
   parameters.Spacing = settings.SampleSpacing > 0.0
     ? settings.SampleSpacing
     : SpacingForMaximumDimension(bounds, settings.OffsetDistance, settings.XiCells, settings.MaximumDimension);
