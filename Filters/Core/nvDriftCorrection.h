@@ -30,14 +30,14 @@ public:
   /**
    * After a step (10)-(12): measures how the step moved the sheets, from
    * phi = phi^{n+1} and previous = phi^n (the right-hand side of (10)).
-   * coupling: the per-node w = c / (1 + 6 c) of the solver, c = dt g / h^2.
+   * coupling: the solver's w = c / (1 + 6 c) per node, c = dt g / h^2.
    */
   void Measure(const double* phi, const double* previous, const double* coupling);
 
   /**
-   * Before the next step's (10): moves the sheets back by what the last
-   * measured step moved them (in place; owned nodes, then the ghost nodes
-   * are refreshed). Does nothing before the first measurement.
+   * Before the next step's (10): moves the sheets back by what the measured
+   * step moved them (in place; owned nodes, then the ghost nodes are
+   * refreshed). Does nothing before the first measurement.
    */
   void Correct(double* phi, const double* coupling);
 
@@ -45,16 +45,13 @@ private:
   bool Applies() const;
   /// The band's bricks in the owned layers: band.Bricks[first, last).
   void OwnedBricks(std::int64_t& first, std::int64_t& last) const;
-  /// The kernel sums at every corner of the owned bricks, from the brick sums.
-  void SumCorners();
 
   const NarrowBand& Band;
   Halo* Exchange;
   std::array<std::int64_t, 3> BrickDims{ { 0, 0, 0 } };
-  std::array<std::int64_t, 3> CornerDims{ { 0, 0, 0 } }; ///< corners of the owned bricks
-  LayerRange Layers;              ///< brick layers with sums: the owned ones and their ghosts
-  std::vector<double> BrickSums;  ///< 4 per brick of Layers (see SumsPerBrick in the .cxx)
-  std::vector<double> CornerSums; ///< 4 per corner
+  LayerRange Layers;             ///< brick layers with sums: the owned ones and their ghosts
+  std::vector<double> BrickSums; ///< per brick of Layers: sum of r G (3), sum of g |G|^2
+  std::vector<double> Mu;        ///< per owned band brick: the multiplier mu (3)
   bool Measured = false;
 };
 
