@@ -15,6 +15,7 @@ and repeatable, whatever the load.
 import argparse
 import os
 import re
+import shutil
 import subprocess
 import sys
 
@@ -87,7 +88,7 @@ for name, label in cases:
         counts, nodes = {}, 0
         for preserve in (0, 1):
             command = ["valgrind", "--tool=callgrind", "--callgrind-out-file=/dev/null",
-                       "--toggle-collect=nv::AllenCahnSolver::Run(nv::Monitor*)", sys.executable,
+                       "--toggle-collect=nv::AllenCahnSolver::Run(nv::Monitor*)", shutil.which("pvpython"),
                        os.path.abspath(__file__), "--steps", str(args.steps), "--scans", args.scans,
                        "--child", name, str(preserve)]
             child = subprocess.run(command, capture_output=True, text=True)
