@@ -392,6 +392,16 @@ bool nv::pcd::ParseAsciiValue(const std::string& text, const Field& field, std::
   const char* begin = text.c_str();
   char* end = nullptr;
   errno = 0;
+  const bool packedColor = (field.Name == "rgb" || field.Name == "rgba") && field.Size == 4;
+  if (field.Type == 'F' && packedColor && !text.empty() &&
+    text.find_first_not_of("0123456789") == std::string::npos)
+  {
+    // PCL writes the packed colour of its float "rgb" field as the unsigned
+    // integer of its bits in ascii files (opaque colours are NaN as floats).
+    Field asInteger = field;
+    asInteger.Type = 'U';
+    return ParseAsciiValue(text, asInteger, destination);
+  }
   if (field.Type == 'F')
   {
     const double value = std::strtod(begin, &end);

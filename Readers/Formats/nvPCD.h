@@ -100,7 +100,9 @@ bool CheckCompressedSizes(const Header& header, std::uint64_t compressedSize,
 
 /// Parses one ASCII value of `field` ("1.5", "-3", "nan", ...) into its
 /// binary form (field.Size bytes, machine byte order) at `destination`.
-/// False if the text is not a number of the field's type and range.
+/// False if the text is not a number of the field's type and range. A
+/// float "rgb" / "rgba" field written as a whole number (as PCL does in
+/// ascii files) holds the bits of the packed colour.
 bool ParseAsciiValue(const std::string& text, const Field& field, std::uint8_t* destination);
 
 /// One binary value of `field` (field.Size bytes at `value`) as a double.
