@@ -14,7 +14,7 @@
 namespace nv
 {
 
-RemovedPieces RemoveSmallSurfacePieces(vtkPolyData* surface, double offset)
+RemovedPieces RemoveSmallSurfacePieces(vtkPolyData* surface, double offset, std::vector<DroppedPart>* dropped)
 {
   RemovedPieces removed;
   vtkPoints* points = surface ? surface->GetPoints() : nullptr;
@@ -96,6 +96,19 @@ RemovedPieces RemoveSmallSurfacePieces(vtkPolyData* surface, double offset)
   if (removed.Pieces + removed.Voids == 0)
   {
     return removed;
+  }
+  if (dropped)
+  {
+    for (vtkIdType r = 0; r < numberOfPoints; ++r)
+    {
+      if (drop[r])
+      {
+        DroppedPart part;
+        points->GetPoint(r, part.Vertex.data()); // the root is one of the part's vertices
+        part.Piece = volume[r] > 0.0;
+        dropped->push_back(part);
+      }
+    }
   }
 
   // The kept triangles, and only the points they use.

@@ -439,7 +439,8 @@ bool vtkNarrowVolumeReconstruction::ProduceOutputs(nv::Reconstruction& run, nv::
       run.GetParameters(), &monitor, run.PieceBegin(), run.PieceEnd()));
     if (this->RemoveSmallPieces && !distributed && !monitor.Aborted())
     {
-      const nv::RemovedPieces removed = nv::RemoveSmallSurfacePieces(surface, run.GetParameters().OffsetDistance);
+      const nv::RemovedPieces removed =
+        nv::RemoveSmallSurfacePieces(surface, run.GetParameters().OffsetDistance, nullptr);
       this->RemovedPieces = removed.Pieces;
       this->RemovedVoids = removed.Voids;
     }
@@ -487,12 +488,6 @@ bool vtkNarrowVolumeReconstruction::ProduceOutputs(nv::Reconstruction& run, nv::
       static_cast<int>(run.PieceBegin()), static_cast<int>(run.PieceEnd() - 1) };
     volume->GenerateGhostArray(piece);
   }
-  if (this->RemoveSmallPieces && !distributed)
-  {
-    const nv::RemovedPieces removed = nv::RemoveSmallPieces(grid, arrays.Phi, run.GetParameters().OffsetDistance);
-    this->RemovedPieces = removed.Pieces;
-    this->RemovedVoids = removed.Voids;
-  }
 
   // Output 1: the phi = 0 surfaces of the piece (without its ghost layers),
   // all or some of them. Choosing sheets works on a copy: phi stays phi.
@@ -524,6 +519,20 @@ bool vtkNarrowVolumeReconstruction::ProduceOutputs(nv::Reconstruction& run, nv::
     }
   }
   surface->ShallowCopy(nv::ExtractSurface(grid, contoured, run.PieceBegin(), run.PieceEnd(), &monitor));
+  if (this->RemoveSmallPieces && !distributed && !monitor.Aborted())
+  {
+    // The surface's small parts go, and phi follows in the same regions.
+    const double offset = run.GetParameters().OffsetDistance;
+    std::vector<nv::DroppedPart> dropped;
+    const nv::RemovedPieces removed = nv::RemoveSmallSurfacePieces(surface, offset, &dropped);
+    this->RemovedPieces = removed.Pieces;
+    this->RemovedVoids = removed.Voids;
+    for (const nv::DroppedPart& part : dropped)
+    {
+      nv::FlipRegion(grid, arrays.Phi, volumeBegin, volumeEnd - volumeBegin, part.Vertex.data(), part.Piece,
+        2.0 * (part.Piece ? nv::SmallPieceVolume(offset) : nv::SmallVoidVolume(offset)));
+    }
+  }
   return !monitor.Aborted();
 }
 

@@ -2,8 +2,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "nvPieces.h"
 
+#include <algorithm>
 #include <cmath>
-#include <deque>
+#include <unordered_set>
 #include <vector>
 
 namespace nv
@@ -20,99 +21,70 @@ double SmallVoidVolume(double offset)
   return 4.0 / 3.0 * M_PI * offset * offset * offset;
 }
 
-RemovedPieces RemoveSmallPieces(const Grid& grid, float* phi, double offset)
+bool FlipRegion(const Grid& grid, float* phi, std::int64_t kBegin, std::int64_t layers, const double point[3],
+  bool inside, double maximumVolume)
 {
-  const std::int64_t nx = grid.Dims[0], ny = grid.Dims[1], nz = grid.Dims[2];
-  const std::int64_t nodes = grid.NumberOfNodes();
-  const double cell = grid.Spacing * grid.Spacing * grid.Spacing;
-  const std::int64_t pieceNodes = static_cast<std::int64_t>(SmallPieceVolume(offset) / cell);
-  const std::int64_t voidNodes = static_cast<std::int64_t>(SmallVoidVolume(offset) / cell);
-
-  // Breadth-first search of each region of one sign. The queue holds only
-  // the front of the search; the region's nodes are kept while it is still
-  // small enough to be removed.
-  std::vector<unsigned char> visited(static_cast<std::size_t>(nodes), 0);
-  std::deque<std::int64_t> front;
-  std::vector<std::int64_t> region;
-  // The small regions found: their nodes, one after the other.
-  struct Small
+  const std::int64_t nx = grid.Dims[0], ny = grid.Dims[1];
+  auto sideOf = [&](std::int64_t n) { return phi[n] > 0.0f; };
+  // The seed: the corner of the point's cell on the region's side, nearest to it.
+  std::int64_t cell[3];
+  for (int a = 0; a < 3; ++a)
   {
-    bool Inside;
-    std::size_t First, Size;
-  };
-  std::vector<Small> smalls;
-  std::vector<std::int64_t> smallNodes;
-  bool largePiece = false;
-  for (std::int64_t seed = 0; seed < nodes; ++seed)
+    const std::int64_t extent = a == 2 ? layers : grid.Dims[a];
+    const double x = (point[a] - grid.Origin[a]) / grid.Spacing - (a == 2 ? kBegin : 0);
+    cell[a] = std::min<std::int64_t>(std::max<std::int64_t>(static_cast<std::int64_t>(std::floor(x)), 0), extent - 2);
+  }
+  std::int64_t seed = -1;
+  double nearest = 1e300;
+  for (int corner = 0; corner < 8; ++corner)
   {
-    if (visited[seed])
+    const std::int64_t ijk[3] = { cell[0] + (corner & 1), cell[1] + ((corner >> 1) & 1), cell[2] + (corner >> 2) };
+    const std::int64_t n = ijk[0] + nx * (ijk[1] + ny * ijk[2]);
+    double d2 = 0.0;
+    for (int a = 0; a < 3; ++a)
     {
-      continue;
+      const double x = grid.Origin[a] + (ijk[a] + (a == 2 ? kBegin : 0)) * grid.Spacing - point[a];
+      d2 += x * x;
     }
-    const bool inside = phi[seed] > 0.0f;
-    const std::int64_t limit = inside ? pieceNodes : voidNodes;
-    bool boundary = false;
-    std::int64_t size = 0;
-    region.clear();
-    visited[seed] = 1;
-    front.push_back(seed);
-    while (!front.empty())
+    if (sideOf(n) == inside && d2 < nearest)
     {
-      const std::int64_t n = front.front();
-      front.pop_front();
-      ++size;
-      if (size <= limit)
+      nearest = d2;
+      seed = n;
+    }
+  }
+  if (seed < 0)
+  {
+    return false;
+  }
+  // Breadth-first search of the region, given up beyond maximumVolume.
+  const std::int64_t limit =
+    static_cast<std::int64_t>(maximumVolume / (grid.Spacing * grid.Spacing * grid.Spacing)) + 1;
+  std::vector<std::int64_t> region{ seed };
+  std::unordered_set<std::int64_t> visited{ seed };
+  for (std::size_t head = 0; head < region.size(); ++head)
+  {
+    if (static_cast<std::int64_t>(region.size()) > limit)
+    {
+      return false;
+    }
+    const std::int64_t n = region[head];
+    const std::int64_t i = n % nx, j = (n / nx) % ny, k = n / (nx * ny);
+    const std::int64_t neighbours[6] = { i > 0 ? n - 1 : -1, i < nx - 1 ? n + 1 : -1, j > 0 ? n - nx : -1,
+      j < ny - 1 ? n + nx : -1, k > 0 ? n - nx * ny : -1, k < layers - 1 ? n + nx * ny : -1 };
+    for (std::int64_t m : neighbours)
+    {
+      if (m >= 0 && sideOf(m) == inside && visited.insert(m).second)
       {
-        region.push_back(n);
-      }
-      const std::int64_t i = n % nx, j = (n / nx) % ny, k = n / (nx * ny);
-      boundary = boundary || i == 0 || j == 0 || k == 0 || i == nx - 1 || j == ny - 1 || k == nz - 1;
-      const std::int64_t neighbours[6] = { i > 0 ? n - 1 : -1, i < nx - 1 ? n + 1 : -1, j > 0 ? n - nx : -1,
-        j < ny - 1 ? n + nx : -1, k > 0 ? n - nx * ny : -1, k < nz - 1 ? n + nx * ny : -1 };
-      for (std::int64_t m : neighbours)
-      {
-        if (m >= 0 && !visited[m] && (phi[m] > 0.0f) == inside)
-        {
-          visited[m] = 1;
-          front.push_back(m);
-        }
+        region.push_back(m);
       }
     }
-    // The exterior (a negative region that reaches the boundary) always stays.
-    if (size < limit && (inside || !boundary))
-    {
-      smalls.push_back({ inside, smallNodes.size(), region.size() });
-      smallNodes.insert(smallNodes.end(), region.begin(), region.end());
-    }
-    largePiece = largePiece || (inside && size >= limit);
   }
-
-  // Flip the small regions, except the largest piece when every piece is
-  // small (a tiny cloud's shell is all there is).
-  std::size_t spared = smalls.size();
-  for (std::size_t r = 0; r < smalls.size() && !largePiece; ++r)
+  for (std::int64_t n : region)
   {
-    if (smalls[r].Inside && (spared == smalls.size() || smalls[r].Size > smalls[spared].Size))
-    {
-      spared = r;
-    }
+    // Outside values are negative or 0, inside values positive.
+    phi[n] = inside ? -phi[n] : (phi[n] == 0.0f ? 1e-6f : -phi[n]);
   }
-  RemovedPieces removed;
-  for (std::size_t r = 0; r < smalls.size(); ++r)
-  {
-    if (r == spared)
-    {
-      continue;
-    }
-    for (std::size_t q = smalls[r].First; q < smalls[r].First + smalls[r].Size; ++q)
-    {
-      // Outside values are negative, inside values positive (0 counts as outside).
-      const std::int64_t n = smallNodes[q];
-      phi[n] = smalls[r].Inside ? -phi[n] : (phi[n] == 0.0f ? 1e-6f : -phi[n]);
-    }
-    ++(smalls[r].Inside ? removed.Pieces : removed.Voids);
-  }
-  return removed;
+  return true;
 }
 
 } // namespace nv

@@ -6,13 +6,16 @@
 // Neither is part of the narrow volume a user wants to print or measure, so by
 // default both are removed:
 //
-// - a piece (a connected region of phi > 0) smaller than a ball of radius
-//   2 l, that is, than about eight loose balls together, becomes outside;
-// - a void (a connected region of phi < 0 that does not reach the grid's
-//   boundary) smaller than a ball of radius l becomes inside.
+// - a piece (a closed part of the phi = 0 surface around a region of phi > 0)
+//   smaller than a ball of radius 2 l, that is, than about eight loose balls
+//   together, becomes outside;
+// - a void (a closed part around a region of phi < 0 enclosed by the shell)
+//   smaller than a ball of radius l becomes inside.
 //
-// Larger regions stay: the shell itself, the cavity it encloses, and parts
-// of the model that are separate but not small.
+// Larger regions stay: the shell itself, the cavity it encloses, and parts of
+// the model that are separate but not small. The surface decides (its parts
+// are what a user sees and prints); the volume's phi is then flipped in the
+// same regions (FlipRegion), so that contouring it gives the same surface.
 #ifndef nvPieces_h
 #define nvPieces_h
 
@@ -35,11 +38,15 @@ double SmallPieceVolume(double offset);
 double SmallVoidVolume(double offset);
 
 /**
- * Removes the small pieces and voids from phi on the dense grid (one value
- * per node, 6-connected regions), by flipping the sign of their nodes so that
- * no phi = 0 surface is left around them. Needs one byte per node beside phi.
+ * Flips the sign of phi over the 6-connected region of nodes of one sign
+ * (inside: phi > 0, else phi <= 0) next to `point`, a vertex of the region's
+ * surface, so that no phi = 0 surface is left around it. phi holds the node
+ * layers [kBegin, kBegin + layers) of the grid. A region larger than
+ * maximumVolume (it joins a large one through a node the surface does not
+ * see) is left as it is; returns whether the region was flipped.
  */
-RemovedPieces RemoveSmallPieces(const Grid& grid, float* phi, double offset);
+bool FlipRegion(const Grid& grid, float* phi, std::int64_t kBegin, std::int64_t layers, const double point[3],
+  bool inside, double maximumVolume);
 
 } // namespace nv
 
