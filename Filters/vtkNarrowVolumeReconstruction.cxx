@@ -3,9 +3,12 @@
 #include "vtkNarrowVolumeReconstruction.h"
 
 #include "nvParallel.h"
+#include "nvPieces.h"
 #include "nvReconstruction.h"
+#include "nvSampling.h"
 #include "nvSheets.h"
 #include "vtkNarrowVolumeCommunicator.h"
+#include "vtkNarrowVolumePieces.h"
 #include "vtkNarrowVolumeSurface.h"
 
 #include "vtkAlgorithmOutput.h"
@@ -100,6 +103,19 @@ std::vector<double> PointsOf(vtkPointSet* input)
     }
   }
   return xyz;
+}
+
+/// Runs fn with NumberOfThreads threads, and all cores when the process-wide
+/// backend is Sequential (the default of Debian's ParaView).
+template <class Function>
+void WithThreads(int threads, Function fn)
+{
+  std::string backend = vtkSMPTools::GetBackend() ? vtkSMPTools::GetBackend() : "Sequential";
+  if (backend == "Sequential")
+  {
+    backend = "STDThread";
+  }
+  vtkSMPTools::LocalScope(vtkSMPTools::Config{ threads, backend, false }, fn);
 }
 
 /// MemoryLimit (MiB; 0: half the physical memory) in bytes.
@@ -227,6 +243,7 @@ nv::Settings vtkNarrowVolumeReconstruction::GetSettings() const
   settings.GaussSeidelTolerance = this->GaussSeidelTolerance;
   settings.Mode = this->Domain == WHOLE_DOMAIN ? nv::Domain::WholeDomain : nv::Domain::NarrowBand;
   settings.EdgeFunction = this->EdgeStoppingFunction == EQUATION_3 ? nv::EdgeStopping::Eq3 : nv::EdgeStopping::Eq4;
+  settings.RemoveSmallPieces = this->RemoveSmallPieces;
   // phi, the optional arrays, and the isosurfacer's working memory.
   settings.OutputBytesPerNode = this->OutputVolume ? 4.0 + (this->OutputInitialPhi ? 4.0 : 0.0) +
       (this->OutputDistance ? 4.0 : 0.0) + (this->OutputNarrowBand ? 1.0 : 0.0) + 2.0
@@ -258,18 +275,21 @@ int vtkNarrowVolumeReconstruction::RequestInformation(
       several ? this->Controller->GetNumberOfProcesses() : 1);
     request->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
     connection->GetProducer()->Update(connection->GetIndex(), requests);
-    vtkPointSet* input = vtkPointSet::GetData(inputVector[0], 0);
-    if (input && input->GetNumberOfPoints() > 0)
-    {
-      input->GetBounds(bounds);
-    }
   }
+  vtkPointSet* input = vtkPointSet::GetData(inputVector[0], 0);
+  if (input && input->GetNumberOfPoints() > 0)
+  {
+    input->GetBounds(bounds);
+  }
+  std::unique_ptr<vtkNarrowVolumeCommunicator> communicator;
   if (several)
   {
-    vtkNarrowVolumeCommunicator communicator(this->Controller);
-    nv::GlobalBounds(communicator, bounds);
+    communicator.reset(new vtkNarrowVolumeCommunicator(this->Controller));
+    nv::GlobalBounds(*communicator, bounds);
   }
-  const nv::Plan plan = nv::MakePlan(this->GetSettings(), bounds);
+  std::shared_ptr<const nv::Sampling> sampling;
+  WithThreads(this->NumberOfThreads, [&]() { sampling = this->MeasureSampling(input, communicator.get()); });
+  const nv::Plan plan = nv::MakePlan(this->GetSettings(), bounds, sampling->Statistics());
   if (!plan.Valid())
   {
     // No grid: RequestData says why.
@@ -315,6 +335,8 @@ int vtkNarrowVolumeReconstruction::RequestData(
   volume->Initialize();
   surface->Initialize();
   this->RelativeChanges.clear();
+  this->OffsetDistanceUsed = this->SampleSpacingUsed = this->MedianPointSpacing = this->LargestGap = 0.0;
+  this->Gaps = this->RemovedPieces = this->RemovedVoids = 0;
   this->NumberOfBandNodes = 0;
   this->NumberOfGridNodes = 0;
   this->SetupTime = this->EvolutionTime = this->OutputTime = 0.0;
@@ -334,19 +356,14 @@ int vtkNarrowVolumeReconstruction::RequestData(
     communicator.reset(new vtkNarrowVolumeCommunicator(this->Controller));
   }
 
-  // Run, with all cores when the process-wide backend is Sequential.
-  std::string backend = vtkSMPTools::GetBackend() ? vtkSMPTools::GetBackend() : "Sequential";
-  if (backend == "Sequential")
-  {
-    backend = "STDThread";
-  }
   bool ok = false;
-  vtkSMPTools::LocalScope(vtkSMPTools::Config{ this->NumberOfThreads, backend, false }, [&]() {
+  WithThreads(this->NumberOfThreads, [&]() {
     FilterMonitor monitor(this);
     nv::Settings settings = this->GetSettings();
     settings.MemoryLimitBytes = MemoryLimitBytes(this->MemoryLimit);
     nv::Reconstruction run(settings, communicator.get(), &monitor);
-    if (!run.Run(PointsOf(vtkPointSet::GetData(inputVector[0], 0))))
+    vtkPointSet* input = vtkPointSet::GetData(inputVector[0], 0);
+    if (!run.Run(PointsOf(input), this->MeasureSampling(input, communicator.get())))
     {
       if (!run.Error().empty())
       {
@@ -359,6 +376,12 @@ int vtkNarrowVolumeReconstruction::RequestData(
     this->RelativeChanges = run.RelativeChanges();
     this->SetupTime = run.SetupSeconds();
     this->EvolutionTime = run.EvolutionSeconds();
+    this->OffsetDistanceUsed = run.GetParameters().OffsetDistance;
+    this->SampleSpacingUsed = run.GetGrid().Spacing;
+    this->MedianPointSpacing = run.GetSampling().MedianSpacing;
+    this->Gaps = run.GetGaps().Gaps;
+    this->LargestGap = run.GetGaps().LargestGap;
+    std::copy(run.GetGaps().LargestGapCenter.begin(), run.GetGaps().LargestGapCenter.end(), this->LargestGapCenter);
     const auto start = std::chrono::steady_clock::now();
     bool explained = false;
     ok = this->ProduceOutputs(
@@ -366,10 +389,14 @@ int vtkNarrowVolumeReconstruction::RequestData(
     this->OutputTime = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     ok = !run.Anywhere(!ok); // every process, whatever stage it stopped in
     const double surfacePoints = run.SumAll(static_cast<double>(surface->GetNumberOfPoints()));
+    if (ok)
+    {
+      this->WarnAboutGaps(!communicator || communicator->Rank() == 0);
+    }
     if (ok && surfacePoints == 0 && !explained && (!communicator || communicator->Rank() == 0))
     {
       vtkWarningMacro("The surface is empty: the shell did not survive the evolution. The offset distance ("
-        << this->OffsetDistance << ") is probably small against the gaps between points or the grid spacing ("
+        << this->OffsetDistanceUsed << ") is probably small against the gaps between points or the grid spacing ("
         << run.GetGrid().Spacing << "): increase OffsetDistance or XiCells, or refine the grid.");
     }
   });
@@ -410,6 +437,13 @@ bool vtkNarrowVolumeReconstruction::ProduceOutputs(nv::Reconstruction& run, nv::
     monitor.Stage(0.65, 0.35);
     surface->ShallowCopy(nv::ExtractSurfaceBySlabs(run.GetDistance(), run.GetBand(), run.GetPhi(),
       run.GetParameters(), &monitor, run.PieceBegin(), run.PieceEnd()));
+    if (this->RemoveSmallPieces && !distributed && !monitor.Aborted())
+    {
+      const nv::RemovedPieces removed =
+        nv::RemoveSmallSurfacePieces(surface, run.GetParameters().OffsetDistance, nullptr);
+      this->RemovedPieces = removed.Pieces;
+      this->RemovedVoids = removed.Voids;
+    }
     return !monitor.Aborted(); // the slabs stop early: a partial surface is no result
   }
   const vtkIdType layerNodes = static_cast<vtkIdType>(grid.Dims[0] * grid.Dims[1]);
@@ -485,6 +519,20 @@ bool vtkNarrowVolumeReconstruction::ProduceOutputs(nv::Reconstruction& run, nv::
     }
   }
   surface->ShallowCopy(nv::ExtractSurface(grid, contoured, run.PieceBegin(), run.PieceEnd(), &monitor));
+  if (this->RemoveSmallPieces && !distributed && !monitor.Aborted())
+  {
+    // The surface's small parts go, and phi follows in the same regions.
+    const double offset = run.GetParameters().OffsetDistance;
+    std::vector<nv::DroppedPart> dropped;
+    const nv::RemovedPieces removed = nv::RemoveSmallSurfacePieces(surface, offset, &dropped);
+    this->RemovedPieces = removed.Pieces;
+    this->RemovedVoids = removed.Voids;
+    for (const nv::DroppedPart& part : dropped)
+    {
+      nv::FlipRegion(grid, arrays.Phi, volumeBegin, volumeEnd - volumeBegin, part.Vertex.data(), part.Piece,
+        2.0 * (part.Piece ? nv::SmallPieceVolume(offset) : nv::SmallVoidVolume(offset)));
+    }
+  }
   return !monitor.Aborted();
 }
 
@@ -507,13 +555,73 @@ void vtkNarrowVolumeReconstruction::AddRunSummary(vtkImageData* volume)
   volume->GetFieldData()->AddArray(iterations);
   volume->GetFieldData()->AddArray(bandNodes);
   volume->GetFieldData()->AddArray(changes);
+  auto addValues = [volume](const char* name, std::initializer_list<double> values) {
+    vtkNew<vtkDoubleArray> array;
+    array->SetName(name);
+    array->SetNumberOfComponents(static_cast<int>(values.size()));
+    array->InsertNextTuple(values.begin());
+    volume->GetFieldData()->AddArray(array);
+  };
+  addValues("OffsetDistance", { this->OffsetDistanceUsed });
+  addValues("SampleSpacing", { this->SampleSpacingUsed });
+  addValues("MedianPointSpacing", { this->MedianPointSpacing });
+  addValues("NumberOfGaps", { static_cast<double>(this->Gaps) });
+  addValues("LargestGap", { this->LargestGap });
+  addValues("LargestGapCenter", { this->LargestGapCenter[0], this->LargestGapCenter[1], this->LargestGapCenter[2] });
+  addValues("RemovedPieces", { static_cast<double>(this->RemovedPieces) });
+  addValues("RemovedVoids", { static_cast<double>(this->RemovedVoids) });
+}
+
+//------------------------------------------------------------------------------
+std::shared_ptr<const nv::Sampling> vtkNarrowVolumeReconstruction::MeasureSampling(
+  vtkPointSet* input, nv::Communicator* communicator)
+{
+  // The same points (object, modification time, count) are measured once:
+  // the information pass and the data pass, and runs that only change
+  // properties, share one measurement.
+  vtkPoints* points = input ? input->GetPoints() : nullptr;
+  const vtkMTimeType time = points ? points->GetMTime() : 0;
+  const vtkIdType count = points ? points->GetNumberOfPoints() : 0;
+  bool stale = !this->Sampled || time != this->SampledTime || count != this->SampledPoints ||
+    (communicator != nullptr) != this->SampledShared;
+  if (communicator)
+  {
+    stale = communicator->MaxAll(stale ? 1.0 : 0.0) > 0.0; // all measure, or none
+  }
+  if (stale)
+  {
+    auto sampling = std::make_shared<nv::Sampling>();
+    sampling->Measure(PointsOf(input), communicator);
+    this->Sampled = sampling;
+    this->SampledTime = time;
+    this->SampledPoints = count;
+    this->SampledShared = communicator != nullptr;
+  }
+  return this->Sampled;
+}
+
+void vtkNarrowVolumeReconstruction::WarnAboutGaps(bool firstProcess)
+{
+  if (this->Gaps == 0 || !firstProcess)
+  {
+    return;
+  }
+  vtkWarningMacro("The cloud has " << this->Gaps << (this->Gaps == 1 ? " gap" : " gaps")
+    << " wider than the offset distance " << this->OffsetDistanceUsed
+    << ": there, points have no neighbour within the offset, so the shell may open (a tunnel through "
+       "its wall, or a loose piece around a point farther than twice the offset from all others). The largest gap is "
+    << this->LargestGap << " wide, at (" << this->LargestGapCenter[0] << ", " << this->LargestGapCenter[1] << ", "
+    << this->LargestGapCenter[2] << "). To bridge the gaps, set OffsetDistance to at least " << this->LargestGap
+    << ", or fill them with points; loose pieces are dropped by RemoveSmallPieces. Field data NumberOfGaps, "
+       "LargestGap and LargestGapCenter hold these figures.");
 }
 
 //------------------------------------------------------------------------------
 void vtkNarrowVolumeReconstruction::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "OffsetDistance: " << this->OffsetDistance << "\n";
+  os << indent << "OffsetDistance: " << this->OffsetDistance << (this->OffsetDistance == 0.0 ? " (automatic)" : "")
+     << "\n";
   os << indent << "SampleSpacing: " << this->SampleSpacing << "\n";
   os << indent << "MaximumDimension: " << this->MaximumDimension << "\n";
   os << indent << "XiCells: " << this->XiCells << "\n";
@@ -525,6 +633,7 @@ void vtkNarrowVolumeReconstruction::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Domain: " << (this->Domain == WHOLE_DOMAIN ? "Whole Domain" : "Narrow Band") << "\n";
   os << indent << "EdgeStoppingFunction: eq. (" << this->EdgeStoppingFunction << ")\n";
   os << indent << "Sheets: " << this->Sheets << "\n";
+  os << indent << "RemoveSmallPieces: " << this->RemoveSmallPieces << "\n";
   os << indent << "OutputVolume: " << this->OutputVolume << "\n";
   os << indent << "OutputInitialPhi: " << this->OutputInitialPhi << "\n";
   os << indent << "OutputDistance: " << this->OutputDistance << "\n";
