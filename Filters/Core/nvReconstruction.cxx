@@ -61,6 +61,19 @@ Settings ResolveAutomatic(const Settings& settings, const SamplingStatistics& sa
     }
     values.SampleSpacing = spacing;
   }
+  else if (automaticOffset && values.OffsetDistance > 0.0)
+  {
+    // A spacing set by the user: the automatic offset spans at least 4 cells
+    // (the paper's l = 4 h), or the shell would not survive on that grid. With
+    // MaximumDimension the spacing grows with l's padding: a few rounds settle it.
+    for (int round = 0; round < 4; ++round)
+    {
+      const double spacing = settings.SampleSpacing > 0.0
+        ? settings.SampleSpacing
+        : SpacingForMaximumDimension(bounds, values.OffsetDistance, values.XiCells, settings.MaximumDimension);
+      values.OffsetDistance = std::max(values.OffsetDistance, 4.0 * spacing);
+    }
+  }
   return values;
 }
 
