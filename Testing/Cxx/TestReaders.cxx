@@ -22,8 +22,9 @@
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
+#include <vtksys/SystemTools.hxx>
+
 #include <string>
-#include <sys/stat.h>
 #include <unistd.h>
 
 namespace
@@ -205,7 +206,7 @@ int main()
 {
   TestLZF();
   const std::string folder = "TestReaders-" + std::to_string(getpid());
-  mkdir(folder.c_str(), 0755);
+  vtksys::SystemTools::MakeDirectory(folder);
   const double center[3] = { 500123.25, 4001234.5, 300.0 };
   const std::vector<double> xyz = nvtest::SpherePoints(64, 25.0, center);
   TestLAS(folder, xyz);
@@ -226,5 +227,6 @@ int main()
   // Every cut of a LAS or binary PCD file loses points the header announces.
   NV_CHECK(refused > 4 * 140);
   std::printf("truncated files refused with an error: %d\n", refused);
+  vtksys::SystemTools::RemoveADirectory(folder);
   return nvtest::Result("TestReaders");
 }
