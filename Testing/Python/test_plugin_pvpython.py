@@ -59,8 +59,10 @@ folder = tempfile.mkdtemp(prefix="nv-pv-")
 for name in ("ball.pts", "ball.xyz"):
     with open(os.path.join(folder, name), "w") as f:
         f.write("\n".join("%.6f %.6f %.6f" % tuple(p) for p in nvtesting.sphere_points(500, 0.5)))
-# .pts opens with ParaView's own PTSReader; .xyz is also PLOT3D's extension in
-# ParaView, so the GUI asks which reader to use and scripts name ours.
+# .pts opens with ParaView's own PTSReader; .xyz is also claimed by ParaView's
+# PLOT3D and molecular XYZ readers, and OpenDataFile takes the first of them
+# (ParaView 5.11 consults the default-reader setting the plugin adds only in
+# the GUI's File > Open, see GUIOpenFiles), so scripts name ours.
 reader = pvs.OpenDataFile(os.path.join(folder, "ball.pts"))
 t.check(reader is not None and reader.GetXMLName() == "PTSReader", "pts opens with ParaView's reader")
 xyz_reader = PointCloudTextReader(FileName=os.path.join(folder, "ball.xyz"))  # noqa: F821
