@@ -199,8 +199,9 @@ double CellSizeFor(const std::vector<double>& xyz)
   double bounds[6];
   PointBounds(xyz, bounds);
   const double side = std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
-  // About n^(1/2) cells along the longest side, capped by the key's 21 bits.
-  const double coarse = side / std::min(1.0e6, std::max(1.0, std::sqrt(static_cast<double>(n))));
+  // About n^(1/2) / 4 cells along the longest side (capped by the key's 21
+  // bits): coarse enough that a surface's points fill its cells many times over.
+  const double coarse = side / std::min(1.0e6, std::max(1.0, 0.25 * std::sqrt(static_cast<double>(n))));
   if (!(coarse > 0.0))
   {
     return 1.0;
@@ -217,8 +218,9 @@ double CellSizeFor(const std::vector<double>& xyz)
   }
   std::sort(keys.begin(), keys.end());
   const double occupied = static_cast<double>(std::unique(keys.begin(), keys.end()) - keys.begin());
-  // Area ~ occupied * coarse^2, spacing ~ sqrt(area / n); two spacings per cell.
-  return std::min(coarse, 2.0 * coarse * std::sqrt(occupied / static_cast<double>(n)));
+  // Area ~ occupied * coarse^2, spacing ~ sqrt(area / n); two spacings per
+  // cell, so that most nearest neighbours are in the 27 cells around a point.
+  return 2.0 * coarse * std::sqrt(occupied / static_cast<double>(n));
 }
 } // namespace
 
