@@ -1,0 +1,476 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+// SPDX-License-Identifier: BSD-3-Clause
+#include "nvSurface.h"
+
+#include "nvMarchingCubes.h"
+#include "nvParallel.h"
+#include "nvSurfaceField.h"
+#include "nvTruncatedDistance.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace nv
+{
+namespace
+{
+constexpr int WindowSize = BrickSize + 3;      ///< nodes -1 .. 9 of a brick along each axis
+constexpr int EdgeWords = 3 * BrickNodes / 64; ///< one bit per edge, three edges (x, y, z) per node
+constexpr std::int64_t Grain = 8;              ///< bricks per task
+
+/// The field on the nodes -1 .. 9 of a brick along each axis: its own, the
+/// far corners of its cells (node 8), and one more on each side for the
+/// central differences.
+struct Window
+{
+  std::array<float, WindowSize * WindowSize * WindowSize> Values;
+  float& At(int i, int j, int k) { return this->Values[(i + 1) + WindowSize * ((j + 1) + WindowSize * (k + 1))]; }
+  float At(int i, int j, int k) const
+  {
+    return this->Values[(i + 1) + WindowSize * ((j + 1) + WindowSize * (k + 1))];
+  }
+};
+
+/// The field on one brick layer: the values of the bricks where it varies,
+/// one value for each other brick.
+struct LayerValues
+{
+  std::int64_t Layer = -1;
+  bool InGrid = false;
+  std::vector<float> Uniform;        ///< per brick of the layer
+  std::vector<std::int64_t> Varying; ///< ascending
+  std::vector<std::int32_t> Slot;    ///< per brick of the layer: index into Varying, or -1
+  std::vector<float> Values;         ///< BrickNodes per varying brick
+};
+
+/// The vertices of the cut bricks of one brick layer. Edge 3 n + axis of a
+/// brick runs from its node n along the axis; its vertex's id is the brick's
+/// first id plus the number of cut edges before it.
+struct LayerVertices
+{
+  std::int64_t Layer = -1;
+  std::vector<std::int64_t> Bricks; ///< ascending
+  std::vector<std::int32_t> Slot;   ///< per brick of the layer: index into Bricks, or -1
+  std::vector<std::array<std::uint64_t, EdgeWords>> Cut;
+  std::vector<std::array<std::uint16_t, EdgeWords>> Before; ///< cut edges in the brick's earlier words
+  std::vector<std::int64_t> First;
+};
+
+class Contourer
+{
+public:
+  Contourer(const Grid& grid, const BrickField& field, SurfaceSink& sink)
+    : TheGrid(grid)
+    , Field(field)
+    , Sink(sink)
+    , Bricks(BrickDimensions(grid))
+    , PerLayer(Bricks[0] * Bricks[1])
+  {
+  }
+
+  bool Run(std::int64_t begin, std::int64_t end, Monitor* monitor)
+  {
+    end = end < 0 ? this->Bricks[2] : std::min(end, this->Bricks[2]);
+    if (begin >= end)
+    {
+      return true;
+    }
+    this->Load(begin - 1);
+    this->Load(begin);
+    for (std::int64_t z = begin; z <= end; ++z)
+    {
+      if (z < this->Bricks[2])
+      {
+        this->Load(z + 1);
+        this->MakeVertices(z, z == end); // of the last layer, only the plane shared with the next piece
+      }
+      if (z > begin)
+      {
+        this->MakeTriangles(z - 1);
+      }
+      if (monitor)
+      {
+        monitor->Progress(static_cast<double>(z - begin + 1) / static_cast<double>(end - begin + 1));
+        if (monitor->Aborted())
+        {
+          return false;
+        }
+      }
+    }
+    return true;
+  }
+
+private:
+  // Triangles of layer z - 1 read the values of layers z - 2 .. z while the
+  // vertices of layer z read z - 1 .. z + 1: four layers of values, two of vertices.
+  LayerValues& ValuesOf(std::int64_t layer) { return this->ValueRing[static_cast<std::size_t>((layer + 4) % 4)]; }
+  LayerVertices& VerticesOf(std::int64_t layer) { return this->VertexRing[static_cast<std::size_t>((layer + 2) % 2)]; }
+
+  void Load(std::int64_t layer)
+  {
+    LayerValues& values = this->ValuesOf(layer);
+    values.Layer = layer;
+    values.InGrid = layer >= 0 && layer < this->Bricks[2];
+    values.Varying.clear();
+    if (!values.InGrid)
+    {
+      return;
+    }
+    this->Field.Layer(layer, values.Uniform, values.Varying);
+    values.Slot.assign(static_cast<std::size_t>(this->PerLayer), -1);
+    const std::int64_t n = static_cast<std::int64_t>(values.Varying.size());
+    for (std::int64_t r = 0; r < n; ++r)
+    {
+      values.Slot[static_cast<std::size_t>(values.Varying[r] - layer * this->PerLayer)] = static_cast<std::int32_t>(r);
+    }
+    values.Values.resize(static_cast<std::size_t>(n * BrickNodes));
+    ParallelFor(0, n, Grain, [&](std::int64_t first, std::int64_t last) {
+      for (std::int64_t r = first; r < last; ++r)
+      {
+        this->Field.Values(values.Varying[r], &values.Values[static_cast<std::size_t>(r * BrickNodes)]);
+      }
+    });
+  }
+
+  /// The bricks of a layer whose cells or edges may be cut: those where the
+  /// field varies and those just below them (on any axis), whose cells reach
+  /// their first nodes. Any other cell has its eight corners in bricks of one
+  /// uniform value.
+  std::vector<std::int64_t> CutBricks(std::int64_t layer)
+  {
+    std::vector<std::int64_t> cut;
+    for (int dz = 0; dz < 2; ++dz)
+    {
+      const LayerValues& values = this->ValuesOf(layer + dz);
+      for (std::int64_t b : values.Varying)
+      {
+        const std::int64_t bx = b % this->Bricks[0], by = (b / this->Bricks[0]) % this->Bricks[1];
+        for (int dy = 0; dy < 2 && by - dy >= 0; ++dy)
+        {
+          for (int dx = 0; dx < 2 && bx - dx >= 0; ++dx)
+          {
+            cut.push_back(layer * this->PerLayer + (bx - dx) + this->Bricks[0] * (by - dy));
+          }
+        }
+      }
+    }
+    std::sort(cut.begin(), cut.end());
+    cut.erase(std::unique(cut.begin(), cut.end()), cut.end());
+    return cut;
+  }
+
+  void BrickCoordinates(std::int64_t brick, std::int64_t b[3]) const
+  {
+    b[0] = brick % this->Bricks[0];
+    b[1] = (brick / this->Bricks[0]) % this->Bricks[1];
+    b[2] = brick / this->PerLayer;
+  }
+
+  void FillWindow(std::int64_t brick, Window& window)
+  {
+    // Along each axis, the part of the window that the brick before, the
+    // brick itself and the brick after provide: {first window node, first
+    // node in that brick, count}.
+    static const int parts[3][3] = { { -1, BrickSize - 1, 1 }, { 0, 0, BrickSize }, { BrickSize, 0, 2 } };
+    std::int64_t b[3];
+    this->BrickCoordinates(brick, b);
+    for (int oz = 0; oz < 3; ++oz)
+    {
+      const LayerValues& values = this->ValuesOf(b[2] + oz - 1);
+      for (int oy = 0; oy < 3; ++oy)
+      {
+        for (int ox = 0; ox < 3; ++ox)
+        {
+          const std::int64_t x = b[0] + ox - 1, y = b[1] + oy - 1;
+          const bool inGrid = values.InGrid && x >= 0 && x < this->Bricks[0] && y >= 0 && y < this->Bricks[1];
+          const std::int64_t inLayer = x + this->Bricks[0] * y;
+          const std::int32_t slot = inGrid ? values.Slot[static_cast<std::size_t>(inLayer)] : -1;
+          const float* source = slot >= 0 ? &values.Values[static_cast<std::size_t>(slot) * BrickNodes] : nullptr;
+          // Nodes beyond the grid are never read: any value will do.
+          const float uniform = inGrid ? values.Uniform[static_cast<std::size_t>(inLayer)] : 0.0f;
+          for (int k = 0; k < parts[oz][2]; ++k)
+          {
+            for (int j = 0; j < parts[oy][2]; ++j)
+            {
+              for (int i = 0; i < parts[ox][2]; ++i)
+              {
+                window.At(parts[ox][0] + i, parts[oy][0] + j, parts[oz][0] + k) = source
+                  ? source[(parts[ox][1] + i) + BrickSize * ((parts[oy][1] + j) + BrickSize * (parts[oz][1] + k))]
+                  : uniform;
+              }
+            }
+          }
+        }
+      }
+    }
+  }
+
+  /// The gradient of the field at window node (i, j, k), grid node g:
+  /// central differences, one-sided on the grid's faces.
+  void Gradient(const Window& window, const int local[3], const std::int64_t g[3], double gradient[3]) const
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      const int before = g[a] > 0 ? -1 : 0;
+      const int after = g[a] < this->TheGrid.Dims[a] - 1 ? 1 : 0;
+      int p[3] = { local[0], local[1], local[2] }, q[3] = { local[0], local[1], local[2] };
+      p[a] += after;
+      q[a] += before;
+      gradient[a] = after == before
+        ? 0.0
+        : (static_cast<double>(window.At(p[0], p[1], p[2])) - window.At(q[0], q[1], q[2])) /
+          ((after - before) * this->TheGrid.Spacing);
+    }
+  }
+
+  /// The vertex on cut edge `bit` of a brick whose first node is `first`.
+  void Vertex(const Window& window, const std::int64_t first[3], int bit, double xyz[3], float normal[3]) const
+  {
+    const int node = bit / 3, axis = bit % 3;
+    int p0[3] = { node & (BrickSize - 1), (node >> BrickShift) & (BrickSize - 1), node >> (2 * BrickShift) };
+    int p1[3] = { p0[0], p0[1], p0[2] };
+    ++p1[axis];
+    std::int64_t g0[3], g1[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      g0[a] = first[a] + p0[a];
+      g1[a] = first[a] + p1[a];
+    }
+    const double v0 = window.At(p0[0], p0[1], p0[2]), v1 = window.At(p1[0], p1[1], p1[2]);
+    const double t = v0 / (v0 - v1); // linear interpolation to the level 0
+    double d0[3], d1[3], n[3];
+    this->Gradient(window, p0, g0, d0);
+    this->Gradient(window, p1, g1, d1);
+    for (int a = 0; a < 3; ++a)
+    {
+      xyz[a] = this->TheGrid.Origin[a] + this->TheGrid.Spacing * (static_cast<double>(g0[a]) + (a == axis ? t : 0.0));
+      n[a] = d0[a] + t * (d1[a] - d0[a]);
+    }
+    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for (int a = 0; a < 3; ++a)
+    {
+      normal[a] = length > 0.0 ? static_cast<float>(-n[a] / length) : 0.0f; // down the field: out of the shell
+    }
+  }
+
+  void FirstNode(std::int64_t brick, std::int64_t first[3]) const
+  {
+    this->BrickCoordinates(brick, first);
+    for (int a = 0; a < 3; ++a)
+    {
+      first[a] <<= BrickShift;
+    }
+  }
+
+  /// Marks the brick's cut edges (those of its first node plane along x and
+  /// y only, if planeOnly); returns their number.
+  int MarkCutEdges(
+    const Window& window, std::int64_t brick, bool planeOnly, std::array<std::uint64_t, EdgeWords>& cut) const
+  {
+    std::int64_t first[3];
+    this->FirstNode(brick, first);
+    cut.fill(0);
+    int count = 0;
+    const int kEnd = planeOnly ? 1 : BrickSize;
+    for (int k = 0; k < kEnd && first[2] + k < this->TheGrid.Dims[2]; ++k)
+    {
+      for (int j = 0; j < BrickSize && first[1] + j < this->TheGrid.Dims[1]; ++j)
+      {
+        for (int i = 0; i < BrickSize && first[0] + i < this->TheGrid.Dims[0]; ++i)
+        {
+          const std::int64_t g[3] = { first[0] + i, first[1] + j, first[2] + k };
+          const bool above = window.At(i, j, k) >= 0.0f;
+          for (int axis = 0; axis < (planeOnly ? 2 : 3); ++axis)
+          {
+            if (g[axis] + 1 >= this->TheGrid.Dims[axis])
+            {
+              continue;
+            }
+            const bool otherAbove =
+              window.At(i + (axis == 0), j + (axis == 1), k + (axis == 2)) >= 0.0f;
+            if (above != otherAbove)
+            {
+              const int bit = 3 * (i + BrickSize * (j + BrickSize * k)) + axis;
+              cut[static_cast<std::size_t>(bit / 64)] |= std::uint64_t(1) << (bit % 64);
+              ++count;
+            }
+          }
+        }
+      }
+    }
+    return count;
+  }
+
+  void MakeVertices(std::int64_t layer, bool planeOnly)
+  {
+    LayerVertices& vertices = this->VerticesOf(layer);
+    vertices.Layer = layer;
+    vertices.Bricks = this->CutBricks(layer);
+    const std::int64_t n = static_cast<std::int64_t>(vertices.Bricks.size());
+    vertices.Slot.assign(static_cast<std::size_t>(this->PerLayer), -1);
+    for (std::int64_t r = 0; r < n; ++r)
+    {
+      vertices.Slot[static_cast<std::size_t>(vertices.Bricks[r] - layer * this->PerLayer)] = static_cast<std::int32_t>(r);
+    }
+    vertices.Cut.resize(static_cast<std::size_t>(n));
+    vertices.Before.resize(static_cast<std::size_t>(n));
+    vertices.First.resize(static_cast<std::size_t>(n));
+    ParallelFor(0, n, Grain, [&](std::int64_t begin, std::int64_t end) {
+      Window window;
+      for (std::int64_t r = begin; r < end; ++r)
+      {
+        this->FillWindow(vertices.Bricks[r], window);
+        vertices.First[r] = this->MarkCutEdges(window, vertices.Bricks[r], planeOnly, vertices.Cut[r]);
+      }
+    });
+    // Ids in brick order, then edge order within a brick.
+    const std::int64_t layerFirst = this->NextId;
+    for (std::int64_t r = 0; r < n; ++r)
+    {
+      const std::int64_t count = vertices.First[r];
+      vertices.First[r] = this->NextId;
+      this->NextId += count;
+      int before = 0;
+      for (int w = 0; w < EdgeWords; ++w)
+      {
+        vertices.Before[r][w] = static_cast<std::uint16_t>(before);
+        before += Popcount(vertices.Cut[r][w]);
+      }
+    }
+    std::vector<double> xyz(static_cast<std::size_t>(3 * (this->NextId - layerFirst)));
+    std::vector<float> normals(xyz.size());
+    ParallelFor(0, n, Grain, [&](std::int64_t begin, std::int64_t end) {
+      Window window;
+      for (std::int64_t r = begin; r < end; ++r)
+      {
+        this->FillWindow(vertices.Bricks[r], window);
+        std::int64_t first[3];
+        this->FirstNode(vertices.Bricks[r], first);
+        std::int64_t id = vertices.First[r] - layerFirst;
+        for (int w = 0; w < EdgeWords; ++w)
+        {
+          for (std::uint64_t bits = vertices.Cut[r][w]; bits; bits &= bits - 1, ++id)
+          {
+            const int bit = 64 * w + Popcount((bits & (~bits + 1)) - 1); // lowest set bit
+            this->Vertex(window, first, bit, &xyz[static_cast<std::size_t>(3 * id)], &normals[static_cast<std::size_t>(3 * id)]);
+          }
+        }
+      }
+    });
+    this->Sink.AddPoints(xyz.data(), normals.data(), this->NextId - layerFirst);
+  }
+
+  /// The id of the vertex on edge `edge` of cell (i, j, k) of brick b.
+  std::int64_t VertexId(const std::int64_t b[3], int i, int j, int k, int edge)
+  {
+    const int corner = EdgeCorner(edge);
+    const int node[3] = { i + (corner & 1), j + ((corner >> 1) & 1), k + ((corner >> 2) & 1) };
+    const LayerVertices& vertices = this->VerticesOf(b[2] + (node[2] >> BrickShift));
+    const std::int32_t r = vertices.Slot[static_cast<std::size_t>(
+      (b[0] + (node[0] >> BrickShift)) + this->Bricks[0] * (b[1] + (node[1] >> BrickShift)))];
+    const int bit = 3 * ((node[0] & (BrickSize - 1)) +
+                          BrickSize * ((node[1] & (BrickSize - 1)) + BrickSize * (node[2] & (BrickSize - 1)))) +
+      EdgeAxis(edge);
+    const std::uint64_t below = vertices.Cut[r][bit / 64] & ((std::uint64_t(1) << (bit % 64)) - 1);
+    return vertices.First[r] + vertices.Before[r][bit / 64] + Popcount(below);
+  }
+
+  /// Visits the cut cells of a brick: fn(i, j, k, case).
+  template <typename Fn>
+  void ForEachCutCell(const Window& window, std::int64_t brick, Fn&& fn) const
+  {
+    std::int64_t first[3];
+    this->FirstNode(brick, first);
+    for (int k = 0; k < BrickSize && first[2] + k + 1 < this->TheGrid.Dims[2]; ++k)
+    {
+      for (int j = 0; j < BrickSize && first[1] + j + 1 < this->TheGrid.Dims[1]; ++j)
+      {
+        for (int i = 0; i < BrickSize && first[0] + i + 1 < this->TheGrid.Dims[0]; ++i)
+        {
+          int signs = 0;
+          for (int c = 0; c < 8; ++c)
+          {
+            signs |= (window.At(i + (c & 1), j + ((c >> 1) & 1), k + ((c >> 2) & 1)) >= 0.0f) << c;
+          }
+          if (signs != 0 && signs != 255)
+          {
+            fn(i, j, k, MarchingCubesCase(signs));
+          }
+        }
+      }
+    }
+  }
+
+  void MakeTriangles(std::int64_t layer)
+  {
+    const std::vector<std::int64_t>& bricks = this->VerticesOf(layer).Bricks;
+    const std::int64_t n = static_cast<std::int64_t>(bricks.size());
+    std::vector<std::int64_t> start(static_cast<std::size_t>(n + 1), 0);
+    ParallelFor(0, n, Grain, [&](std::int64_t begin, std::int64_t end) {
+      Window window;
+      for (std::int64_t r = begin; r < end; ++r)
+      {
+        this->FillWindow(bricks[r], window);
+        this->ForEachCutCell(window, bricks[r], [&](int, int, int, const CellCase& c) { start[r + 1] += c.Count; });
+      }
+    });
+    for (std::int64_t r = 0; r < n; ++r)
+    {
+      start[r + 1] += start[r];
+    }
+    std::vector<std::int64_t> ids(static_cast<std::size_t>(3 * start[n]));
+    ParallelFor(0, n, Grain, [&](std::int64_t begin, std::int64_t end) {
+      Window window;
+      for (std::int64_t r = begin; r < end; ++r)
+      {
+        this->FillWindow(bricks[r], window);
+        std::int64_t b[3];
+        this->BrickCoordinates(bricks[r], b);
+        std::int64_t* out = &ids[static_cast<std::size_t>(3 * start[r])];
+        this->ForEachCutCell(window, bricks[r], [&](int i, int j, int k, const CellCase& c) {
+          for (int t = 0; t < c.Count; ++t)
+          {
+            for (int v = 0; v < 3; ++v)
+            {
+              *out++ = this->VertexId(b, i, j, k, c.Triangles[t][v]);
+            }
+          }
+        });
+      }
+    });
+    this->Sink.AddTriangles(ids.data(), start[n]);
+  }
+
+  const Grid& TheGrid;
+  const BrickField& Field;
+  SurfaceSink& Sink;
+  std::array<std::int64_t, 3> Bricks;
+  std::int64_t PerLayer;
+  std::array<LayerValues, 4> ValueRing;
+  std::array<LayerVertices, 2> VertexRing;
+  std::int64_t NextId = 0;
+};
+} // namespace
+
+SurfaceSink::~SurfaceSink() = default;
+
+void SurfaceMesh::AddPoints(const double* xyz, const float* normals, std::int64_t n)
+{
+  this->Points.insert(this->Points.end(), xyz, xyz + 3 * n);
+  this->Normals.insert(this->Normals.end(), normals, normals + 3 * n);
+}
+
+void SurfaceMesh::AddTriangles(const std::int64_t* ids, std::int64_t n)
+{
+  this->Triangles.insert(this->Triangles.end(), ids, ids + 3 * n);
+}
+
+bool ContourBricks(const Grid& grid, const BrickField& field, SurfaceSink& sink, std::int64_t layerBegin,
+  std::int64_t layerEnd, Monitor* monitor)
+{
+  Contourer contourer(grid, field, sink);
+  return contourer.Run(layerBegin, layerEnd, monitor);
+}
+
+} // namespace nv

@@ -1,0 +1,71 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+// SPDX-License-Identifier: BSD-3-Clause
+// The output surface: the zero level of a field (nvSurfaceField.h) by
+// marching cubes (nvMarchingCubes.h), made only in the bricks where the
+// field changes sign, so that its cost follows the band and not the box.
+//
+// The paper takes "the isosurface phi = 0" (section 3) from the whole grid.
+// Outside the band phi is constant up to the side of the shell, so no cell
+// there is cut: every cut edge has a band node at one end. This code visits
+// the bricks of the band and the bricks just below them (whose cells reach
+// into the band), one brick layer at a time, and makes exactly what a
+// contouring of the whole grid (vtkFlyingEdges3D) makes from the same
+// values: the same vertices (linear interpolation along the cut edges), the
+// same number of triangles, and normals from central differences of the
+// field interpolated along the edge, pointing towards its negative side (out
+// of the shell).
+//
+// A vertex belongs to its edge, and an edge to the brick of its first node;
+// a brick numbers its vertices in the order of its cut edges (a bit mask,
+// counted by popcount), so vertices are shared between cells and bricks
+// without any search tree, and the output is the same for any number of
+// threads. Per brick layer: the vertices of layer z + 1, then the triangles
+// of layer z, which use them.
+#ifndef nvSurface_h
+#define nvSurface_h
+
+#include "nvGrid.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace nv
+{
+class BrickField;
+class Monitor;
+
+/// Receives the surface as it is made, brick layer by brick layer.
+class SurfaceSink
+{
+public:
+  virtual ~SurfaceSink();
+  /// n vertices: world coordinates (xyz) and unit normals (xyz).
+  virtual void AddPoints(const double* xyz, const float* normals, std::int64_t n) = 0;
+  /// n triangles, three vertex ids each (vertices numbered from 0 in the order added).
+  virtual void AddTriangles(const std::int64_t* ids, std::int64_t n) = 0;
+};
+
+/// A sink that keeps the surface in plain arrays.
+class SurfaceMesh : public SurfaceSink
+{
+public:
+  void AddPoints(const double* xyz, const float* normals, std::int64_t n) override;
+  void AddTriangles(const std::int64_t* ids, std::int64_t n) override;
+  std::vector<double> Points;
+  std::vector<float> Normals;
+  std::vector<std::int64_t> Triangles;
+};
+
+/**
+ * The field = 0 surface of the cells in brick layers [layerBegin, layerEnd)
+ * (layerEnd < 0: to the grid's end). The vertices on the top plane of the
+ * last layer, which the next piece of a distributed run shares, are made with
+ * the values of the layer above. The field must be readable on the layers
+ * around: layerBegin - 1 to layerEnd. Returns false if the monitor stopped it.
+ */
+bool ContourBricks(const Grid& grid, const BrickField& field, SurfaceSink& sink, std::int64_t layerBegin = 0,
+  std::int64_t layerEnd = -1, Monitor* monitor = nullptr);
+
+} // namespace nv
+
+#endif
