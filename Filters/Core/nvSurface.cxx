@@ -18,6 +18,12 @@ namespace
 constexpr int WindowSize = BrickSize + 3;      ///< nodes -1 .. 9 of a brick along each axis
 constexpr int EdgeWords = 3 * BrickNodes / 64; ///< one bit per edge, three edges (x, y, z) per node
 constexpr std::int64_t Grain = 8;              ///< bricks per task
+/// No vertex closer to a node than this fraction of h. A node on the level
+/// itself (phi = 0 there, or so close that the vertex rounds onto it) would
+/// put the vertices of all its cut edges on one point, and give zero-area
+/// triangles. Three points inside three different edges of a cube are never
+/// on one line, so every triangle then has an area.
+constexpr double Margin = 1e-3;
 
 /// The field on the nodes -1 .. 9 of a brick along each axis: its own, the
 /// far corners of its cells (node 8), and one more on each side for the
@@ -238,7 +244,8 @@ private:
       g1[a] = first[a] + p1[a];
     }
     const double v0 = window.At(p0[0], p0[1], p0[2]), v1 = window.At(p1[0], p1[1], p1[2]);
-    const double t = v0 / (v0 - v1); // linear interpolation to the level 0
+    // Linear interpolation to the level 0 (v0 and v1 have opposite signs).
+    const double t = std::min(1.0 - Margin, std::max(Margin, v0 / (v0 - v1)));
     double d0[3], d1[3], n[3];
     this->Gradient(window, p0, g0, d0);
     this->Gradient(window, p1, g1, d1);

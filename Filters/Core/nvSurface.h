@@ -10,10 +10,11 @@
 // the bricks of the band and the bricks just below them (whose cells reach
 // into the band), one brick layer at a time, and makes exactly what a
 // contouring of the whole grid (vtkFlyingEdges3D) makes from the same
-// values: the same vertices (linear interpolation along the cut edges), the
-// same number of triangles, and normals from central differences of the
-// field interpolated along the edge, pointing towards its negative side (out
-// of the shell).
+// values: the same vertices (linear interpolation along the cut edges, a node
+// at 0 counting as above the level), the same number of triangles, and
+// normals from central differences of the field interpolated along the edge,
+// pointing towards its negative side (out of the shell). One difference: no
+// vertex lies within 1e-3 h of a node, so that no triangle has zero area.
 //
 // A vertex belongs to its edge, and an edge to the brick of its first node;
 // a brick numbers its vertices in the order of its cut edges (a bit mask,

@@ -13,16 +13,13 @@ namespace nv
 ImpliedDistance::ImpliedDistance(const Parameters& parameters)
   : Scale(std::sqrt(2.0) * parameters.Xi())
   , Cap(parameters.HalfBandWidth())
-  , Floor(1e-3 * parameters.Spacing)
 {
 }
 
 float ImpliedDistance::operator()(double phi) const
 {
   double psi = std::fabs(phi) < 1.0 ? this->Scale * std::atanh(phi) : std::copysign(this->Cap, phi);
-  psi = std::min(this->Cap, std::max(-this->Cap, psi));
-  psi = psi >= 0.0 ? std::max(psi, this->Floor) : std::min(psi, -this->Floor);
-  return static_cast<float>(psi);
+  return static_cast<float>(std::min(this->Cap, std::max(-this->Cap, psi)));
 }
 
 std::array<std::int64_t, 3> BrickDimensions(const Grid& grid)

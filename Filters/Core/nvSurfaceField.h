@@ -29,14 +29,7 @@ namespace nv
 {
 struct NarrowBand;
 
-/**
- * psi of phi, clamped to [-eta/2, eta/2], and at least 1e-3 h away from 0
- * (phi >= 0 giving +1e-3 h): a node on the level itself would put the
- * vertices of all its edges on one point, and give zero-area triangles. The
- * sign, and so the triangles, are those of phi (a node with phi = 0 counts
- * as above the level, as in vtkFlyingEdges3D); a vertex moves by at most
- * about 1e-3 h.
- */
+/// psi of phi, clamped to [-eta/2, eta/2]; its sign is phi's.
 class ImpliedDistance
 {
 public:
@@ -49,7 +42,6 @@ public:
 private:
   double Scale; ///< sqrt(2) xi
   double Cap;   ///< eta/2
-  double Floor; ///< 1e-3 h
 };
 
 /// A field on the grid's nodes, read by bricks (nvTruncatedDistance.h).
