@@ -11,15 +11,17 @@
 #include "vtkPolyData.h"
 
 #include <algorithm>
+#include <type_traits>
 
 namespace nv
 {
 namespace
 {
-/// Appends n tuples. The array's own Resize shrinks to the size asked for,
-/// so it is called only when the capacity is short (it then leaves room).
-template <class Array, class Value>
-void Append(Array* array, const Value* values, vtkIdType n)
+/// Room for n more tuples at the end of the array. The array's own Resize
+/// shrinks to the size asked for, so it is called only when the capacity is
+/// short (it then leaves room for as many again).
+template <class Array>
+auto* Extend(Array* array, vtkIdType n)
 {
   const vtkIdType components = array->GetNumberOfComponents();
   const vtkIdType old = array->GetNumberOfTuples();
@@ -28,7 +30,7 @@ void Append(Array* array, const Value* values, vtkIdType n)
     array->Resize(old + n);
   }
   array->SetNumberOfTuples(old + n);
-  std::copy(values, values + n * components, array->GetPointer(old * components));
+  return array->GetPointer(old * components);
 }
 } // namespace
 
@@ -41,20 +43,20 @@ PolyDataSink::PolyDataSink()
 
 PolyDataSink::~PolyDataSink() = default;
 
-void PolyDataSink::AddPoints(const double* xyz, const float* normals, std::int64_t n)
+void PolyDataSink::AddPoints(std::int64_t n, double*& xyz, float*& normals)
 {
-  Append(this->Points.GetPointer(), xyz, n);
-  Append(this->Normals.GetPointer(), normals, n);
+  xyz = Extend(this->Points.GetPointer(), n);
+  normals = Extend(this->Normals.GetPointer(), n);
 }
 
-void PolyDataSink::AddTriangles(const std::int64_t* ids, std::int64_t n)
+VertexId* PolyDataSink::AddTriangles(std::int64_t n)
 {
-  Append(this->Connectivity.GetPointer(), ids, 3 * n);
+  static_assert(std::is_same<vtkIdType, VertexId>::value, "VTK's ids are the core's");
+  return Extend(this->Connectivity.GetPointer(), 3 * n);
 }
 
 vtkSmartPointer<vtkPolyData> PolyDataSink::Finish()
 {
-  static_assert(sizeof(vtkIdType) == sizeof(std::int64_t), "vertex ids are 64-bit");
   this->Points->Squeeze();
   this->Normals->Squeeze();
   this->Connectivity->Squeeze();

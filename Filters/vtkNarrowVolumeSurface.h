@@ -1,9 +1,9 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
 // SPDX-License-Identifier: BSD-3-Clause
 // The output surface as a vtkPolyData: the core makes it brick layer by brick
-// layer (nvSurface.h); this sink appends each layer's vertices (double
-// world coordinates, float "Normals") and triangles to VTK arrays, which grow
-// in place, so the surface is never held twice.
+// layer (nvSurface.h) into room this sink makes at the end of VTK arrays
+// (double world coordinates, float "Normals", triangles), which grow in
+// place: the surface is never held twice.
 #ifndef vtkNarrowVolumeSurface_h
 #define vtkNarrowVolumeSurface_h
 
@@ -25,8 +25,8 @@ class PolyDataSink : public SurfaceSink
 public:
   PolyDataSink();
   ~PolyDataSink() override;
-  void AddPoints(const double* xyz, const float* normals, std::int64_t n) override;
-  void AddTriangles(const std::int64_t* ids, std::int64_t n) override;
+  void AddPoints(std::int64_t n, double*& xyz, float*& normals) override;
+  VertexId* AddTriangles(std::int64_t n) override;
   /// The surface received so far.
   vtkSmartPointer<vtkPolyData> Finish();
 

@@ -178,7 +178,7 @@ int EdgeCorner(int edge)
   return (m & ((1 << axis) - 1)) | ((m >> axis) << (axis + 1));
 }
 
-const CellCase& MarchingCubesCase(int signs)
+const std::array<CellCase, 256>& MarchingCubesCases()
 {
   static const std::array<CellCase, 256> table = [] {
     std::array<CellCase, 256> cases;
@@ -188,7 +188,7 @@ const CellCase& MarchingCubesCase(int signs)
     }
     return cases;
   }();
-  return table[signs];
+  return table;
 }
 
 } // namespace nv

@@ -39,7 +39,7 @@ struct CellCase
   std::array<std::array<std::uint8_t, 3>, 5> Triangles{};
 };
 
-const CellCase& MarchingCubesCase(int signs);
+const std::array<CellCase, 256>& MarchingCubesCases();
 
 } // namespace nv
 

@@ -17,6 +17,8 @@ namespace
 {
 constexpr int WindowSize = BrickSize + 3;      ///< nodes -1 .. 9 of a brick along each axis
 constexpr int EdgeWords = 3 * BrickNodes / 64; ///< one bit per edge, three edges (x, y, z) per node
+constexpr int CornerSize = BrickSize + 1;      ///< the corners of a brick's cells along an axis
+constexpr int CornerWords = (CornerSize * CornerSize * CornerSize + 63) / 64;
 constexpr std::int64_t Grain = 8;              ///< bricks per task
 /// No vertex closer to a node than this fraction of h. A node on the level
 /// itself (phi = 0 there, or so close that the vertex rounds onto it) would
@@ -60,7 +62,9 @@ struct LayerVertices
   std::vector<std::int32_t> Slot;   ///< per brick of the layer: index into Bricks, or -1
   std::vector<std::array<std::uint64_t, EdgeWords>> Cut;
   std::vector<std::array<std::uint16_t, EdgeWords>> Before; ///< cut edges in the brick's earlier words
-  std::vector<std::int64_t> First;
+  std::vector<VertexId> First;
+  /// Bit i + 9 (j + 9 k): the brick's node (i, j, k), 0 <= i, j, k <= 8, is at or above the level.
+  std::vector<std::array<std::uint64_t, CornerWords>> Above;
 };
 
 class Contourer
@@ -192,18 +196,22 @@ private:
           const bool inGrid = values.InGrid && x >= 0 && x < this->Bricks[0] && y >= 0 && y < this->Bricks[1];
           const std::int64_t inLayer = x + this->Bricks[0] * y;
           const std::int32_t slot = inGrid ? values.Slot[static_cast<std::size_t>(inLayer)] : -1;
-          const float* source = slot >= 0 ? &values.Values[static_cast<std::size_t>(slot) * BrickNodes] : nullptr;
           // Nodes beyond the grid are never read: any value will do.
           const float uniform = inGrid ? values.Uniform[static_cast<std::size_t>(inLayer)] : 0.0f;
           for (int k = 0; k < parts[oz][2]; ++k)
           {
             for (int j = 0; j < parts[oy][2]; ++j)
             {
-              for (int i = 0; i < parts[ox][2]; ++i)
+              float* row = &window.At(parts[ox][0], parts[oy][0] + j, parts[oz][0] + k);
+              if (slot >= 0)
               {
-                window.At(parts[ox][0] + i, parts[oy][0] + j, parts[oz][0] + k) = source
-                  ? source[(parts[ox][1] + i) + BrickSize * ((parts[oy][1] + j) + BrickSize * (parts[oz][1] + k))]
-                  : uniform;
+                const float* source = &values.Values[static_cast<std::size_t>(slot) * BrickNodes +
+                  static_cast<std::size_t>(parts[ox][1] + BrickSize * ((parts[oy][1] + j) + BrickSize * (parts[oz][1] + k)))];
+                std::copy(source, source + parts[ox][2], row);
+              }
+              else
+              {
+                std::fill(row, row + parts[ox][2], uniform);
               }
             }
           }
@@ -309,6 +317,8 @@ private:
     return count;
   }
 
+  /// The vertices of a layer's cut bricks: their ids (in brick order, then
+  /// edge order), their coordinates and normals to the sink.
   void MakeVertices(std::int64_t layer, bool planeOnly)
   {
     LayerVertices& vertices = this->VerticesOf(layer);
@@ -323,30 +333,30 @@ private:
     vertices.Cut.resize(static_cast<std::size_t>(n));
     vertices.Before.resize(static_cast<std::size_t>(n));
     vertices.First.resize(static_cast<std::size_t>(n));
+    vertices.Above.resize(static_cast<std::size_t>(n));
+    // The cut edges, then room for their vertices, then the vertices.
     ParallelFor(0, n, Grain, [&](std::int64_t begin, std::int64_t end) {
       Window window;
       for (std::int64_t r = begin; r < end; ++r)
       {
         this->FillWindow(vertices.Bricks[r], window);
-        vertices.First[r] = this->MarkCutEdges(window, vertices.Bricks[r], planeOnly, vertices.Cut[r]);
+        MarkAbove(window, vertices.Above[r]);
+        this->MarkCutEdges(window, vertices.Bricks[r], planeOnly, vertices.Cut[r]);
       }
     });
-    // Ids in brick order, then edge order within a brick.
-    const std::int64_t layerFirst = this->NextId;
+    const VertexId layerFirst = this->NextId;
     for (std::int64_t r = 0; r < n; ++r)
     {
-      const std::int64_t count = vertices.First[r];
       vertices.First[r] = this->NextId;
-      this->NextId += count;
-      int before = 0;
       for (int w = 0; w < EdgeWords; ++w)
       {
-        vertices.Before[r][w] = static_cast<std::uint16_t>(before);
-        before += Popcount(vertices.Cut[r][w]);
+        vertices.Before[r][w] = static_cast<std::uint16_t>(this->NextId - vertices.First[r]);
+        this->NextId += Popcount(vertices.Cut[r][w]);
       }
     }
-    std::vector<double> xyz(static_cast<std::size_t>(3 * (this->NextId - layerFirst)));
-    std::vector<float> normals(xyz.size());
+    double* xyz = nullptr;
+    float* normals = nullptr;
+    this->Sink.AddPoints(this->NextId - layerFirst, xyz, normals);
     ParallelFor(0, n, Grain, [&](std::int64_t begin, std::int64_t end) {
       Window window;
       for (std::int64_t r = begin; r < end; ++r)
@@ -354,22 +364,36 @@ private:
         this->FillWindow(vertices.Bricks[r], window);
         std::int64_t first[3];
         this->FirstNode(vertices.Bricks[r], first);
-        std::int64_t id = vertices.First[r] - layerFirst;
+        VertexId v = vertices.First[r] - layerFirst;
         for (int w = 0; w < EdgeWords; ++w)
         {
-          for (std::uint64_t bits = vertices.Cut[r][w]; bits; bits &= bits - 1, ++id)
+          for (std::uint64_t bits = vertices.Cut[r][w]; bits; bits &= bits - 1, ++v)
           {
-            const int bit = 64 * w + Popcount((bits & (~bits + 1)) - 1); // lowest set bit
-            this->Vertex(window, first, bit, &xyz[static_cast<std::size_t>(3 * id)], &normals[static_cast<std::size_t>(3 * id)]);
+            const int bit = 64 * w + Popcount((bits & (~bits + 1)) - 1); // the lowest set bit
+            this->Vertex(window, first, bit, xyz + 3 * v, normals + 3 * v);
           }
         }
       }
     });
-    this->Sink.AddPoints(xyz.data(), normals.data(), this->NextId - layerFirst);
+  }
+
+  static void MarkAbove(const Window& window, std::array<std::uint64_t, CornerWords>& above)
+  {
+    above.fill(0);
+    for (int k = 0, bit = 0; k < CornerSize; ++k)
+    {
+      for (int j = 0; j < CornerSize; ++j)
+      {
+        for (int i = 0; i < CornerSize; ++i, ++bit)
+        {
+          above[static_cast<std::size_t>(bit / 64)] |= std::uint64_t(window.At(i, j, k) >= 0.0f) << (bit % 64);
+        }
+      }
+    }
   }
 
   /// The id of the vertex on edge `edge` of cell (i, j, k) of brick b.
-  std::int64_t VertexId(const std::int64_t b[3], int i, int j, int k, int edge)
+  VertexId IdOf(const std::int64_t b[3], int i, int j, int k, int edge)
   {
     const int corner = EdgeCorner(edge);
     const int node[3] = { i + (corner & 1), j + ((corner >> 1) & 1), k + ((corner >> 2) & 1) };
@@ -385,10 +409,13 @@ private:
 
   /// Visits the cut cells of a brick: fn(i, j, k, case).
   template <typename Fn>
-  void ForEachCutCell(const Window& window, std::int64_t brick, Fn&& fn) const
+  void ForEachCutCell(const LayerVertices& vertices, std::int64_t r, Fn&& fn) const
   {
     std::int64_t first[3];
-    this->FirstNode(brick, first);
+    this->FirstNode(vertices.Bricks[r], first);
+    const std::array<std::uint64_t, CornerWords>& above = vertices.Above[r];
+    auto isAbove = [&above](int bit) { return static_cast<int>((above[bit / 64] >> (bit % 64)) & 1); };
+    const std::array<CellCase, 256>& cases = MarchingCubesCases();
     for (int k = 0; k < BrickSize && first[2] + k + 1 < this->TheGrid.Dims[2]; ++k)
     {
       for (int j = 0; j < BrickSize && first[1] + j + 1 < this->TheGrid.Dims[1]; ++j)
@@ -398,55 +425,59 @@ private:
           int signs = 0;
           for (int c = 0; c < 8; ++c)
           {
-            signs |= (window.At(i + (c & 1), j + ((c >> 1) & 1), k + ((c >> 2) & 1)) >= 0.0f) << c;
+            signs |= isAbove((i + (c & 1)) + CornerSize * ((j + ((c >> 1) & 1)) + CornerSize * (k + (c >> 2)))) << c;
           }
-          if (signs != 0 && signs != 255)
+          if (cases[signs].Count > 0)
           {
-            fn(i, j, k, MarchingCubesCase(signs));
+            fn(i, j, k, cases[signs]);
           }
         }
       }
     }
   }
 
+  /// The triangles of a layer's cut cells, to the sink in brick order.
   void MakeTriangles(std::int64_t layer)
   {
-    const std::vector<std::int64_t>& bricks = this->VerticesOf(layer).Bricks;
-    const std::int64_t n = static_cast<std::int64_t>(bricks.size());
+    const LayerVertices& vertices = this->VerticesOf(layer);
+    const std::int64_t n = static_cast<std::int64_t>(vertices.Bricks.size());
     std::vector<std::int64_t> start(static_cast<std::size_t>(n + 1), 0);
     ParallelFor(0, n, Grain, [&](std::int64_t begin, std::int64_t end) {
-      Window window;
       for (std::int64_t r = begin; r < end; ++r)
       {
-        this->FillWindow(bricks[r], window);
-        this->ForEachCutCell(window, bricks[r], [&](int, int, int, const CellCase& c) { start[r + 1] += c.Count; });
+        this->ForEachCutCell(vertices, r, [&](int, int, int, const CellCase& cell) { start[r + 1] += cell.Count; });
       }
     });
     for (std::int64_t r = 0; r < n; ++r)
     {
       start[r + 1] += start[r];
     }
-    std::vector<std::int64_t> ids(static_cast<std::size_t>(3 * start[n]));
+    VertexId* ids = this->Sink.AddTriangles(start[n]);
     ParallelFor(0, n, Grain, [&](std::int64_t begin, std::int64_t end) {
-      Window window;
       for (std::int64_t r = begin; r < end; ++r)
       {
-        this->FillWindow(bricks[r], window);
         std::int64_t b[3];
-        this->BrickCoordinates(bricks[r], b);
-        std::int64_t* out = &ids[static_cast<std::size_t>(3 * start[r])];
-        this->ForEachCutCell(window, bricks[r], [&](int i, int j, int k, const CellCase& c) {
-          for (int t = 0; t < c.Count; ++t)
+        this->BrickCoordinates(vertices.Bricks[r], b);
+        VertexId* out = ids + 3 * start[r];
+        this->ForEachCutCell(vertices, r, [&](int i, int j, int k, const CellCase& cell) {
+          VertexId id[CellEdges];
+          int known = 0; // the edges whose id is in id[]
+          for (int t = 0; t < cell.Count; ++t)
           {
             for (int v = 0; v < 3; ++v)
             {
-              *out++ = this->VertexId(b, i, j, k, c.Triangles[t][v]);
+              const int e = cell.Triangles[t][v];
+              if (!((known >> e) & 1))
+              {
+                id[e] = this->IdOf(b, i, j, k, e);
+                known |= 1 << e;
+              }
+              *out++ = id[e];
             }
           }
         });
       }
     });
-    this->Sink.AddTriangles(ids.data(), start[n]);
   }
 
   const Grid& TheGrid;
@@ -456,21 +487,24 @@ private:
   std::int64_t PerLayer;
   std::array<LayerValues, 4> ValueRing;
   std::array<LayerVertices, 2> VertexRing;
-  std::int64_t NextId = 0;
+  VertexId NextId = 0;
 };
 } // namespace
 
 SurfaceSink::~SurfaceSink() = default;
 
-void SurfaceMesh::AddPoints(const double* xyz, const float* normals, std::int64_t n)
+void SurfaceMesh::AddPoints(std::int64_t n, double*& xyz, float*& normals)
 {
-  this->Points.insert(this->Points.end(), xyz, xyz + 3 * n);
-  this->Normals.insert(this->Normals.end(), normals, normals + 3 * n);
+  this->Points.resize(this->Points.size() + static_cast<std::size_t>(3 * n));
+  this->Normals.resize(this->Normals.size() + static_cast<std::size_t>(3 * n));
+  xyz = this->Points.data() + this->Points.size() - 3 * n;
+  normals = this->Normals.data() + this->Normals.size() - 3 * n;
 }
 
-void SurfaceMesh::AddTriangles(const std::int64_t* ids, std::int64_t n)
+VertexId* SurfaceMesh::AddTriangles(std::int64_t n)
 {
-  this->Triangles.insert(this->Triangles.end(), ids, ids + 3 * n);
+  this->Triangles.resize(this->Triangles.size() + static_cast<std::size_t>(3 * n));
+  return this->Triangles.data() + this->Triangles.size() - 3 * n;
 }
 
 bool ContourBricks(const Grid& grid, const BrickField& field, SurfaceSink& sink, std::int64_t layerBegin,

@@ -35,26 +35,32 @@ namespace nv
 class BrickField;
 class Monitor;
 
+/// A vertex's number in the output: long long, as VTK's 64-bit ids
+/// (vtkIdType), so that a sink can hand out a VTK array's own memory.
+using VertexId = long long;
+
 /// Receives the surface as it is made, brick layer by brick layer.
 class SurfaceSink
 {
 public:
   virtual ~SurfaceSink();
-  /// n vertices: world coordinates (xyz) and unit normals (xyz).
-  virtual void AddPoints(const double* xyz, const float* normals, std::int64_t n) = 0;
-  /// n triangles, three vertex ids each (vertices numbered from 0 in the order added).
-  virtual void AddTriangles(const std::int64_t* ids, std::int64_t n) = 0;
+  /// Room for n more vertices, filled after the call (possibly by several
+  /// threads): 3 n world coordinates (xyz) and 3 n unit normals.
+  virtual void AddPoints(std::int64_t n, double*& xyz, float*& normals) = 0;
+  /// Room for n more triangles, filled likewise: three vertex ids each
+  /// (vertices numbered from 0 in the order of their room).
+  virtual VertexId* AddTriangles(std::int64_t n) = 0;
 };
 
 /// A sink that keeps the surface in plain arrays.
 class SurfaceMesh : public SurfaceSink
 {
 public:
-  void AddPoints(const double* xyz, const float* normals, std::int64_t n) override;
-  void AddTriangles(const std::int64_t* ids, std::int64_t n) override;
+  void AddPoints(std::int64_t n, double*& xyz, float*& normals) override;
+  VertexId* AddTriangles(std::int64_t n) override;
   std::vector<double> Points;
   std::vector<float> Normals;
-  std::vector<std::int64_t> Triangles;
+  std::vector<VertexId> Triangles;
 };
 
 /**

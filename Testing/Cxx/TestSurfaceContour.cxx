@@ -160,7 +160,7 @@ void TestCases()
     const auto reference = FlyingEdges(grid, DenseValues(grid, field));
     const auto ours = ToPolyData(mesh);
     different += !SameAsFlyingEdges(ours, reference, grid, "one cell");
-    different += nv::MarchingCubesCase(signs).Count != reference->GetNumberOfPolys();
+    different += nv::MarchingCubesCases()[signs].Count != reference->GetNumberOfPolys();
     NV_CHECK(nvtest::MisorientedTriangles(ours) == 0);
   }
   std::printf("256 cases of a cell: %d differ from vtkFlyingEdges3D\n", different);
