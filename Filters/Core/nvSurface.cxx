@@ -16,9 +16,11 @@ namespace nv
 namespace
 {
 constexpr int WindowSize = BrickSize + 3;      ///< nodes -1 .. 9 of a brick along each axis
-constexpr int EdgeWords = 3 * BrickNodes / 64; ///< one bit per edge, three edges (x, y, z) per node
-constexpr int CornerSize = BrickSize + 1;      ///< the corners of a brick's cells along an axis
-constexpr int CornerWords = (CornerSize * CornerSize * CornerSize + 63) / 64;
+constexpr int EdgeWords = 3 * BrickNodes / 64; ///< bit 512 axis + n: the edge from node n along the axis
+constexpr int CornerSize = BrickSize + 1;      ///< the corners of a brick's cells along an axis, 0 .. 8
+/// Bit i of row j + 9 k: the brick's node (i, j, k), 0 <= i, j, k <= 8, is
+/// at or above the level. Cut edges and cells' cases are read from these bits.
+using Rows = std::array<std::uint16_t, CornerSize * CornerSize>;
 constexpr std::int64_t Grain = 8;              ///< bricks per task
 /// No vertex closer to a node than this fraction of h. A node on the level
 /// itself (phi = 0 there, or so close that the vertex rounds onto it) would
@@ -52,7 +54,7 @@ struct LayerValues
   std::vector<float> Values;         ///< BrickNodes per varying brick
 };
 
-/// The vertices of the cut bricks of one brick layer. Edge 3 n + axis of a
+/// The vertices of the cut bricks of one brick layer. Edge 512 axis + n of a
 /// brick runs from its node n along the axis; its vertex's id is the brick's
 /// first id plus the number of cut edges before it.
 struct LayerVertices
@@ -63,8 +65,7 @@ struct LayerVertices
   std::vector<std::array<std::uint64_t, EdgeWords>> Cut;
   std::vector<std::array<std::uint16_t, EdgeWords>> Before; ///< cut edges in the brick's earlier words
   std::vector<VertexId> First;
-  /// Bit i + 9 (j + 9 k): the brick's node (i, j, k), 0 <= i, j, k <= 8, is at or above the level.
-  std::vector<std::array<std::uint64_t, CornerWords>> Above;
+  std::vector<Rows> Above;
 };
 
 class Contourer
@@ -241,7 +242,7 @@ private:
   /// The vertex on cut edge `bit` of a brick whose first node is `first`.
   void Vertex(const Window& window, const std::int64_t first[3], int bit, double xyz[3], float normal[3]) const
   {
-    const int node = bit / 3, axis = bit % 3;
+    const int node = bit % BrickNodes, axis = bit / BrickNodes;
     int p0[3] = { node & (BrickSize - 1), (node >> BrickShift) & (BrickSize - 1), node >> (2 * BrickShift) };
     int p1[3] = { p0[0], p0[1], p0[2] };
     ++p1[axis];
@@ -279,42 +280,34 @@ private:
   }
 
   /// Marks the brick's cut edges (those of its first node plane along x and
-  /// y only, if planeOnly); returns their number.
-  int MarkCutEdges(
-    const Window& window, std::int64_t brick, bool planeOnly, std::array<std::uint64_t, EdgeWords>& cut) const
+  /// y only, if planeOnly): the edges whose two nodes lie on both sides.
+  void MarkCutEdges(const Rows& above, std::int64_t brick, bool planeOnly, std::array<std::uint64_t, EdgeWords>& cut) const
   {
     std::int64_t first[3];
     this->FirstNode(brick, first);
-    cut.fill(0);
-    int count = 0;
-    const int kEnd = planeOnly ? 1 : BrickSize;
-    for (int k = 0; k < kEnd && first[2] + k < this->TheGrid.Dims[2]; ++k)
+    int nodes[3], edges[3]; // per axis: the brick's nodes on the grid, and the edges from them
+    for (int a = 0; a < 3; ++a)
     {
-      for (int j = 0; j < BrickSize && first[1] + j < this->TheGrid.Dims[1]; ++j)
+      nodes[a] = static_cast<int>(std::min<std::int64_t>(BrickSize, this->TheGrid.Dims[a] - first[a]));
+      edges[a] = static_cast<int>(std::min<std::int64_t>(BrickSize, this->TheGrid.Dims[a] - 1 - first[a]));
+    }
+    cut.fill(0);
+    const unsigned present = (1u << nodes[0]) - 1u;
+    for (int k = 0; k < (planeOnly ? 1 : nodes[2]); ++k)
+    {
+      for (int j = 0; j < nodes[1]; ++j)
       {
-        for (int i = 0; i < BrickSize && first[0] + i < this->TheGrid.Dims[0]; ++i)
+        const unsigned row = above[static_cast<std::size_t>(j + CornerSize * k)];
+        const unsigned along[3] = { (row ^ (row >> 1)) & ((1u << edges[0]) - 1u),
+          j < edges[1] ? (row ^ above[static_cast<std::size_t>(j + 1 + CornerSize * k)]) & present : 0u,
+          k < edges[2] && !planeOnly ? (row ^ above[static_cast<std::size_t>(j + CornerSize * (k + 1))]) & present : 0u };
+        const int byte = j + BrickSize * k; // the row's 8 nodes are bits 8 byte .. 8 byte + 7 of an axis
+        for (int axis = 0; axis < (planeOnly ? 2 : 3); ++axis)
         {
-          const std::int64_t g[3] = { first[0] + i, first[1] + j, first[2] + k };
-          const bool above = window.At(i, j, k) >= 0.0f;
-          for (int axis = 0; axis < (planeOnly ? 2 : 3); ++axis)
-          {
-            if (g[axis] + 1 >= this->TheGrid.Dims[axis])
-            {
-              continue;
-            }
-            const bool otherAbove =
-              window.At(i + (axis == 0), j + (axis == 1), k + (axis == 2)) >= 0.0f;
-            if (above != otherAbove)
-            {
-              const int bit = 3 * (i + BrickSize * (j + BrickSize * k)) + axis;
-              cut[static_cast<std::size_t>(bit / 64)] |= std::uint64_t(1) << (bit % 64);
-              ++count;
-            }
-          }
+          cut[static_cast<std::size_t>(axis * (BrickNodes / 64) + byte / 8)] |= std::uint64_t(along[axis]) << (8 * (byte % 8));
         }
       }
     }
-    return count;
   }
 
   /// The vertices of a layer's cut bricks: their ids (in brick order, then
@@ -341,7 +334,7 @@ private:
       {
         this->FillWindow(vertices.Bricks[r], window);
         MarkAbove(window, vertices.Above[r]);
-        this->MarkCutEdges(window, vertices.Bricks[r], planeOnly, vertices.Cut[r]);
+        this->MarkCutEdges(vertices.Above[r], vertices.Bricks[r], planeOnly, vertices.Cut[r]);
       }
     });
     const VertexId layerFirst = this->NextId;
@@ -377,17 +370,18 @@ private:
     });
   }
 
-  static void MarkAbove(const Window& window, std::array<std::uint64_t, CornerWords>& above)
+  static void MarkAbove(const Window& window, Rows& above)
   {
-    above.fill(0);
-    for (int k = 0, bit = 0; k < CornerSize; ++k)
+    for (int k = 0; k < CornerSize; ++k)
     {
       for (int j = 0; j < CornerSize; ++j)
       {
-        for (int i = 0; i < CornerSize; ++i, ++bit)
+        unsigned row = 0;
+        for (int i = 0; i < CornerSize; ++i)
         {
-          above[static_cast<std::size_t>(bit / 64)] |= std::uint64_t(window.At(i, j, k) >= 0.0f) << (bit % 64);
+          row |= static_cast<unsigned>(window.At(i, j, k) >= 0.0f) << i;
         }
+        above[static_cast<std::size_t>(j + CornerSize * k)] = static_cast<std::uint16_t>(row);
       }
     }
   }
@@ -400,9 +394,8 @@ private:
     const LayerVertices& vertices = this->VerticesOf(b[2] + (node[2] >> BrickShift));
     const std::int32_t r = vertices.Slot[static_cast<std::size_t>(
       (b[0] + (node[0] >> BrickShift)) + this->Bricks[0] * (b[1] + (node[1] >> BrickShift)))];
-    const int bit = 3 * ((node[0] & (BrickSize - 1)) +
-                          BrickSize * ((node[1] & (BrickSize - 1)) + BrickSize * (node[2] & (BrickSize - 1)))) +
-      EdgeAxis(edge);
+    const int bit = BrickNodes * EdgeAxis(edge) + (node[0] & (BrickSize - 1)) +
+      BrickSize * ((node[1] & (BrickSize - 1)) + BrickSize * (node[2] & (BrickSize - 1)));
     const std::uint64_t below = vertices.Cut[r][bit / 64] & ((std::uint64_t(1) << (bit % 64)) - 1);
     return vertices.First[r] + vertices.Before[r][bit / 64] + Popcount(below);
   }
@@ -413,20 +406,25 @@ private:
   {
     std::int64_t first[3];
     this->FirstNode(vertices.Bricks[r], first);
-    const std::array<std::uint64_t, CornerWords>& above = vertices.Above[r];
-    auto isAbove = [&above](int bit) { return static_cast<int>((above[bit / 64] >> (bit % 64)) & 1); };
+    const Rows& above = vertices.Above[r];
     const std::array<CellCase, 256>& cases = MarchingCubesCases();
     for (int k = 0; k < BrickSize && first[2] + k + 1 < this->TheGrid.Dims[2]; ++k)
     {
       for (int j = 0; j < BrickSize && first[1] + j + 1 < this->TheGrid.Dims[1]; ++j)
       {
+        // The four rows of corners of a row of cells; corner c = x + 2 y + 4 z.
+        const unsigned r00 = above[static_cast<std::size_t>(j + CornerSize * k)];
+        const unsigned r10 = above[static_cast<std::size_t>(j + 1 + CornerSize * k)];
+        const unsigned r01 = above[static_cast<std::size_t>(j + CornerSize * (k + 1))];
+        const unsigned r11 = above[static_cast<std::size_t>(j + 1 + CornerSize * (k + 1))];
+        if (r00 == r10 && r00 == r01 && r00 == r11 && (r00 == 0u || r00 == (1u << CornerSize) - 1u))
+        {
+          continue; // all corners on one side
+        }
         for (int i = 0; i < BrickSize && first[0] + i + 1 < this->TheGrid.Dims[0]; ++i)
         {
-          int signs = 0;
-          for (int c = 0; c < 8; ++c)
-          {
-            signs |= isAbove((i + (c & 1)) + CornerSize * ((j + ((c >> 1) & 1)) + CornerSize * (k + (c >> 2)))) << c;
-          }
+          const int signs = static_cast<int>(
+            ((r00 >> i) & 3u) | (((r10 >> i) & 3u) << 2) | (((r01 >> i) & 3u) << 4) | (((r11 >> i) & 3u) << 6));
           if (cases[signs].Count > 0)
           {
             fn(i, j, k, cases[signs]);

@@ -76,39 +76,31 @@ void BandField::Values(std::int64_t brick, float values[BrickNodes]) const
   const NarrowBand& band = this->Band;
   const Grid& grid = band.GridNodes;
   const std::int64_t a = std::lower_bound(band.Bricks.begin(), band.Bricks.end(), brick) - band.Bricks.begin();
+  // Nodes off the band: their side of the shell.
+  const std::uint64_t* inside = &band.Inside[8 * a];
+  for (int n = 0; n < BrickNodes; ++n)
+  {
+    values[n] = ((inside[n / 64] >> (n % 64)) & 1) ? this->Psi.Inside() : this->Psi.Outside();
+  }
+  // Band nodes: each colour's list, in ascending grid index, row by row of the brick.
   const std::int64_t first[3] = { (brick % this->BrickDims[0]) << BrickShift,
     ((brick / this->BrickDims[0]) % this->BrickDims[1]) << BrickShift,
     (brick / (this->BrickDims[0] * this->BrickDims[1])) << BrickShift };
-  // The brick's nodes in ascending grid index, merged with its red and black
-  // band nodes (each listed in ascending grid index).
-  std::int64_t red = band.RedStart[a], black = band.BlackStart[a];
-  const std::int64_t redEnd = band.RedStart[a + 1], blackEnd = band.BlackStart[a + 1];
-  const std::uint64_t* inside = &band.Inside[8 * a];
-  for (int k = 0; k < BrickSize; ++k)
+  for (const auto* start : { &band.RedStart, &band.BlackStart })
   {
-    for (int j = 0; j < BrickSize; ++j)
+    std::int64_t s = (*start)[a];
+    const std::int64_t end = (*start)[a + 1];
+    for (int row = 0; row < BrickSize * BrickSize && s < end; ++row)
     {
-      for (int i = 0; i < BrickSize; ++i)
+      const int j = row % BrickSize, k = row / BrickSize;
+      if (first[1] + j >= grid.Dims[1] || first[2] + k >= grid.Dims[2])
       {
-        const int n = i + BrickSize * (j + BrickSize * k);
-        if (first[0] + i >= grid.Dims[0] || first[1] + j >= grid.Dims[1] || first[2] + k >= grid.Dims[2])
-        {
-          values[n] = this->Psi.Outside();
-          continue;
-        }
-        const std::int64_t node = grid.Index(first[0] + i, first[1] + j, first[2] + k);
-        if (red < redEnd && band.Node[red] == node)
-        {
-          values[n] = this->Psi(this->Phi[red++]);
-        }
-        else if (black < blackEnd && band.Node[black] == node)
-        {
-          values[n] = this->Psi(this->Phi[black++]);
-        }
-        else
-        {
-          values[n] = ((inside[n / 64] >> (n % 64)) & 1) ? this->Psi.Inside() : this->Psi.Outside();
-        }
+        continue;
+      }
+      const std::int64_t rowStart = grid.Index(first[0], first[1] + j, first[2] + k);
+      for (; s < end && band.Node[s] < rowStart + BrickSize; ++s)
+      {
+        values[BrickSize * row + (band.Node[s] - rowStart)] = this->Psi(this->Phi[s]);
       }
     }
   }
