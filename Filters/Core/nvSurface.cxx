@@ -204,15 +204,24 @@ private:
             for (int j = 0; j < parts[oy][2]; ++j)
             {
               float* row = &window.At(parts[ox][0], parts[oy][0] + j, parts[oz][0] + k);
-              if (slot >= 0)
+              const float* source = slot < 0 ? nullptr
+                                             : &values.Values[static_cast<std::size_t>(slot) * BrickNodes +
+                                                 static_cast<std::size_t>(parts[ox][1] +
+                                                   BrickSize * ((parts[oy][1] + j) + BrickSize * (parts[oz][1] + k)))];
+              // Rows of 1, 8 or 2 values: constant sizes, copied inline.
+              if (ox == 1)
               {
-                const float* source = &values.Values[static_cast<std::size_t>(slot) * BrickNodes +
-                  static_cast<std::size_t>(parts[ox][1] + BrickSize * ((parts[oy][1] + j) + BrickSize * (parts[oz][1] + k)))];
-                std::copy(source, source + parts[ox][2], row);
+                for (int i = 0; i < BrickSize; ++i)
+                {
+                  row[i] = source ? source[i] : uniform;
+                }
               }
               else
               {
-                std::fill(row, row + parts[ox][2], uniform);
+                for (int i = 0; i < parts[ox][2]; ++i)
+                {
+                  row[i] = source ? source[i] : uniform;
+                }
               }
             }
           }

@@ -18,7 +18,9 @@ ImpliedDistance::ImpliedDistance(const Parameters& parameters)
 
 float ImpliedDistance::operator()(double phi) const
 {
-  double psi = std::fabs(phi) < 1.0 ? this->Scale * std::atanh(phi) : std::copysign(this->Cap, phi);
+  // atanh(phi) = log((1 + phi) / (1 - phi)) / 2, the faster form.
+  double psi = std::fabs(phi) < 1.0 ? 0.5 * this->Scale * std::log((1.0 + phi) / (1.0 - phi))
+                                    : std::copysign(this->Cap, phi);
   return static_cast<float>(std::min(this->Cap, std::max(-this->Cap, psi)));
 }
 
