@@ -46,7 +46,6 @@ struct Window
 /// one value for each other brick.
 struct LayerValues
 {
-  std::int64_t Layer = -1;
   bool InGrid = false;
   std::vector<float> Uniform;        ///< per brick of the layer
   std::vector<std::int64_t> Varying; ///< ascending
@@ -59,7 +58,6 @@ struct LayerValues
 /// first id plus the number of cut edges before it.
 struct LayerVertices
 {
-  std::int64_t Layer = -1;
   std::vector<std::int64_t> Bricks; ///< ascending
   std::vector<std::int32_t> Slot;   ///< per brick of the layer: index into Bricks, or -1
   std::vector<std::array<std::uint64_t, EdgeWords>> Cut;
@@ -113,15 +111,14 @@ public:
   }
 
 private:
-  // Triangles of layer z - 1 read the values of layers z - 2 .. z while the
-  // vertices of layer z read z - 1 .. z + 1: four layers of values, two of vertices.
-  LayerValues& ValuesOf(std::int64_t layer) { return this->ValueRing[static_cast<std::size_t>((layer + 4) % 4)]; }
+  // The vertices of layer z read the values of layers z - 1 .. z + 1, and
+  // the triangles of layer z - 1 the vertices of layers z - 1 and z.
+  LayerValues& ValuesOf(std::int64_t layer) { return this->ValueRing[static_cast<std::size_t>((layer + 3) % 3)]; }
   LayerVertices& VerticesOf(std::int64_t layer) { return this->VertexRing[static_cast<std::size_t>((layer + 2) % 2)]; }
 
   void Load(std::int64_t layer)
   {
     LayerValues& values = this->ValuesOf(layer);
-    values.Layer = layer;
     values.InGrid = layer >= 0 && layer < this->Bricks[2];
     values.Varying.clear();
     if (!values.InGrid)
@@ -208,7 +205,8 @@ private:
                                              : &values.Values[static_cast<std::size_t>(slot) * BrickNodes +
                                                  static_cast<std::size_t>(parts[ox][1] +
                                                    BrickSize * ((parts[oy][1] + j) + BrickSize * (parts[oz][1] + k)))];
-              // Rows of 1, 8 or 2 values: constant sizes, copied inline.
+              // Rows of 1, 8 or 2 values; a constant count for the 8 lets the
+              // compiler copy them inline rather than call memmove.
               if (ox == 1)
               {
                 for (int i = 0; i < BrickSize; ++i)
@@ -324,7 +322,6 @@ private:
   void MakeVertices(std::int64_t layer, bool planeOnly)
   {
     LayerVertices& vertices = this->VerticesOf(layer);
-    vertices.Layer = layer;
     vertices.Bricks = this->CutBricks(layer);
     const std::int64_t n = static_cast<std::int64_t>(vertices.Bricks.size());
     vertices.Slot.assign(static_cast<std::size_t>(this->PerLayer), -1);
@@ -492,7 +489,7 @@ private:
   SurfaceSink& Sink;
   std::array<std::int64_t, 3> Bricks;
   std::int64_t PerLayer;
-  std::array<LayerValues, 4> ValueRing;
+  std::array<LayerValues, 3> ValueRing;
   std::array<LayerVertices, 2> VertexRing;
   VertexId NextId = 0;
 };
