@@ -3,11 +3,14 @@
 #include "vtkNarrowVolumeReconstruction.h"
 
 #include "nvParallel.h"
+#include "nvPieces.h"
 #include "nvReconstruction.h"
+#include "nvSampling.h"
 #include "nvSheets.h"
 #include "nvSurface.h"
 #include "nvSurfaceField.h"
 #include "vtkNarrowVolumeCommunicator.h"
+#include "vtkNarrowVolumePieces.h"
 #include "vtkNarrowVolumeSurface.h"
 
 #include "vtkAlgorithmOutput.h"
@@ -103,6 +106,19 @@ std::vector<double> PointsOf(vtkPointSet* input)
     }
   }
   return xyz;
+}
+
+/// Runs fn with NumberOfThreads threads, and all cores when the process-wide
+/// backend is Sequential (the default of Debian's ParaView).
+template <class Function>
+void WithThreads(int threads, Function fn)
+{
+  std::string backend = vtkSMPTools::GetBackend() ? vtkSMPTools::GetBackend() : "Sequential";
+  if (backend == "Sequential")
+  {
+    backend = "STDThread";
+  }
+  vtkSMPTools::LocalScope(vtkSMPTools::Config{ threads, backend, false }, fn);
 }
 
 /// MemoryLimit (MiB; 0: half the physical memory) in bytes.
@@ -238,6 +254,7 @@ nv::Settings vtkNarrowVolumeReconstruction::GetSettings() const
   settings.GaussSeidelTolerance = this->GaussSeidelTolerance;
   settings.Mode = this->Domain == WHOLE_DOMAIN ? nv::Domain::WholeDomain : nv::Domain::NarrowBand;
   settings.EdgeFunction = this->EdgeStoppingFunction == EQUATION_3 ? nv::EdgeStopping::Eq3 : nv::EdgeStopping::Eq4;
+  settings.RemoveSmallPieces = this->RemoveSmallPieces;
   // phi, the optional arrays, and the isosurfacer's working memory.
   settings.OutputBytesPerNode = this->OutputVolume ? 4.0 + (this->OutputInitialPhi ? 4.0 : 0.0) +
       (this->OutputDistance ? 4.0 : 0.0) + (this->OutputNarrowBand ? 1.0 : 0.0) + 2.0
@@ -269,18 +286,21 @@ int vtkNarrowVolumeReconstruction::RequestInformation(
       several ? this->Controller->GetNumberOfProcesses() : 1);
     request->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
     connection->GetProducer()->Update(connection->GetIndex(), requests);
-    vtkPointSet* input = vtkPointSet::GetData(inputVector[0], 0);
-    if (input && input->GetNumberOfPoints() > 0)
-    {
-      input->GetBounds(bounds);
-    }
   }
+  vtkPointSet* input = vtkPointSet::GetData(inputVector[0], 0);
+  if (input && input->GetNumberOfPoints() > 0)
+  {
+    input->GetBounds(bounds);
+  }
+  std::unique_ptr<vtkNarrowVolumeCommunicator> communicator;
   if (several)
   {
-    vtkNarrowVolumeCommunicator communicator(this->Controller);
-    nv::GlobalBounds(communicator, bounds);
+    communicator.reset(new vtkNarrowVolumeCommunicator(this->Controller));
+    nv::GlobalBounds(*communicator, bounds);
   }
-  const nv::Plan plan = nv::MakePlan(this->GetSettings(), bounds);
+  std::shared_ptr<const nv::Sampling> sampling;
+  WithThreads(this->NumberOfThreads, [&]() { sampling = this->MeasureSampling(input, communicator.get()); });
+  const nv::Plan plan = nv::MakePlan(this->GetSettings(), bounds, sampling->Statistics());
   if (!plan.Valid())
   {
     // No grid: RequestData says why.
@@ -326,6 +346,8 @@ int vtkNarrowVolumeReconstruction::RequestData(
   volume->Initialize();
   surface->Initialize();
   this->RelativeChanges.clear();
+  this->OffsetDistanceUsed = this->SampleSpacingUsed = this->MedianPointSpacing = this->LargestGap = 0.0;
+  this->Gaps = this->RemovedPieces = this->RemovedVoids = 0;
   this->NumberOfBandNodes = 0;
   this->NumberOfGridNodes = 0;
   this->SetupTime = this->EvolutionTime = this->OutputTime = 0.0;
@@ -345,14 +367,8 @@ int vtkNarrowVolumeReconstruction::RequestData(
     communicator.reset(new vtkNarrowVolumeCommunicator(this->Controller));
   }
 
-  // Run, with all cores when the process-wide backend is Sequential.
-  std::string backend = vtkSMPTools::GetBackend() ? vtkSMPTools::GetBackend() : "Sequential";
-  if (backend == "Sequential")
-  {
-    backend = "STDThread";
-  }
   bool ok = false;
-  vtkSMPTools::LocalScope(vtkSMPTools::Config{ this->NumberOfThreads, backend, false }, [&]() {
+  WithThreads(this->NumberOfThreads, [&]() {
     FilterMonitor monitor(this);
     nv::Settings settings = this->GetSettings();
     settings.MemoryLimitBytes = MemoryLimitBytes(this->MemoryLimit);
@@ -380,7 +396,8 @@ int vtkNarrowVolumeReconstruction::RequestData(
         return arrays;
       });
     }
-    if (!run.Run(PointsOf(vtkPointSet::GetData(inputVector[0], 0))))
+    vtkPointSet* input = vtkPointSet::GetData(inputVector[0], 0);
+    if (!run.Run(PointsOf(input), this->MeasureSampling(input, communicator.get())))
     {
       if (!run.Error().empty())
       {
@@ -393,16 +410,26 @@ int vtkNarrowVolumeReconstruction::RequestData(
     this->RelativeChanges = run.RelativeChanges();
     this->SetupTime = run.SetupSeconds();
     this->EvolutionTime = run.EvolutionSeconds();
+    this->OffsetDistanceUsed = run.GetParameters().OffsetDistance;
+    this->SampleSpacingUsed = run.GetGrid().Spacing;
+    this->MedianPointSpacing = run.GetSampling().MedianSpacing;
+    this->Gaps = run.GetGaps().Gaps;
+    this->LargestGap = run.GetGaps().LargestGap;
+    std::copy(run.GetGaps().LargestGapCenter.begin(), run.GetGaps().LargestGapCenter.end(), this->LargestGapCenter);
     const auto start = std::chrono::steady_clock::now();
     bool explained = false;
     ok = this->ProduceOutputs(run, monitor, dense, volume, surface, distributed, explained);
     this->OutputTime = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     ok = !run.Anywhere(!ok); // every process, whatever stage it stopped in
     const double surfacePoints = run.SumAll(static_cast<double>(surface->GetNumberOfPoints()));
+    if (ok)
+    {
+      this->WarnAboutGaps(!communicator || communicator->Rank() == 0);
+    }
     if (ok && surfacePoints == 0 && !explained && (!communicator || communicator->Rank() == 0))
     {
       vtkWarningMacro("The surface is empty: the shell did not survive the evolution. The offset distance ("
-        << this->OffsetDistance << ") is probably small against the gaps between points or the grid spacing ("
+        << this->OffsetDistanceUsed << ") is probably small against the gaps between points or the grid spacing ("
         << run.GetGrid().Spacing << "): increase OffsetDistance or XiCells, or refine the grid.");
     }
   });
@@ -490,6 +517,20 @@ bool vtkNarrowVolumeReconstruction::ProduceOutputs(nv::Reconstruction& run, nv::
     done = nv::ContourBricks(grid, field, sink, 0, -1, &monitor);
   }
   surface->ShallowCopy(sink.Finish());
+  if (done && this->RemoveSmallPieces && !distributed && !monitor.Aborted())
+  {
+    // The surface's small parts go, and phi follows in the same regions.
+    const double offset = run.GetParameters().OffsetDistance;
+    std::vector<nv::DroppedPart> dropped;
+    const nv::RemovedPieces removed = nv::RemoveSmallSurfacePieces(surface, offset, dense.Phi ? &dropped : nullptr);
+    this->RemovedPieces = removed.Pieces;
+    this->RemovedVoids = removed.Voids;
+    for (const nv::DroppedPart& part : dropped)
+    {
+      nv::FlipRegion(grid, dense.Phi->GetPointer(0), volumeBegin, volumeEnd - volumeBegin, part.Vertex.data(),
+        part.Piece, 2.0 * (part.Piece ? nv::SmallPieceVolume(offset) : nv::SmallVoidVolume(offset)));
+    }
+  }
   return done && !monitor.Aborted();
 }
 
@@ -512,13 +553,73 @@ void vtkNarrowVolumeReconstruction::AddRunSummary(vtkImageData* volume)
   volume->GetFieldData()->AddArray(iterations);
   volume->GetFieldData()->AddArray(bandNodes);
   volume->GetFieldData()->AddArray(changes);
+  auto addValues = [volume](const char* name, std::initializer_list<double> values) {
+    vtkNew<vtkDoubleArray> array;
+    array->SetName(name);
+    array->SetNumberOfComponents(static_cast<int>(values.size()));
+    array->InsertNextTuple(values.begin());
+    volume->GetFieldData()->AddArray(array);
+  };
+  addValues("OffsetDistance", { this->OffsetDistanceUsed });
+  addValues("SampleSpacing", { this->SampleSpacingUsed });
+  addValues("MedianPointSpacing", { this->MedianPointSpacing });
+  addValues("NumberOfGaps", { static_cast<double>(this->Gaps) });
+  addValues("LargestGap", { this->LargestGap });
+  addValues("LargestGapCenter", { this->LargestGapCenter[0], this->LargestGapCenter[1], this->LargestGapCenter[2] });
+  addValues("RemovedPieces", { static_cast<double>(this->RemovedPieces) });
+  addValues("RemovedVoids", { static_cast<double>(this->RemovedVoids) });
+}
+
+//------------------------------------------------------------------------------
+std::shared_ptr<const nv::Sampling> vtkNarrowVolumeReconstruction::MeasureSampling(
+  vtkPointSet* input, nv::Communicator* communicator)
+{
+  // The same points (object, modification time, count) are measured once:
+  // the information pass and the data pass, and runs that only change
+  // properties, share one measurement.
+  vtkPoints* points = input ? input->GetPoints() : nullptr;
+  const vtkMTimeType time = points ? points->GetMTime() : 0;
+  const vtkIdType count = points ? points->GetNumberOfPoints() : 0;
+  bool stale = !this->Sampled || time != this->SampledTime || count != this->SampledPoints ||
+    (communicator != nullptr) != this->SampledShared;
+  if (communicator)
+  {
+    stale = communicator->MaxAll(stale ? 1.0 : 0.0) > 0.0; // all measure, or none
+  }
+  if (stale)
+  {
+    auto sampling = std::make_shared<nv::Sampling>();
+    sampling->Measure(PointsOf(input), communicator);
+    this->Sampled = sampling;
+    this->SampledTime = time;
+    this->SampledPoints = count;
+    this->SampledShared = communicator != nullptr;
+  }
+  return this->Sampled;
+}
+
+void vtkNarrowVolumeReconstruction::WarnAboutGaps(bool firstProcess)
+{
+  if (this->Gaps == 0 || !firstProcess)
+  {
+    return;
+  }
+  vtkWarningMacro("The cloud has " << this->Gaps << (this->Gaps == 1 ? " gap" : " gaps")
+    << " wider than the offset distance " << this->OffsetDistanceUsed
+    << ": there, points have no neighbour within the offset, so the shell may open (a tunnel through "
+       "its wall, or a loose piece around a point farther than twice the offset from all others). The largest gap is "
+    << this->LargestGap << " wide, at (" << this->LargestGapCenter[0] << ", " << this->LargestGapCenter[1] << ", "
+    << this->LargestGapCenter[2] << "). To bridge the gaps, set OffsetDistance to at least " << this->LargestGap
+    << ", or fill them with points; loose pieces are dropped by RemoveSmallPieces. Field data NumberOfGaps, "
+       "LargestGap and LargestGapCenter hold these figures.");
 }
 
 //------------------------------------------------------------------------------
 void vtkNarrowVolumeReconstruction::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "OffsetDistance: " << this->OffsetDistance << "\n";
+  os << indent << "OffsetDistance: " << this->OffsetDistance << (this->OffsetDistance == 0.0 ? " (automatic)" : "")
+     << "\n";
   os << indent << "SampleSpacing: " << this->SampleSpacing << "\n";
   os << indent << "MaximumDimension: " << this->MaximumDimension << "\n";
   os << indent << "XiCells: " << this->XiCells << "\n";
@@ -530,6 +631,7 @@ void vtkNarrowVolumeReconstruction::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Domain: " << (this->Domain == WHOLE_DOMAIN ? "Whole Domain" : "Narrow Band") << "\n";
   os << indent << "EdgeStoppingFunction: eq. (" << this->EdgeStoppingFunction << ")\n";
   os << indent << "Sheets: " << this->Sheets << "\n";
+  os << indent << "RemoveSmallPieces: " << this->RemoveSmallPieces << "\n";
   os << indent << "OutputVolume: " << this->OutputVolume << "\n";
   os << indent << "OutputInitialPhi: " << this->OutputInitialPhi << "\n";
   os << indent << "OutputDistance: " << this->OutputDistance << "\n";

@@ -30,6 +30,55 @@ double Seconds(std::chrono::steady_clock::time_point start)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+/// The settings with the automatic offset (OffsetDistance 0) and spacing
+/// (SampleSpacing <= 0 and MaximumDimension 0) chosen as nvSampling.h says.
+Settings ResolveAutomatic(const Settings& settings, const SamplingStatistics& sampling, const double bounds[6], Plan& plan)
+{
+  Settings values = settings;
+  const bool automaticOffset = settings.OffsetDistance == 0.0;
+  const bool automaticSpacing = !(settings.SampleSpacing > 0.0) && settings.MaximumDimension == 0;
+  plan.AutomaticOffset = automaticOffset;
+  plan.AutomaticSpacing = automaticSpacing;
+  if (!(bounds[0] <= bounds[1]) || (automaticOffset && !sampling.Valid()))
+  {
+    return values; // no points, or no spacing to follow: MakePlan says so
+  }
+  if (automaticOffset)
+  {
+    values.OffsetDistance = std::max(1.5 * sampling.MedianSpacing, sampling.WideSpacing);
+  }
+  if (automaticSpacing && std::isfinite(values.OffsetDistance) && values.OffsetDistance > 0.0)
+  {
+    // The paper's l = 4 h, unless the grid would get too large.
+    double spacing = values.OffsetDistance / 4.0;
+    const double coarsest =
+      SpacingForMaximumDimension(bounds, values.OffsetDistance, values.XiCells, AutomaticMaximumDimension);
+    if (coarsest > spacing)
+    {
+      spacing = coarsest;
+      if (automaticOffset)
+      {
+        values.OffsetDistance = std::max(values.OffsetDistance, 4.0 * spacing);
+      }
+    }
+    values.SampleSpacing = spacing;
+  }
+  else if (automaticOffset && values.OffsetDistance > 0.0)
+  {
+    // A spacing set by the user: the automatic offset spans at least 4 cells
+    // (the paper's l = 4 h), or the shell would not survive on that grid. With
+    // MaximumDimension the spacing grows with l's padding: a few rounds settle it.
+    for (int round = 0; round < 4; ++round)
+    {
+      const double spacing = settings.SampleSpacing > 0.0
+        ? settings.SampleSpacing
+        : SpacingForMaximumDimension(bounds, values.OffsetDistance, values.XiCells, settings.MaximumDimension);
+      values.OffsetDistance = std::max(values.OffsetDistance, 4.0 * spacing);
+    }
+  }
+  return values;
+}
+
 std::string MiB(double bytes)
 {
   std::ostringstream text;
@@ -39,19 +88,22 @@ std::string MiB(double bytes)
 } // namespace
 
 //------------------------------------------------------------------------------
-Plan MakePlan(const Settings& settings, const double bounds[6])
+Plan MakePlan(const Settings& chosen, const double bounds[6], const SamplingStatistics& sampling)
 {
   Plan plan;
   std::ostringstream error;
-  if (!std::isfinite(settings.OffsetDistance) || settings.OffsetDistance <= 0.0)
+  const Settings settings = ResolveAutomatic(chosen, sampling, bounds, plan);
+  if (!std::isfinite(chosen.OffsetDistance) || chosen.OffsetDistance < 0.0)
   {
-    error << "OffsetDistance must be a finite value > 0, not " << settings.OffsetDistance
-          << ". (In ParaView its default follows the input's size: in a script, update the input "
-             "before creating the filter, or set OffsetDistance.)";
+    error << "OffsetDistance must be a finite value > 0 (or 0: automatic), not " << chosen.OffsetDistance << ".";
   }
-  else if (!std::isfinite(settings.SampleSpacing))
+  else if (!std::isfinite(chosen.SampleSpacing))
   {
-    error << "SampleSpacing must be finite, not " << settings.SampleSpacing << ".";
+    error << "SampleSpacing must be finite, not " << chosen.SampleSpacing << ".";
+  }
+  else if (!(settings.OffsetDistance > 0.0) && bounds[0] <= bounds[1])
+  {
+    error << "An automatic OffsetDistance needs at least two distinct points; set OffsetDistance.";
   }
   else if (!std::isfinite(settings.TimeStep))
   {
@@ -187,7 +239,7 @@ bool Reconstruction::Fail(const std::string& message)
 }
 
 //------------------------------------------------------------------------------
-bool Reconstruction::Run(std::vector<double> xyz)
+bool Reconstruction::Run(std::vector<double> xyz, std::shared_ptr<const Sampling> measured)
 {
   // 1. The points: counted and checked on every process, errors agreed by all.
   double bounds[6];
@@ -217,12 +269,20 @@ bool Reconstruction::Run(std::vector<double> xyz)
     return this->Fail(error.str());
   }
 
-  // 2. The grid.
-  this->ThePlan = MakePlan(this->TheSettings, bounds);
+  // 2. The points' spacing, and the grid.
+  if (!measured)
+  {
+    auto sampling = std::make_shared<Sampling>();
+    sampling->Measure(xyz, this->Comm);
+    measured = sampling;
+  }
+  this->TheSampling = measured;
+  this->ThePlan = MakePlan(this->TheSettings, bounds, this->TheSampling->Statistics());
   if (!this->ThePlan.Valid())
   {
     return this->Fail(this->ThePlan.Error);
   }
+  this->Gaps = this->TheSampling->Gaps(this->ThePlan.Scheme.OffsetDistance, this->Comm);
   const Grid& grid = this->ThePlan.TheGrid;
   const std::int64_t layers = (grid.Dims[2] + BrickSize - 1) >> BrickShift;
 

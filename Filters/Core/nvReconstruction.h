@@ -4,8 +4,10 @@
 // section 3, for one process or for each process of a distributed run:
 //
 //   1. check the user's settings and the points (a message says what to change);
-//   2. the grid around the points' box (all processes' box), spacing h given
-//      or from the number of cells along the longest side (MakePlan);
+//   2. the points' spacing (nvSampling.h), and the grid around the points'
+//      box (all processes' box): offset l and spacing h given, from the
+//      number of cells along the longest side, or chosen from the spacing
+//      (MakePlan);
 //   3. in a distributed run, the slab of brick layers this process owns
 //      (nvPartition.h), balanced by the points per layer, and the points
 //      within reach of it, moved here from the other processes;
@@ -29,6 +31,7 @@
 #include "nvNarrowBand.h"
 #include "nvParameters.h"
 #include "nvPartition.h"
+#include "nvSampling.h"
 #include "nvTruncatedDistance.h"
 #include "nvVolume.h"
 
@@ -47,9 +50,9 @@ class SurfaceSink;
 /// What the user chooses (the filter's properties), before the grid is known.
 struct Settings
 {
-  double OffsetDistance = 0.1; ///< l, world units
+  double OffsetDistance = 0.0; ///< l, world units; 0: automatic (nvSampling.h)
   double SampleSpacing = 0.0;  ///< h, world units; <= 0: from MaximumDimension
-  int MaximumDimension = 100;  ///< cells along the padded box's longest side
+  int MaximumDimension = 0;    ///< cells along the padded box's longest side; 0: automatic
   double XiCells = 2.0;
   double EpsilonCells = 6.0;
   double TimeStep = 0.0;
@@ -60,23 +63,28 @@ struct Settings
   EdgeStopping EdgeFunction = EdgeStopping::Eq4;
   double MemoryLimitBytes = 0.0;  ///< the largest allocation of a run (> 0)
   double OutputBytesPerNode = 0.0; ///< dense output arrays, bytes per node of the piece
+  bool RemoveSmallPieces = true;   ///< drop loose pieces and tiny voids (nvPieces.h)
 };
 
-/// The grid that points with given bounds get, and the scheme's parameters on it.
+/// The grid that points with given bounds get, and the scheme's parameters on
+/// it (with the automatic offset and spacing filled in).
 struct Plan
 {
   Grid TheGrid;
   Parameters Scheme;
+  bool AutomaticOffset = false;
+  bool AutomaticSpacing = false;
   std::string Error; ///< why there is no grid; empty when there is one
   bool Valid() const { return this->Error.empty(); }
 };
 
 /**
  * Checks the settings and derives the grid from the points' bounds (xmin,
- * xmax, ymin, ...): the information a pipeline needs before the run, and
- * the run's own first step. The message of an invalid plan says what to change.
+ * xmax, ymin, ...) and, for the automatic offset and spacing, their sampling:
+ * the information a pipeline needs before the run, and the run's own first
+ * step. The message of an invalid plan says what to change.
  */
-Plan MakePlan(const Settings& settings, const double bounds[6]);
+Plan MakePlan(const Settings& settings, const double bounds[6], const SamplingStatistics& sampling);
 
 /// Bounds of xyz triples (empty: xmin > xmax). Returns the index of the first
 /// point with a non-finite coordinate, or -1.
@@ -106,9 +114,10 @@ public:
   /**
    * Steps 1-6 for this process's points (xyz triples). Returns false when the
    * run stops: Error() says why (the same on every process), or Aborted().
-   * In a distributed run every process must call it.
+   * In a distributed run every process must call it. `measured`: the
+   * sampling of these same points if known already (else it is measured).
    */
-  bool Run(std::vector<double> xyz);
+  bool Run(std::vector<double> xyz, std::shared_ptr<const Sampling> measured = nullptr);
   const std::string& Error() const { return this->Message; }
   bool Aborted() const { return this->Stopped; }
 
@@ -118,6 +127,10 @@ public:
   double SumAll(double value);
 
   const Grid& GetGrid() const { return this->ThePlan.TheGrid; }
+  const Plan& GetPlan() const { return this->ThePlan; }
+  const SamplingStatistics& GetSampling() const { return this->TheSampling->Statistics(); }
+  /// The gaps wider than the offset distance (nvSampling.h).
+  const GapReport& GetGaps() const { return this->Gaps; }
   const Parameters& GetParameters() const { return this->ThePlan.Scheme; }
   /// The node layers along z of this process's output piece: its owned brick
   /// layers and the first node layer of the next piece, which both share.
@@ -154,6 +167,8 @@ private:
   Communicator* Comm;
   Monitor* TheMonitor;
   Plan ThePlan;
+  std::shared_ptr<const Sampling> TheSampling;
+  GapReport Gaps;
   std::vector<LayerRange> Owners;
   Subdomain Part;
   std::int64_t Piece[2] = { 0, 0 };
