@@ -30,8 +30,10 @@
  * "SampleSpacing" used, the cloud's "MedianPointSpacing", the gaps
  * ("NumberOfGaps", "LargestGap", "LargestGapCenter") and the small pieces
  * removed ("RemovedPieces", "RemovedVoids").
- * Output port 1 (vtkPolyData): the phi = 0 surfaces, by vtkFlyingEdges3D,
- * with point normals.
+ * Output port 1 (vtkPolyData): the phi = 0 surfaces, with point normals out
+ * of the shell, contoured by marching cubes in the band's bricks from the
+ * signed distance that phi implies, sqrt(2) xi atanh(phi) (same zero set,
+ * not saturated: smooth surfaces come out smooth); closed and manifold.
  *
  * @warning
  * The work runs in parallel with vtkSMPTools. When the process-wide backend is
@@ -358,7 +360,8 @@ protected:
   nv::Settings GetSettings() const;
   /// The volume piece and the surface of a finished run; false if aborted.
   /// explained: a warning already said why the surface is empty.
-  bool ProduceOutputs(nv::Reconstruction& run, nv::Monitor& monitor, vtkInformation* volumeInfo,
+  struct DenseArrays;
+  bool ProduceOutputs(nv::Reconstruction& run, nv::Monitor& monitor, const DenseArrays& dense,
     vtkImageData* volume, vtkPolyData* surface, bool distributed, bool& explained);
   /// The run's figures as the volume's field data.
   void AddRunSummary(vtkImageData* volume);

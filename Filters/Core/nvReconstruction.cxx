@@ -4,6 +4,8 @@
 
 #include "nvCommunicator.h"
 #include "nvParallel.h"
+#include "nvSurface.h"
+#include "nvSurfaceField.h"
 
 #include <algorithm>
 #include <chrono>
@@ -309,16 +311,29 @@ bool Reconstruction::Run(std::vector<double> xyz, std::shared_ptr<const Sampling
     xyz = ExchangePoints(*this->Comm, xyz, zRanges);
   }
 
-  // 5. Distance (eq. 6, 7) and band (steps 1-3).
+  // 5. Distance (eq. 6, 7) and band (steps 1-3); the dense arrays, if
+  // asked for, take each brick's distances as the band's construction
+  // computes them.
   auto start = std::chrono::steady_clock::now();
   if (this->TheMonitor)
   {
     this->TheMonitor->Stage(0.0, 0.3);
   }
+  std::unique_ptr<VolumeWriter> volume;
+  BrickVisitor writeBrick;
+  if (this->AllocateVolume && !this->EmptyPiece())
+  {
+    this->Volume[0] = std::max(this->Computed[0], this->Piece[0] - this->VolumeGhosts);
+    this->Volume[1] = std::min(this->Computed[1], this->Piece[1] + this->VolumeGhosts);
+    volume.reset(new VolumeWriter(grid, this->ThePlan.Scheme, this->AllocateVolume(this->Volume[0], this->Volume[1]),
+      this->Volume[0], this->Volume[1]));
+    volume->Clear();
+    writeBrick = [&volume](std::int64_t brick, const double* d) { volume->WriteBrick(brick, d); };
+  }
   this->Distance.reset(new TruncatedDistance(
     grid, xyz.data(), static_cast<std::int64_t>(xyz.size() / 3), this->ThePlan.Scheme.Reach()));
   std::vector<double>().swap(xyz);
-  this->Band = BuildNarrowBand(*this->Distance, this->ThePlan.Scheme, this->TheMonitor, &this->Part);
+  this->Band = BuildNarrowBand(*this->Distance, this->ThePlan.Scheme, this->TheMonitor, &this->Part, writeBrick);
   this->SetupTime = Seconds(start);
   double failed[2] = { static_cast<double>(this->Band.RefusedSize),
     this->TheMonitor && this->TheMonitor->Aborted() ? 1.0 : 0.0 };
@@ -372,7 +387,31 @@ bool Reconstruction::Run(std::vector<double> xyz, std::shared_ptr<const Sampling
     this->Stopped = true;
     return false;
   }
+  // The outputs need the band's nodes and phi only.
+  this->Solver->ReleaseWorkspace();
+  std::vector<double>().swap(this->Band.Distance);
+  std::vector<std::uint32_t>().swap(this->Band.Neighbor);
+  if (volume)
+  {
+    volume->WriteBand(this->Band, this->Solver->GetPhi());
+  }
   return true;
+}
+
+void Reconstruction::RequestVolume(std::int64_t ghostLayers, VolumeAllocator allocate)
+{
+  this->VolumeGhosts = std::max<std::int64_t>(0, ghostLayers);
+  this->AllocateVolume = std::move(allocate);
+}
+
+bool Reconstruction::ExtractSurface(SurfaceSink& sink) const
+{
+  if (this->EmptyPiece())
+  {
+    return true;
+  }
+  const BandField field(this->Band, this->Solver->GetPhi(), this->ThePlan.Scheme);
+  return ContourBricks(this->ThePlan.TheGrid, field, sink, this->Part.Owned.Begin, this->Part.Owned.End, this->TheMonitor);
 }
 
 //------------------------------------------------------------------------------
@@ -433,13 +472,6 @@ bool Reconstruction::CheckMemory(double gridNodes, double points)
     this->ThePlan.Scheme.MaximumBandNodes = static_cast<std::int64_t>((limit - bytes) / BytesPerBandNode);
   }
   return true;
-}
-
-//------------------------------------------------------------------------------
-void Reconstruction::FillVolume(const VolumeArrays& arrays, std::int64_t kBegin, std::int64_t kEnd) const
-{
-  nv::FillVolume(*this->Distance, this->Band, this->Solver->GetPhi(), this->ThePlan.Scheme,
-    this->Distance->ReachedBricks(), arrays, kBegin, kEnd, this->TheMonitor);
 }
 
 } // namespace nv

@@ -13,9 +13,12 @@
 //      within reach of it, moved here from the other processes;
 //   4. the memory budget: the dense output and the per-brick tables before
 //      anything large exists, the band once its size is known;
-//   5. the truncated distance (eq. 6, 7) and the narrow band (steps 1-3);
-//   6. the time steps of the operator-split scheme (eq. 10-12);
-//   7. the dense arrays of the output on request (FillVolume).
+//   5. the truncated distance (eq. 6, 7) and the narrow band (steps 1-3),
+//      and, on request, the dense arrays of the output from the same
+//      distances (nvVolume.h);
+//   6. the time steps of the operator-split scheme (eq. 10-12), then the
+//      band's phi into the dense arrays;
+//   7. the phi = 0 surface, from the band (ExtractSurface, nvSurface.h).
 //
 // The VTK filter (vtkNarrowVolumeReconstruction) only converts: the input's
 // points in, the image and the surface out.
@@ -33,6 +36,7 @@
 #include "nvVolume.h"
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -41,6 +45,7 @@ namespace nv
 {
 class Communicator;
 class Monitor;
+class SurfaceSink;
 
 /// What the user chooses (the filter's properties), before the grid is known.
 struct Settings
@@ -96,6 +101,16 @@ public:
   Reconstruction(const Settings& settings, Communicator* communicator, Monitor* monitor);
   ~Reconstruction();
 
+  /// Returns the dense arrays to fill for the node layers [kBegin, kEnd).
+  using VolumeAllocator = std::function<VolumeArrays(std::int64_t kBegin, std::int64_t kEnd)>;
+  /**
+   * Asks Run for the dense arrays of this process's piece and up to
+   * `ghostLayers` node layers on each side (within the computed layers):
+   * `allocate` is called once the piece is known, before the distances, and
+   * the arrays are complete when Run returns true.
+   */
+  void RequestVolume(std::int64_t ghostLayers, VolumeAllocator allocate);
+
   /**
    * Steps 1-6 for this process's points (xyz triples). Returns false when the
    * run stops: Error() says why (the same on every process), or Aborted().
@@ -131,11 +146,15 @@ public:
   double SetupSeconds() const { return this->SetupTime; }
   double EvolutionSeconds() const { return this->EvolutionTime; }
 
-  /// Step 7: the dense arrays of the node layers [kBegin, kEnd) (within the
-  /// computed layers), in parallel; stops early if the monitor aborts.
-  void FillVolume(const VolumeArrays& arrays, std::int64_t kBegin, std::int64_t kEnd) const;
-  /// What the surface extraction needs.
-  const TruncatedDistance& GetDistance() const { return *this->Distance; }
+  /// The node layers of the dense arrays (RequestVolume).
+  std::int64_t VolumeBegin() const { return this->Volume[0]; }
+  std::int64_t VolumeEnd() const { return this->Volume[1]; }
+
+  /// Step 7: the phi = 0 surface of this process's piece, from the band
+  /// (nvSurfaceField.h, nvSurface.h). Returns false if the monitor stopped it.
+  bool ExtractSurface(SurfaceSink& sink) const;
+
+  /// The band (after Run, its nodes only: the solver's other arrays are freed).
   const NarrowBand& GetBand() const { return this->Band; }
   const std::vector<double>& GetPhi() const { return this->Solver->GetPhi(); }
 
@@ -154,6 +173,9 @@ private:
   Subdomain Part;
   std::int64_t Piece[2] = { 0, 0 };
   std::int64_t Computed[2] = { 0, 0 };
+  std::int64_t Volume[2] = { 0, 0 };
+  std::int64_t VolumeGhosts = 0;
+  VolumeAllocator AllocateVolume;
   double BytesBeforeBand = 0.0;
   std::unique_ptr<TruncatedDistance> Distance;
   NarrowBand Band;
