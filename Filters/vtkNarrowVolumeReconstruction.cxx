@@ -255,6 +255,7 @@ nv::Settings vtkNarrowVolumeReconstruction::GetSettings() const
   settings.Mode = this->Domain == WHOLE_DOMAIN ? nv::Domain::WholeDomain : nv::Domain::NarrowBand;
   settings.EdgeFunction = this->EdgeStoppingFunction == EQUATION_3 ? nv::EdgeStopping::Eq3 : nv::EdgeStopping::Eq4;
   settings.RemoveSmallPieces = this->RemoveSmallPieces;
+  settings.PreserveOffset = this->PreserveOffset;
   // phi, the optional arrays, and the isosurfacer's working memory.
   settings.OutputBytesPerNode = this->OutputVolume ? 4.0 + (this->OutputInitialPhi ? 4.0 : 0.0) +
       (this->OutputDistance ? 4.0 : 0.0) + (this->OutputNarrowBand ? 1.0 : 0.0) + 2.0
@@ -630,6 +631,7 @@ void vtkNarrowVolumeReconstruction::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "GaussSeidelTolerance: " << this->GaussSeidelTolerance << "\n";
   os << indent << "Domain: " << (this->Domain == WHOLE_DOMAIN ? "Whole Domain" : "Narrow Band") << "\n";
   os << indent << "EdgeStoppingFunction: eq. (" << this->EdgeStoppingFunction << ")\n";
+  os << indent << "PreserveOffset: " << this->PreserveOffset << "\n";
   os << indent << "Sheets: " << this->Sheets << "\n";
   os << indent << "RemoveSmallPieces: " << this->RemoveSmallPieces << "\n";
   os << indent << "OutputVolume: " << this->OutputVolume << "\n";

@@ -208,6 +208,19 @@ public:
   void SetEdgeStoppingFunctionToEquation4() { this->SetEdgeStoppingFunction(EQUATION_4); }
   ///@}
 
+  ///@{
+  /**
+   * Keep the sheets at the offset distance while they are smoothed: after
+   * each step, the local mean translation of the sheets (their drift by
+   * mean-curvature motion) is cancelled, so that 10 to 20 steps smooth noise
+   * and sampling wrinkles without shrinking curved parts. Off (default):
+   * exactly the paper's scheme. Costs about a third of a step more.
+   */
+  vtkSetMacro(PreserveOffset, bool);
+  vtkGetMacro(PreserveOffset, bool);
+  vtkBooleanMacro(PreserveOffset, bool);
+  ///@}
+
   enum SheetsType
   {
     BOTH_SHEETS = 0,
@@ -382,6 +395,7 @@ protected:
   double GaussSeidelTolerance = 1e-6;
   int Domain = NARROW_BAND;
   int EdgeStoppingFunction = EQUATION_4;
+  bool PreserveOffset = false;
   int Sheets = BOTH_SHEETS;
   bool RemoveSmallPieces = true;
   bool OutputVolume = true;

@@ -137,6 +137,7 @@ Plan MakePlan(const Settings& chosen, const double bounds[6], const SamplingStat
   parameters.GaussSeidelTolerance = settings.GaussSeidelTolerance;
   parameters.Mode = settings.Mode;
   parameters.EdgeFunction = settings.EdgeFunction;
+  parameters.PreserveOffset = settings.PreserveOffset;
   parameters.Spacing = settings.SampleSpacing > 0.0
     ? settings.SampleSpacing
     : SpacingForMaximumDimension(bounds, settings.OffsetDistance, settings.XiCells, settings.MaximumDimension);

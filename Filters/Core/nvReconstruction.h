@@ -61,6 +61,7 @@ struct Settings
   double GaussSeidelTolerance = 1e-6;
   Domain Mode = Domain::NarrowBand;
   EdgeStopping EdgeFunction = EdgeStopping::Eq4;
+  bool PreserveOffset = false;
   double MemoryLimitBytes = 0.0;  ///< the largest allocation of a run (> 0)
   double OutputBytesPerNode = 0.0; ///< dense output arrays, bytes per node of the piece
   bool RemoveSmallPieces = true;   ///< drop loose pieces and tiny voids (nvPieces.h)

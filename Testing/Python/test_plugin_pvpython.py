@@ -20,7 +20,7 @@ source.UpdatePipeline()  # as Apply does in the GUI: the offset slider then foll
 f = NarrowVolumeReconstruction(Input=source)  # noqa: F821 (defined by LoadPlugin)
 t.check(f.GetXMLLabel() == "Narrow Volume Reconstruction", "label %s" % f.GetXMLLabel())
 defaults = dict(MaximumNumberOfIterations=3, OffsetDistance=0.0, SampleSpacing=0.0, MaximumDimension=0, XiCells=2.0,
-                EpsilonCells=6.0, TimeStep=0.0, ConvergenceTolerance=0.0, GaussSeidelTolerance=1e-6)
+                EpsilonCells=6.0, TimeStep=0.0, ConvergenceTolerance=0.0, GaussSeidelTolerance=1e-6, PreserveOffset=0)
 for name, value in defaults.items():
     t.check(abs(f.GetPropertyValue(name) - value) < 1e-12, "default %s = %s" % (name, f.GetPropertyValue(name)))
 t.check(f.Domain == "Narrow Band", "Domain default %s" % f.Domain)
@@ -29,7 +29,7 @@ for name in f.ListProperties():
     t.check(f.GetProperty(name) is not None, "property %s" % name)
 for name in ("OffsetDistance", "SampleSpacing", "MaximumDimension", "XiCells", "EpsilonCells", "TimeStep",
              "MaximumNumberOfIterations", "ConvergenceTolerance", "Domain", "EdgeStoppingFunction",
-             "GaussSeidelTolerance", "RemoveSmallPieces", "OutputVolume", "OutputInitialPhi", "OutputDistance", "OutputNarrowBand"):
+             "GaussSeidelTolerance", "RemoveSmallPieces", "PreserveOffset", "OutputVolume", "OutputInitialPhi", "OutputDistance", "OutputNarrowBand"):
     t.check(name in f.ListProperties(), "pvpython name %s" % name)
 f.OffsetDistance = 0.1
 f.SampleSpacing = 0.025
