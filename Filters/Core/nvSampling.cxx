@@ -236,16 +236,14 @@ void Sampling::Measure(const std::vector<double>& xyz, Communicator* communicato
     const std::int64_t n = static_cast<std::int64_t>(this->Points.size() / 3);
     this->Nearest.assign(static_cast<std::size_t>(n), 0.0);
     this->Partner.assign(static_cast<std::size_t>(n), -1);
-    double box[6];
-    const bool finite = PointBounds(this->Points, box) < 0; // else the run refuses the points
+    double bounds[6];
+    const bool finite = PointBounds(this->Points, bounds) < 0; // else the run refuses the points
     if (n > 1 && finite)
     {
       // Points without a neighbour within a few cells are searched again
       // with cells four times larger, and the last few of them one by one.
       std::vector<std::int64_t> pending(static_cast<std::size_t>(n));
       std::iota(pending.begin(), pending.end(), 0);
-      double bounds[6];
-      PointBounds(this->Points, bounds);
       const double side = std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
       for (double cell = CellSizeFor(this->Points); pending.size() > 1000; cell *= 4.0)
       {
