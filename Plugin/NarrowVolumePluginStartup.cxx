@@ -5,6 +5,10 @@
 #include "vtkNew.h"
 #include "vtkPVPluginLoader.h"
 #include "vtkPVVersion.h"
+#include "vtkSMPropertyHelper.h"
+#include "vtkSMProxy.h"
+#include "vtkSMProxyManager.h"
+#include "vtkSMSessionProxyManager.h"
 #include "vtkSMSettings.h"
 
 #if NARROWVOLUME_WITH_PYTHON && (PARAVIEW_VERSION_MAJOR < 5 || (PARAVIEW_VERSION_MAJOR == 5 && PARAVIEW_VERSION_MINOR < 12))
@@ -23,6 +27,9 @@ namespace
 /// the user's (VTK_DOUBLE_MAX), which ParaView loads at start-up.
 constexpr double SettingsPriority = 0.5;
 
+// An entry of the "Default reader details" setting: file patterns, the
+// description of the file type, the reader's proxy name.
+const char* const XYZEntry[3] = { "*.xyz", "Point Cloud Text Files (x y z)", "PointCloudTextReader" };
 const char* const XYZDefaultReader = R"json({
   "settings": {
     "RepresentedArrayListSettings": {
@@ -30,6 +37,18 @@ const char* const XYZDefaultReader = R"json({
     }
   }
 })json";
+
+/// The settings proxy that the Settings dialog edits, if this process has
+/// one already (a client whose session exists).
+vtkSMProxy* ReaderSettingsProxy()
+{
+  if (!vtkSMProxyManager::IsInitialized())
+  {
+    return nullptr;
+  }
+  vtkSMSessionProxyManager* proxies = vtkSMProxyManager::GetProxyManager()->GetActiveSessionProxyManager();
+  return proxies ? proxies->GetProxy("settings", "RepresentedArrayListSettings") : nullptr;
+}
 
 /// The folder of the shared library this function is in: the plugin's.
 std::string PluginFolder()
@@ -73,4 +92,22 @@ void NarrowVolumePluginStartup()
   }
 
   vtkSMSettings::GetInstance()->AddCollectionFromString(XYZDefaultReader, SettingsPriority);
+  // A settings proxy created before this reads its values from the settings
+  // then, without the entry; ParaView writes the proxy's values back over the
+  // user's settings whenever the Settings dialog is applied, and an empty list
+  // there would hide the entry for good. So the proxy shows the entry too,
+  // and applying the dialog keeps it (saving it with the user's settings).
+  // Only the server-manager property is set: pushing it to the VTK object
+  // would make ParaView save the settings at once.
+  if (vtkSMProxy* proxy = ReaderSettingsProxy())
+  {
+    vtkSMPropertyHelper details(proxy, "ReaderDetails", /*quiet=*/true);
+    if (details.GetNumberOfElements() == 0)
+    {
+      for (unsigned int k = 0; k < 3; ++k)
+      {
+        details.Set(k, XYZEntry[k]);
+      }
+    }
+  }
 }

@@ -14,7 +14,8 @@
 ///    its "Default reader details" setting (Settings > Miscellaneous), and
 ///    otherwise asks the user each time. The entry goes into a settings
 ///    collection of lower priority than the site's and the user's, so a
-///    user's own choice of default readers wins, and nothing is saved.
+///    user's own choice of default readers wins; the Settings dialog shows
+///    the entry, and saves it only if the user applies the dialog.
 /// Runs once per process, however often the plugin is loaded.
 void NarrowVolumePluginStartup();
 

@@ -236,7 +236,9 @@ void Sampling::Measure(const std::vector<double>& xyz, Communicator* communicato
     const std::int64_t n = static_cast<std::int64_t>(this->Points.size() / 3);
     this->Nearest.assign(static_cast<std::size_t>(n), 0.0);
     this->Partner.assign(static_cast<std::size_t>(n), -1);
-    if (n > 1)
+    double box[6];
+    const bool finite = PointBounds(this->Points, box) < 0; // else the run refuses the points
+    if (n > 1 && finite)
     {
       // Points without a neighbour within a few cells are searched again
       // with cells four times larger, and the last few of them one by one.

@@ -94,8 +94,8 @@ bool nv::pcd::ParseHeader(
   const char* text, std::size_t size, std::uint64_t fileSize, Header& header, std::string& error)
 {
   header = Header();
-  bool haveFields = false, haveSize = false, haveType = false, haveWidth = false, haveHeight = false,
-       havePoints = false, haveData = false;
+  bool haveFields = false, haveSize = false, haveType = false, haveWidth = false, havePoints = false,
+       haveData = false;
   std::size_t at = 0;
   int lineNumber = 0;
   while (at < size && !haveData)
@@ -208,7 +208,8 @@ bool nv::pcd::ParseHeader(
         return Fail(error, "header line ", lineNumber, ": ", key, " is not one whole number");
       }
       (key == "WIDTH" ? header.Width : key == "HEIGHT" ? header.Height : header.Points) = value;
-      (key == "WIDTH" ? haveWidth : key == "HEIGHT" ? haveHeight : havePoints) = true;
+      haveWidth = haveWidth || key == "WIDTH";
+      havePoints = havePoints || key == "POINTS";
     }
     else if (key == "VIEWPOINT")
     {
