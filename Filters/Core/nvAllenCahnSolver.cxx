@@ -169,6 +169,13 @@ void AllenCahnSolver::React()
   });
 }
 
+void AllenCahnSolver::ReleaseWorkspace()
+{
+  std::vector<double>().swap(this->Previous);
+  std::vector<double>().swap(this->Coupling);
+  std::vector<double>().swap(this->Decay);
+}
+
 template <typename Fn>
 double AllenCahnSolver::OwnedSum(Fn&& fn)
 {

@@ -70,6 +70,9 @@ public:
   /// Reaction step (12), in place.
   void React();
 
+  /// Frees the arrays only the time steps need; phi stays.
+  void ReleaseWorkspace();
+
   /// phi at band node s (s < L); slots L and L + 1 hold the Dirichlet values.
   const std::vector<double>& GetPhi() const { return this->Phi; }
   std::vector<double>& GetPhi() { return this->Phi; }
