@@ -76,7 +76,7 @@ def distance_to(mesh, reference):
 
 print("Scans, %d cells, l = 4h: distance (in h) of the %d-step sheets to the 3-step sheets where the cloud is "
       "dense, and roughness (deg)" % (CELLS, STEPS))
-print("| scan | points | dense vertices | steps | median | 95 % | max | within 0.25 h | roughness, 3 steps -> %d |"
+print("| scan | points | dense vertices | steps | median | 95 %% | max | within 0.25 h | roughness, 3 steps -> %d |"
       % STEPS)
 print("|---|---|---|---|---|---|---|---|---|")
 for name in NAMES:
