@@ -196,7 +196,7 @@ double AllenCahnSolver::OwnedSum(Fn&& fn)
   return total;
 }
 
-StepReport AllenCahnSolver::Step()
+StepReport AllenCahnSolver::Step(bool last)
 {
   StepReport report;
   if (this->Correction)
@@ -207,7 +207,7 @@ StepReport AllenCahnSolver::Step()
   }
   report.Sweeps = this->Diffuse(&report.SweepChange);
   this->React();
-  if (this->Correction)
+  if (this->Correction && !last)
   {
     this->Correction->Measure(this->Phi.data(), this->Previous.data(), this->Coupling.data());
   }
@@ -245,7 +245,7 @@ std::vector<StepReport> AllenCahnSolver::Run(Monitor* monitor)
         break;
       }
     }
-    reports.push_back(this->Step());
+    reports.push_back(this->Step(n + 1 == steps));
     if (this->Params.ConvergenceTolerance > 0.0 &&
       reports.back().RelativeChange < this->Params.ConvergenceTolerance)
     {

@@ -52,8 +52,10 @@ public:
     return q > 0.0 ? phi / std::sqrt(q) : phi;
   }
 
-  /// One time step: diffusion (10) then reaction (12).
-  StepReport Step();
+  /// One time step: diffusion (10) then reaction (12). With PreserveOffset,
+  /// the multiplier of the last step first, and a measurement after (unless
+  /// last is true: no step follows to use it).
+  StepReport Step(bool last = false);
 
   /**
    * Runs steps until the relative change drops below the convergence

@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
 // SPDX-License-Identifier: BSD-3-Clause
-// PreserveOffset: the scheme (10)-(12) with a Lagrange multiplier that
-// cancels the drift of the phi = 0 sheets by mean-curvature motion and keeps
+// PreserveOffset: the scheme (10)-(12) with Lagrange multipliers that
+// cancel the drift of the phi = 0 sheets by mean-curvature motion and keep
 // the smoothing. The derivation is in nvDriftCorrection.cxx, beside the code.
 #ifndef nvDriftCorrection_h
 #define nvDriftCorrection_h
@@ -50,8 +50,8 @@ private:
   Halo* Exchange;
   std::array<std::int64_t, 3> BrickDims{ { 0, 0, 0 } };
   LayerRange Layers;             ///< brick layers with sums: the owned ones and their ghosts
-  std::vector<double> BrickSums; ///< per brick of Layers: sum of r G (3), sum of g |G|^2
-  std::vector<double> Mu;        ///< per owned band brick: the multiplier mu (3)
+  std::vector<double> BrickSums; ///< per brick of Layers: the sums of (C') (see the .cxx)
+  std::vector<double> Mu;        ///< per owned band brick: mu (3) and lambda of (C')
   bool Measured = false;
 };
 
