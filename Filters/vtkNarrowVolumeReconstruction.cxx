@@ -2,9 +2,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkNarrowVolumeReconstruction.h"
 
+#include "nvOutputs.h"
 #include "nvParallel.h"
 #include "nvReconstruction.h"
-#include "nvSheets.h"
 #include "vtkNarrowVolumeCommunicator.h"
 #include "vtkNarrowVolumeSurface.h"
 
@@ -24,66 +24,33 @@
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkSMPTools.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnsignedCharArray.h"
 
-#include <vtksys/SystemInformation.hxx>
-
-#include <atomic>
 #include <chrono>
 #include <memory>
-#include <thread>
 
 vtkStandardNewMacro(vtkNarrowVolumeReconstruction);
 
 namespace
 {
 
-/// Forwards the core's progress to the filter (main thread only) and polls
-/// the filter's abort flag there; worker threads see the cached answer.
-class FilterMonitor : public nv::Monitor
+/// The core's progress to the filter, and the filter's abort flag to the
+/// core, on the thread that runs the filter (see nv::CallerMonitor).
+class FilterMonitor : public nv::CallerMonitor
 {
 public:
   FilterMonitor(vtkAlgorithm* filter)
     : Filter(filter)
-    , MainThread(std::this_thread::get_id())
   {
   }
-  void Stage(double begin, double width) override
-  {
-    this->Begin = begin;
-    this->Width = width;
-    this->Progress(0.0);
-  }
-  void Progress(double fraction) override
-  {
-    if (std::this_thread::get_id() == this->MainThread)
-    {
-      // Monotone: a stage's parts may report out of order.
-      const double progress = std::max(this->Filter->GetProgress(), this->Begin + this->Width * fraction);
-      if (progress > this->Filter->GetProgress() || fraction == 0.0)
-      {
-        this->Filter->UpdateProgress(progress);
-      }
-      this->Stop = this->Stop || this->Filter->GetAbortExecute();
-    }
-  }
-  bool Aborted() override
-  {
-    if (std::this_thread::get_id() == this->MainThread)
-    {
-      this->Stop = this->Stop || this->Filter->GetAbortExecute();
-    }
-    return this->Stop;
-  }
+
+protected:
+  void Report(double progress) override { this->Filter->UpdateProgress(progress); }
+  bool Poll() override { return this->Filter->GetAbortExecute() != 0; }
 
 private:
   vtkAlgorithm* Filter;
-  std::thread::id MainThread;
-  double Begin = 0.0;
-  double Width = 1.0;
-  std::atomic<bool> Stop{ false };
 };
 
 /// The points of a point set as xyz triples in double precision.
@@ -100,18 +67,6 @@ std::vector<double> PointsOf(vtkPointSet* input)
     }
   }
   return xyz;
-}
-
-/// MemoryLimit (MiB; 0: half the physical memory) in bytes.
-double MemoryLimitBytes(double limitMiB)
-{
-  if (limitMiB <= 0.0)
-  {
-    vtksys::SystemInformation info;
-    info.RunMemoryCheck();
-    limitMiB = 0.5 * static_cast<double>(info.GetTotalPhysicalMemory());
-  }
-  return limitMiB * 1048576.0;
 }
 
 /// An array of `nodes` values named `name`, attached to the volume; its values.
@@ -227,10 +182,13 @@ nv::Settings vtkNarrowVolumeReconstruction::GetSettings() const
   settings.GaussSeidelTolerance = this->GaussSeidelTolerance;
   settings.Mode = this->Domain == WHOLE_DOMAIN ? nv::Domain::WholeDomain : nv::Domain::NarrowBand;
   settings.EdgeFunction = this->EdgeStoppingFunction == EQUATION_3 ? nv::EdgeStopping::Eq3 : nv::EdgeStopping::Eq4;
-  // phi, the optional arrays, and the isosurfacer's working memory.
-  settings.OutputBytesPerNode = this->OutputVolume ? 4.0 + (this->OutputInitialPhi ? 4.0 : 0.0) +
-      (this->OutputDistance ? 4.0 : 0.0) + (this->OutputNarrowBand ? 1.0 : 0.0) + 2.0
-                                                    : 0.0;
+  settings.KeptSheets = static_cast<nv::Sheets>(this->Sheets);
+  settings.OutputVolume = this->OutputVolume;
+  settings.OutputInitialPhi = this->OutputInitialPhi;
+  settings.OutputDistance = this->OutputDistance;
+  settings.OutputNarrowBand = this->OutputNarrowBand;
+  settings.NumberOfThreads = this->NumberOfThreads;
+  settings.MemoryLimit = this->MemoryLimit;
   return settings;
 }
 
@@ -334,17 +292,12 @@ int vtkNarrowVolumeReconstruction::RequestData(
     communicator.reset(new vtkNarrowVolumeCommunicator(this->Controller));
   }
 
-  // Run, with all cores when the process-wide backend is Sequential.
-  std::string backend = vtkSMPTools::GetBackend() ? vtkSMPTools::GetBackend() : "Sequential";
-  if (backend == "Sequential")
-  {
-    backend = "STDThread";
-  }
+  // Run, with NumberOfThreads threads for the core and for VTK's filters
+  // inside (all cores when the process-wide backend is Sequential).
   bool ok = false;
-  vtkSMPTools::LocalScope(vtkSMPTools::Config{ this->NumberOfThreads, backend, false }, [&]() {
+  const nv::Settings settings = this->GetSettings();
+  nv::WithThreads(settings.NumberOfThreads, [&]() {
     FilterMonitor monitor(this);
-    nv::Settings settings = this->GetSettings();
-    settings.MemoryLimitBytes = MemoryLimitBytes(this->MemoryLimit);
     nv::Reconstruction run(settings, communicator.get(), &monitor);
     if (!run.Run(PointsOf(vtkPointSet::GetData(inputVector[0], 0))))
     {
@@ -368,9 +321,7 @@ int vtkNarrowVolumeReconstruction::RequestData(
     const double surfacePoints = run.SumAll(static_cast<double>(surface->GetNumberOfPoints()));
     if (ok && surfacePoints == 0 && !explained && (!communicator || communicator->Rank() == 0))
     {
-      vtkWarningMacro("The surface is empty: the shell did not survive the evolution. The offset distance ("
-        << this->OffsetDistance << ") is probably small against the gaps between points or the grid spacing ("
-        << run.GetGrid().Spacing << "): increase OffsetDistance or XiCells, or refine the grid.");
+      vtkWarningMacro(<< nv::EmptySurfaceWarning(settings, run.GetGrid().Spacing));
     }
   });
   if (!ok)
@@ -389,13 +340,14 @@ bool vtkNarrowVolumeReconstruction::ProduceOutputs(nv::Reconstruction& run, nv::
   vtkInformation* volumeInfo, vtkImageData* volume, vtkPolyData* surface, bool distributed, bool& explained)
 {
   const nv::Grid& grid = run.GetGrid();
+  const nv::Settings& settings = run.GetSettings();
   if (run.EmptyPiece())
   {
     return true;
   }
   // Output 0: the volume, this process's piece of it (its geometry always,
   // its arrays on request), with ghost layers if the pipeline asks.
-  const std::int64_t ghosts = distributed && this->OutputVolume
+  const std::int64_t ghosts = distributed && settings.OutputVolume
     ? volumeInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS())
     : 0;
   const std::int64_t volumeBegin = std::max(run.ComputedBegin(), run.PieceBegin() - ghosts);
@@ -404,10 +356,10 @@ bool vtkNarrowVolumeReconstruction::ProduceOutputs(nv::Reconstruction& run, nv::
   volume->SetSpacing(grid.Spacing, grid.Spacing, grid.Spacing);
   volume->SetExtent(0, static_cast<int>(grid.Dims[0] - 1), 0, static_cast<int>(grid.Dims[1] - 1),
     static_cast<int>(volumeBegin), static_cast<int>(volumeEnd - 1));
-  if (!this->OutputVolume && (this->Sheets == BOTH_SHEETS || distributed))
+  if (nv::SurfaceBySlabs(settings, distributed))
   {
     // Output 1 without a dense volume: slab by slab.
-    monitor.Stage(0.65, 0.35);
+    monitor.Stage(nv::SlabStage[0], nv::SlabStage[1]);
     surface->ShallowCopy(nv::ExtractSurfaceBySlabs(run.GetDistance(), run.GetBand(), run.GetPhi(),
       run.GetParameters(), &monitor, run.PieceBegin(), run.PieceEnd()));
     return !monitor.Aborted(); // the slabs stop early: a partial surface is no result
@@ -419,28 +371,27 @@ bool vtkNarrowVolumeReconstruction::ProduceOutputs(nv::Reconstruction& run, nv::
   phi->SetNumberOfTuples(nodes);
   nv::VolumeArrays arrays;
   arrays.Phi = phi->GetPointer(0);
-  if (this->OutputVolume)
+  if (settings.OutputVolume)
   {
     volume->GetPointData()->SetScalars(phi);
-    if (this->OutputInitialPhi)
+    if (settings.OutputInitialPhi)
     {
       arrays.InitialPhi = AddArray<vtkFloatArray>(volume, "InitialPhi", nodes);
     }
-    if (this->OutputDistance)
+    if (settings.OutputDistance)
     {
       arrays.Distance = AddArray<vtkFloatArray>(volume, "Distance", nodes);
     }
-    if (this->OutputNarrowBand)
+    if (settings.OutputNarrowBand)
     {
       arrays.Band = AddArray<vtkUnsignedCharArray>(volume, "NarrowBand", nodes);
     }
   }
   else
   {
-    vtkWarningMacro("Keeping one sheet needs the dense grid: memory follows the box although "
-                    "OutputVolume is off.");
+    vtkWarningMacro(<< nv::OneSheetNeedsGridWarning());
   }
-  monitor.Stage(0.65, 0.15);
+  monitor.Stage(nv::VolumeStage[0], nv::VolumeStage[1]);
   run.FillVolume(arrays, volumeBegin, volumeEnd);
   if (monitor.Aborted())
   {
@@ -457,30 +408,26 @@ bool vtkNarrowVolumeReconstruction::ProduceOutputs(nv::Reconstruction& run, nv::
 
   // Output 1: the phi = 0 surfaces of the piece (without its ghost layers),
   // all or some of them. Choosing sheets works on a copy: phi stays phi.
-  monitor.Stage(0.8, 0.2);
+  monitor.Stage(nv::SurfaceStage[0], nv::SurfaceStage[1]);
   vtkNew<vtkFloatArray> contoured;
   contoured->SetArray(arrays.Phi + layerNodes * (run.PieceBegin() - volumeBegin),
     layerNodes * (run.PieceEnd() - run.PieceBegin()), 1); // borrowed
-  if (this->Sheets != BOTH_SHEETS)
+  if (settings.KeptSheets != nv::Sheets::Both)
   {
     if (distributed)
     {
-      vtkWarningMacro("Keeping one sheet needs the whole grid on one process: both sheets are "
-                      "output in a distributed run.");
+      vtkWarningMacro(<< nv::OneSheetDistributedWarning());
     }
     else
     {
       vtkNew<vtkFloatArray> copy;
       copy->DeepCopy(phi);
       contoured->ShallowCopy(copy);
-      const std::int64_t cavities = nv::KeepSheets(
-        grid, contoured->GetPointer(0), this->Sheets == OUTER_SHEET ? nv::Sheets::Outer : nv::Sheets::Inner);
-      explained = this->Sheets == INNER_SHEETS && cavities == 0;
+      const std::int64_t cavities = nv::KeepSheets(grid, contoured->GetPointer(0), settings.KeptSheets);
+      explained = nv::NoInnerSheet(settings, cavities);
       if (explained)
       {
-        vtkWarningMacro("There is no inner sheet: the shell encloses no cavity, so its two sheets join "
-                        "into one. The input's surface is open (a one-sided scan, or holes wider than "
-                        "twice the offset distance); its shell has only an outer sheet.");
+        vtkWarningMacro(<< nv::NoInnerSheetWarning());
       }
     }
   }

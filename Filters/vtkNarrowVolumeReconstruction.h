@@ -317,8 +317,7 @@ protected:
   bool HasSeveralProcesses() const;
   /// Whether this request is one piece of a distributed run (see SetController).
   bool IsDistributed(vtkInformationVector* outputVector) const;
-  /// The properties, as the core takes them (all but the memory limit,
-  /// which only the run needs: RequestData resolves it).
+  /// The properties, as the core takes them.
   nv::Settings GetSettings() const;
   /// The volume piece and the surface of a finished run; false if aborted.
   /// explained: a warning already said why the surface is empty.

@@ -3,6 +3,7 @@
 #include "vtkNarrowVolumeSurface.h"
 
 #include "nvNarrowBand.h"
+#include "nvOutputs.h"
 #include "nvParallel.h"
 #include "nvTruncatedDistance.h"
 #include "nvVolume.h"
@@ -113,36 +114,26 @@ vtkSmartPointer<vtkPolyData> ExtractSurfaceBySlabs(const TruncatedDistance& dist
   normals->SetNumberOfComponents(3);
   vtkNew<vtkCellArray> triangles;
 
-  // Brick layers that hold band nodes: slabs without any are skipped.
-  const std::int64_t bricksPerLayer = distance.GetBrickDims()[0] * distance.GetBrickDims()[1];
-  std::vector<bool> layerHasBand(static_cast<std::size_t>(distance.GetBrickDims()[2]), false);
-  for (std::size_t b = 0; b < band.Bricks.size(); ++b)
-  {
-    if (band.RedStart[b + 1] > band.RedStart[b] || band.BlackStart[b + 1] > band.BlackStart[b])
-    {
-      layerHasBand[static_cast<std::size_t>(band.Bricks[b] / bricksPerLayer)] = true;
-    }
-  }
-
+  // Only the slabs that hold band nodes (nvOutputs.h).
   std::map<Key, vtkIdType> sharedBelow; // vertices the previous slab made on this slab's first plane
   std::vector<float> slab;
-  for (std::int64_t kBegin = kFirst; kBegin + 1 < nz; kBegin += SlabCells)
+  std::int64_t previousEnd = -1;
+  for (const Slab& next : SurfaceSlabs(distance, band, kFirst, nz))
   {
-    const std::int64_t kEnd = std::min(kBegin + SlabCells + 1, nz); // one shared plane with the next slab
+    const std::int64_t kBegin = next.Begin, kEnd = next.End;
     std::map<Key, vtkIdType> sharedAbove;
-    bool any = false;
-    for (std::int64_t layer = kBegin >> BrickShift; layer <= (kEnd - 1) >> BrickShift; ++layer)
+    if (kBegin != previousEnd - 1)
     {
-      any = any || layerHasBand[static_cast<std::size_t>(layer)];
+      sharedBelow.clear(); // the slab below was skipped
     }
+    previousEnd = kEnd;
     if (monitor)
     {
       monitor->Progress(static_cast<double>(kBegin - kFirst) / (nz - kFirst));
-    }
-    if (!any || (monitor && monitor->Aborted()))
-    {
-      sharedBelow.clear();
-      continue;
+      if (monitor->Aborted())
+      {
+        break;
+      }
     }
 
     slab.resize(static_cast<std::size_t>(nx * ny * (kEnd - kBegin)));

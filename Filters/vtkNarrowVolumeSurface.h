@@ -32,9 +32,6 @@ struct Grid;
 struct Parameters;
 class TruncatedDistance;
 
-/// Slab thickness in cells (a multiple of the brick size).
-constexpr int SlabCells = 16;
-
 /// The phi = 0 surface of a dense phi array, one value per node of the z
 /// layers [kBegin, kEnd) (kEnd < 0: to the grid's end). monitor: the
 /// isosurfacer's progress, and a request to stop it (which VTK 9.2's

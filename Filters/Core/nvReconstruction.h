@@ -26,6 +26,7 @@
 #include "nvNarrowBand.h"
 #include "nvParameters.h"
 #include "nvPartition.h"
+#include "nvSheets.h"
 #include "nvTruncatedDistance.h"
 #include "nvVolume.h"
 
@@ -40,8 +41,11 @@ class Communicator;
 class Monitor;
 
 /// What the user chooses (the filter's properties), before the grid is known.
+/// The VTK filter and the Python filter of the wheel both fill one from
+/// their properties; a default-constructed one holds their defaults.
 struct Settings
 {
+  // The method (section 3, 4).
   double OffsetDistance = 0.1; ///< l, world units
   double SampleSpacing = 0.0;  ///< h, world units; <= 0: from MaximumDimension
   int MaximumDimension = 100;  ///< cells along the padded box's longest side
@@ -53,8 +57,21 @@ struct Settings
   double GaussSeidelTolerance = 1e-6;
   Domain Mode = Domain::NarrowBand;
   EdgeStopping EdgeFunction = EdgeStopping::Eq4;
-  double MemoryLimitBytes = 0.0;  ///< the largest allocation of a run (> 0)
-  double OutputBytesPerNode = 0.0; ///< dense output arrays, bytes per node of the piece
+  // The outputs (nvOutputs.h).
+  Sheets KeptSheets = Sheets::Both; ///< the phi = 0 sheets the surface keeps
+  bool OutputVolume = true;         ///< phi on the grid; off: the surface slab by slab
+  bool OutputInitialPhi = false;    ///< phi0 (eq. 2) on the grid too
+  bool OutputDistance = false;      ///< d (eq. 6) on the grid too
+  bool OutputNarrowBand = false;    ///< 1 on band nodes, on the grid too
+  // The machine.
+  int NumberOfThreads = 0;  ///< threads of the loops; 0: all cores
+  double MemoryLimit = 0.0; ///< MiB a run may allocate; 0: half the physical memory
+
+  /// MemoryLimit in bytes (> 0).
+  double MemoryLimitBytes() const;
+  /// Bytes per node of the dense output piece: the arrays asked for and the
+  /// isosurfacer's working memory; 0 with OutputVolume off.
+  double OutputBytesPerNode() const;
 };
 
 /// The grid that points with given bounds get, and the scheme's parameters on it.
@@ -102,6 +119,7 @@ public:
   /// Collective: the sum over processes (itself when serial).
   double SumAll(double value);
 
+  const Settings& GetSettings() const { return this->TheSettings; }
   const Grid& GetGrid() const { return this->ThePlan.TheGrid; }
   const Parameters& GetParameters() const { return this->ThePlan.Scheme; }
   /// The node layers along z of this process's output piece: its owned brick
@@ -120,13 +138,17 @@ public:
 
   /// Step 7: the dense arrays of the node layers [kBegin, kEnd) (within the
   /// computed layers), in parallel; stops early if the monitor aborts.
-  void FillVolume(const VolumeArrays& arrays, std::int64_t kBegin, std::int64_t kEnd) const;
+  /// Run and FillVolume use the settings' NumberOfThreads. monitored: report
+  /// the fill's progress (not when it is one slab of many).
+  void FillVolume(
+    const VolumeArrays& arrays, std::int64_t kBegin, std::int64_t kEnd, bool monitored = true) const;
   /// What the surface extraction needs.
   const TruncatedDistance& GetDistance() const { return *this->Distance; }
   const NarrowBand& GetBand() const { return this->Band; }
   const std::vector<double>& GetPhi() const { return this->Solver->GetPhi(); }
 
 private:
+  bool RunSteps(std::vector<double> xyz);
   bool Fail(const std::string& message);
   bool CheckMemory(double gridNodes, double points);
   void Partition(const std::vector<double>& xyz, std::int64_t layers);

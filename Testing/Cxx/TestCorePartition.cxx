@@ -223,7 +223,7 @@ void TestDistributedRun(int ranks)
   nv::Settings settings;
   settings.OffsetDistance = 0.08;
   settings.MaximumDimension = 60;
-  settings.MemoryLimitBytes = 1e9;
+  settings.MemoryLimit = 1000.0;
   nv::Reconstruction serial(settings, nullptr, nullptr);
   NV_CHECK(serial.Run(points));
   std::unordered_map<std::int64_t, double> serialPhi;
@@ -310,7 +310,7 @@ void TestDistributedErrors()
           mine = { 0.0, 0.0, 0.0, 1.0, std::nan(""), 0.0 };
         }
         nv::Settings settings;
-        settings.MemoryLimitBytes = 1e9;
+        settings.MemoryLimit = 1000.0;
         ThreadCommunicator communicator(hub, rank);
         nv::Reconstruction run(settings, &communicator, nullptr);
         NV_CHECK(!run.Run(mine));
