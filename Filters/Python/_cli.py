@@ -16,7 +16,9 @@ says why), 2 a wrong command line, 130 interrupted (Ctrl-C).
 """
 import argparse
 import os
+import signal
 import sys
+import threading
 import time
 
 import numpy as np
@@ -204,6 +206,10 @@ def main(argv=None):
     """Runs the command line; returns the exit status."""
     import narrowvolume
 
+    if threading.current_thread() is threading.main_thread():
+        # Ctrl-C as Python's KeyboardInterrupt, which stops the run (pvpython
+        # leaves SIGINT to ParaView's logger, which ends the process with a stack trace).
+        signal.signal(signal.SIGINT, signal.default_int_handler)
     defaults = _properties.defaults_of(narrowvolume.vtkNarrowVolumeReconstruction())
     parser = make_parser(defaults)
     args = parser.parse_args(argv)
@@ -212,11 +218,13 @@ def main(argv=None):
         if os.path.splitext(path)[1].lower() not in WRITERS:
             parser.error("%s: unknown output format; known: %s" % (path, " ".join(sorted(WRITERS))))
     properties = {p.name: getattr(args, p.name) for p in _properties.PROPERTIES if getattr(args, p.name) is not None}
-    isatty = getattr(sys.stderr, "isatty", None)
-    progress = Progress(sys.stderr, not args.quiet and callable(isatty) and isatty())
+    # File descriptor 2 itself: pvpython's sys.stderr answers isatty() for standard input.
+    progress = Progress(sys.stderr, not args.quiet and os.isatty(2))
     start = time.perf_counter()
     try:
         cloud = read_cloud(args.cloud)
+        if not args.quiet:
+            print("narrowvolume: %d points from %s" % (cloud.GetNumberOfPoints(), args.cloud), flush=True)
         import warnings
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always", narrowvolume.ReconstructionWarning)
@@ -238,7 +246,7 @@ def main(argv=None):
         for path, which in written:
             what = ("%d x %d x %d grid" % dims) if which == "volume" else ("%d triangles" % surface.GetNumberOfPolys())
             print("narrowvolume: wrote %s (%s)" % (path, what))
-        print("narrowvolume: %d points, %.2f s" % (cloud.GetNumberOfPoints(), time.perf_counter() - start))
+        print("narrowvolume: done in %.2f s" % (time.perf_counter() - start))
     return 0
 
 

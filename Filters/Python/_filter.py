@@ -461,11 +461,26 @@ def _install_properties(cls):
             on.__doc__, off.__doc__ = "Sets %s on." % prop.name, "Sets %s off." % prop.name
             setattr(cls, prop.name + "On", on)
             setattr(cls, prop.name + "Off", off)
+        if prop.low is not None:
+            def low(self, prop=prop):
+                return prop.low
+
+            def high(self, prop=prop):
+                return prop.high
+            low.__doc__ = "The smallest value Set%s takes (%r)." % (prop.name, prop.low)
+            high.__doc__ = "The largest value Set%s takes (%r)." % (prop.name, prop.high)
+            setattr(cls, "Get%sMinValue" % prop.name, low)
+            setattr(cls, "Get%sMaxValue" % prop.name, high)
+        if prop.choices:
+            # As VTK wraps a C++ enum: an int type, whose values are the class's constants.
+            kind = type(prop.name + "Type", (int,), {"__doc__": "The values of %s." % prop.name,
+                                                     "__module__": cls.__module__})
+            setattr(cls, kind.__name__, kind)
         for constant, suffix, value in prop.choices:
             def choose(self, prop=prop, value=value):
                 getattr(self, "Set" + prop.name)(value)
             choose.__doc__ = "Sets %s to %s (%d)." % (prop.name, constant, value)
-            setattr(cls, constant, value)
+            setattr(cls, constant, kind(value))
             setattr(cls, "Set%sTo%s" % (prop.name, suffix), choose)
 
 

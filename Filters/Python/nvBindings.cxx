@@ -210,6 +210,9 @@ std::array<double, 6> Bounds(const std::vector<double>& bounds)
 NB_MODULE(_core, m)
 {
   m.doc() = "The numerical core of NarrowVolume (Filters/Core), for the Python filter of the wheel.";
+  // A filter alive at exit (a script's global) holds its Settings; VTK's
+  // Python objects may outlive nanobind's leak check, which would only warn.
+  nb::set_leak_warnings(false);
 
   nb::enum_<nv::Domain>(m, "Domain", nb::is_arithmetic(), "Which nodes the scheme updates.")
     .value("NarrowBand", nv::Domain::NarrowBand)
