@@ -16,6 +16,9 @@
 #else
 #include <unistd.h>
 #endif
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 
 namespace nv
 {
@@ -45,6 +48,17 @@ double PhysicalMemoryBytes()
   const long pages = sysconf(_SC_PHYS_PAGES);
   const long pageSize = sysconf(_SC_PAGE_SIZE);
   return pages > 0 && pageSize > 0 ? static_cast<double>(pages) * static_cast<double>(pageSize) : 0.0;
+#endif
+}
+
+/// Hands memory freed by the band's construction back to the system. glibc
+/// keeps what worker threads freed in their own arenas, where the main
+/// thread's later allocations (the surface) cannot reuse it: measured on
+/// the VolumeOff test's sphere (6 M band nodes, 2 threads), 110 MB.
+void ReleaseFreedMemory()
+{
+#ifdef __GLIBC__
+  malloc_trim(0);
 #endif
 }
 
@@ -305,6 +319,7 @@ bool Reconstruction::RunSteps(std::vector<double> xyz)
     grid, xyz.data(), static_cast<std::int64_t>(xyz.size() / 3), this->ThePlan.Scheme.Reach()));
   std::vector<double>().swap(xyz);
   this->Band = BuildNarrowBand(*this->Distance, this->ThePlan.Scheme, this->TheMonitor, &this->Part);
+  ReleaseFreedMemory();
   this->SetupTime = Seconds(start);
   double failed[2] = { static_cast<double>(this->Band.RefusedSize),
     this->TheMonitor && this->TheMonitor->Aborted() ? 1.0 : 0.0 };

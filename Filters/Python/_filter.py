@@ -14,11 +14,11 @@ import operator
 import time
 
 import numpy as np
-from vtkmodules.util.numpy_support import numpy_to_vtk, numpy_to_vtkIdTypeArray, vtk_to_numpy
+from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.util.vtkAlgorithm import VTKPythonAlgorithmBase
 from vtkmodules.vtkCommonCore import (VTK_FLOAT, vtkCommand, vtkDoubleArray, vtkFloatArray, vtkIdTypeArray,
                                       vtkInformationVector, vtkIntArray, vtkObject, vtkOutputWindow, vtkPoints,
-                                      vtkUnsignedCharArray)
+                                      vtkTypeInt32Array, vtkTypeInt64Array, vtkUnsignedCharArray)
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkDataObject, vtkImageData, vtkPointSet, vtkPolyData
 from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline as sddp
 from vtkmodules.vtkFiltersCore import vtkFlyingEdges3D
@@ -358,11 +358,20 @@ def extract_surface(grid, phi, k_begin, k_end, monitor=None):
 def surface_by_slabs(run, monitor):
     """The same surface without the dense volume: the slabs that hold band
     nodes (the core's SurfaceSlabs) filled and contoured one at a time, the
-    vertices on the plane two slabs share merged."""
+    vertices on the plane two slabs share merged. Each slab's part goes
+    straight into the output's arrays, which grow in place: memory holds the
+    surface once, not its pieces too."""
     grid = run.GetGrid()
     nx, ny, nz = grid.Dims
-    points, normals, triangles = [], [], []
-    count = 0
+    origin = np.asarray(grid.Origin)
+    world = _new_array(vtkDoubleArray, "Points", 0)
+    normal_array = _new_array(vtkFloatArray, "Normals", 0)
+    for array in (world, normal_array):
+        array.SetNumberOfComponents(3)
+    # 32-bit cell storage (vtkCellArray's own option) while ids and offsets
+    # fit: half the memory of vtkIdType's, the largest part of a surface.
+    connectivity = _new_array(vtkTypeInt32Array, "Connectivity", 0)
+    count = triangle_values = 0
     below = {}  # (x, y) of the vertices the previous slab made on this slab's first plane -> id
     previous_end = -1
     for k_begin, k_end in run.SurfaceSlabs(0, nz):
@@ -388,28 +397,38 @@ def surface_by_slabs(run, monitor):
             for p in np.nonzero(xyz[:, 2] == z_below)[0]:
                 ids[p] = below.get((xyz[p, 0].item(), xyz[p, 1].item()), -1)
         new = ids < 0
-        ids[new] = count + np.arange(int(new.sum()))
-        count += int(new.sum())
-        points.append(xyz[new])
-        normals.append(vtk_to_numpy(piece.GetPointData().GetNormals())[new])
+        added = int(new.sum())
+        ids[new] = count + np.arange(added)
         above = np.nonzero(new & (xyz[:, 2] == z_above))[0]
         below = {(xyz[p, 0].item(), xyz[p, 1].item()): int(ids[p]) for p in above}
-        cells = vtk_to_numpy(piece.GetPolys().GetConnectivityArray()).reshape(-1, 3)
-        triangles.append(ids[cells])
+        world.SetNumberOfTuples(count + added)
+        vtk_to_numpy(world)[count:] = xyz[new] + origin  # world coordinates, in double precision
+        normal_array.SetNumberOfTuples(count + added)
+        vtk_to_numpy(normal_array)[count:] = vtk_to_numpy(piece.GetPointData().GetNormals())[new]
+        count += added
+        cells = vtk_to_numpy(piece.GetPolys().GetConnectivityArray())
+        if max(count, triangle_values + len(cells)) >= 2 ** 31 and isinstance(connectivity, vtkTypeInt32Array):
+            wide = _new_array(vtkTypeInt64Array, "Connectivity", triangle_values)
+            vtk_to_numpy(wide)[:] = vtk_to_numpy(connectivity)
+            connectivity = wide
+        connectivity.SetNumberOfTuples(triangle_values + len(cells))
+        vtk_to_numpy(connectivity)[triangle_values:] = ids[cells]
+        triangle_values += len(cells)
 
     surface = vtkPolyData()
     if count == 0:
         return surface
-    local = vtkPoints()
-    local.SetData(numpy_to_vtk(np.ascontiguousarray(np.concatenate(points)), deep=1))
-    surface.SetPoints(_world_points(local, grid))
-    normal_array = numpy_to_vtk(np.ascontiguousarray(np.concatenate(normals)), deep=1)
-    normal_array.SetName("Normals")
+    points = vtkPoints()
+    points.SetData(world)
+    surface.SetPoints(points)
     surface.GetPointData().SetNormals(normal_array)
-    connectivity = np.ascontiguousarray(np.concatenate(triangles).ravel())
-    offsets = np.arange(0, len(connectivity) + 1, 3, dtype=np.int64)
+    offsets = _new_array(type(connectivity), "Offsets", triangle_values // 3 + 1)
+    steps = vtk_to_numpy(offsets)
+    steps[:] = 3
+    steps[0] = 0
+    np.cumsum(steps, out=steps)
     polys = vtkCellArray()
-    polys.SetData(numpy_to_vtkIdTypeArray(offsets, deep=1), numpy_to_vtkIdTypeArray(connectivity, deep=1))
+    polys.SetData(offsets, connectivity)
     surface.SetPolys(polys)
     return surface
 

@@ -492,3 +492,26 @@ def test_console_script():
     assert script, "no narrowvolume script beside %s" % sys.executable
     result = subprocess.run([script, "--help"], capture_output=True, text=True)
     assert result.returncode == 0 and "--offset-distance" in result.stdout
+
+
+# --- The project's other Python tests, against the wheel (ctest runs them
+# against the CMake build's package, each on its own).
+SHARED_SCRIPTS = {
+    "test_python_package.py": [],
+    "test_robustness.py": [],
+    "test_reference_scheme.py": [],
+    "test_volume_off.py": [],
+    "test_pipeline_vtk.py": [TREFOIL],
+}
+
+
+@only_wheel
+@pytest.mark.parametrize("script", sorted(SHARED_SCRIPTS))
+def test_shared_script(script):
+    """A test script of the CMake build's package passes with the wheel."""
+    start = time.perf_counter()
+    result = subprocess.run([sys.executable, os.path.join(HERE, script)] + SHARED_SCRIPTS[script],
+                            capture_output=True, text=True, cwd=HERE)
+    print(result.stdout[-3000:])
+    print("%s: %.1f s" % (script, time.perf_counter() - start))
+    assert result.returncode == 0 and "FAILED" not in result.stdout, nvtesting.explain(result)
