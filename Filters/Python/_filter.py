@@ -355,23 +355,52 @@ def extract_surface(grid, phi, k_begin, k_end, monitor=None):
     return surface
 
 
+class _Growing:
+    """Rows appended to a numpy array that grows in place, handed to VTK
+    without a copy at the end. It starts at 64 MiB of address space, which
+    the system maps on demand (untouched pages take no memory) and which
+    malloc serves by mmap: growing and the final trim are then mremap calls,
+    without copies or freed pieces left behind in the heap."""
+
+    START = 1 << 26  # bytes
+
+    def __init__(self, dtype, columns):
+        rows = self.START // (np.dtype(dtype).itemsize * columns)
+        self.data = np.empty((rows, columns), dtype=dtype)
+        self.size = 0
+
+    def append(self, rows):
+        needed = self.size + len(rows)
+        if needed > len(self.data):
+            self.data.resize((max(needed, 2 * len(self.data)), self.data.shape[1]), refcheck=False)
+        self.data[self.size:needed] = rows
+        self.size = needed
+
+    def to_vtk(self, kind, name):
+        """The rows as a VTK array of class kind that uses the same memory (which it keeps alive)."""
+        self.data.resize((self.size, self.data.shape[1]), refcheck=False)
+        array = kind()
+        array.SetName(name)
+        array.SetNumberOfComponents(self.data.shape[1])
+        array.SetVoidArray(self.data, self.data.size, 1)
+        array._numpy_reference = self.data  # as numpy_to_vtk does
+        return array
+
+
 def surface_by_slabs(run, monitor):
     """The same surface without the dense volume: the slabs that hold band
     nodes (the core's SurfaceSlabs) filled and contoured one at a time, the
     vertices on the plane two slabs share merged. Each slab's part goes
     straight into the output's arrays, which grow in place: memory holds the
-    surface once, not its pieces too."""
+    surface about once, as the C++ filter's does."""
     grid = run.GetGrid()
     nx, ny, nz = grid.Dims
     origin = np.asarray(grid.Origin)
-    world = _new_array(vtkDoubleArray, "Points", 0)
-    normal_array = _new_array(vtkFloatArray, "Normals", 0)
-    for array in (world, normal_array):
-        array.SetNumberOfComponents(3)
-    # 32-bit cell storage (vtkCellArray's own option) while ids and offsets
+    points, normals = _Growing(np.float64, 3), _Growing(np.float32, 3)
+    # 32-bit cells (vtkCellArray's own storage option) while ids and offsets
     # fit: half the memory of vtkIdType's, the largest part of a surface.
-    connectivity = _new_array(vtkTypeInt32Array, "Connectivity", 0)
-    count = triangle_values = 0
+    connectivity = _Growing(np.int32, 1)
+    count = 0
     below = {}  # (x, y) of the vertices the previous slab made on this slab's first plane -> id
     previous_end = -1
     for k_begin, k_end in run.SurfaceSlabs(0, nz):
@@ -399,36 +428,30 @@ def surface_by_slabs(run, monitor):
         new = ids < 0
         added = int(new.sum())
         ids[new] = count + np.arange(added)
+        count += added
         above = np.nonzero(new & (xyz[:, 2] == z_above))[0]
         below = {(xyz[p, 0].item(), xyz[p, 1].item()): int(ids[p]) for p in above}
-        world.SetNumberOfTuples(count + added)
-        vtk_to_numpy(world)[count:] = xyz[new] + origin  # world coordinates, in double precision
-        normal_array.SetNumberOfTuples(count + added)
-        vtk_to_numpy(normal_array)[count:] = vtk_to_numpy(piece.GetPointData().GetNormals())[new]
-        count += added
-        cells = vtk_to_numpy(piece.GetPolys().GetConnectivityArray())
-        if max(count, triangle_values + len(cells)) >= 2 ** 31 and isinstance(connectivity, vtkTypeInt32Array):
-            wide = _new_array(vtkTypeInt64Array, "Connectivity", triangle_values)
-            vtk_to_numpy(wide)[:] = vtk_to_numpy(connectivity)
+        points.append(xyz[new] + origin)  # world coordinates, in double precision
+        normals.append(vtk_to_numpy(piece.GetPointData().GetNormals())[new])
+        cells = ids[vtk_to_numpy(piece.GetPolys().GetConnectivityArray())]
+        if max(count, connectivity.size + len(cells)) >= 2 ** 31 and connectivity.data.dtype == np.int32:
+            wide = _Growing(np.int64, 1)
+            wide.append(connectivity.data[:connectivity.size])
             connectivity = wide
-        connectivity.SetNumberOfTuples(triangle_values + len(cells))
-        vtk_to_numpy(connectivity)[triangle_values:] = ids[cells]
-        triangle_values += len(cells)
+        connectivity.append(cells.reshape(-1, 1))
 
     surface = vtkPolyData()
     if count == 0:
         return surface
-    points = vtkPoints()
-    points.SetData(world)
-    surface.SetPoints(points)
-    surface.GetPointData().SetNormals(normal_array)
-    offsets = _new_array(type(connectivity), "Offsets", triangle_values // 3 + 1)
-    steps = vtk_to_numpy(offsets)
-    steps[:] = 3
-    steps[0] = 0
-    np.cumsum(steps, out=steps)
+    kind = vtkTypeInt32Array if connectivity.data.dtype == np.int32 else vtkTypeInt64Array
+    offsets = _Growing(connectivity.data.dtype, 1)
+    offsets.append(np.arange(0, connectivity.size + 1, 3).reshape(-1, 1))
     polys = vtkCellArray()
-    polys.SetData(offsets, connectivity)
+    polys.SetData(offsets.to_vtk(kind, "Offsets"), connectivity.to_vtk(kind, "Connectivity"))
+    world = vtkPoints()
+    world.SetData(points.to_vtk(vtkDoubleArray, "Points"))
+    surface.SetPoints(world)
+    surface.GetPointData().SetNormals(normals.to_vtk(vtkFloatArray, "Normals"))
     surface.SetPolys(polys)
     return surface
 
