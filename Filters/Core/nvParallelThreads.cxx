@@ -72,13 +72,18 @@ public:
       this->End = end;
       this->Grain = grain;
       this->Helpers = threads - 1;
-      this->Busy = this->Helpers;
+      this->Open = true;
+      this->Busy = 0;
       this->Failure = nullptr;
       ++this->Generation;
     }
     this->Started.notify_all();
     this->TakeChunks();
+    // Every chunk is taken: wait for the workers still computing one, not
+    // for those that have not woken up yet (on a loaded machine that can
+    // take longer than the loop), which will find the loop closed.
     std::unique_lock<std::mutex> wait(this->Lock);
+    this->Open = false;
     this->Finished.wait(wait, [this] { return this->Busy == 0; });
     this->Job = nullptr;
     if (this->Failure)
@@ -100,10 +105,11 @@ private:
         std::unique_lock<std::mutex> wait(this->Lock);
         this->Started.wait(wait, [&] { return this->Generation != seen; });
         seen = this->Generation;
-        if (index >= this->Helpers)
+        if (index >= this->Helpers || !this->Open)
         {
-          continue; // a loop with fewer threads
+          continue; // a loop with fewer threads, or one already done
         }
+        ++this->Busy;
       }
       this->TakeChunks();
       std::lock_guard<std::mutex> guard(this->Lock);
@@ -147,8 +153,9 @@ private:
   std::condition_variable Finished;
   int Workers = 0;
   std::uint64_t Generation = 0;
-  int Helpers = 0; // workers that take part in the current loop
-  int Busy = 0;    // of them, those not done yet
+  int Helpers = 0;    // workers that may take part in the current loop
+  bool Open = false;  // whether workers may still join it
+  int Busy = 0;       // workers computing its chunks
   const RangeFunction* Job = nullptr;
   std::atomic<std::int64_t> Next{ 0 };
   std::int64_t End = 0;
