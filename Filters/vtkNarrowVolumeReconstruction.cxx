@@ -5,6 +5,7 @@
 #include "nvOutputs.h"
 #include "nvParallel.h"
 #include "nvReconstruction.h"
+#include "nvSampling.h"
 #include "vtkNarrowVolumeCommunicator.h"
 #include "vtkNarrowVolumeSurface.h"
 
@@ -24,6 +25,7 @@
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -69,18 +71,26 @@ std::vector<double> PointsOf(vtkPointSet* input)
   return xyz;
 }
 
-/// An array of `nodes` values named `name`, attached to the volume; its values.
+/// An array of `nodes` values named `name`.
 template <class ArrayType>
-auto* AddArray(vtkImageData* volume, const char* name, vtkIdType nodes)
+vtkSmartPointer<ArrayType> NewArray(const char* name, vtkIdType nodes)
 {
-  vtkNew<ArrayType> array;
+  auto array = vtkSmartPointer<ArrayType>::New();
   array->SetName(name);
   array->SetNumberOfTuples(nodes);
-  volume->GetPointData()->AddArray(array);
-  return array->GetPointer(0);
+  return array;
 }
 
 } // namespace
+
+/// The dense arrays of the volume piece (null: not asked for).
+struct vtkNarrowVolumeReconstruction::DenseArrays
+{
+  vtkSmartPointer<vtkFloatArray> Phi;
+  vtkSmartPointer<vtkFloatArray> InitialPhi;
+  vtkSmartPointer<vtkFloatArray> Distance;
+  vtkSmartPointer<vtkUnsignedCharArray> Band;
+};
 
 //------------------------------------------------------------------------------
 vtkNarrowVolumeReconstruction::vtkNarrowVolumeReconstruction()
@@ -182,6 +192,8 @@ nv::Settings vtkNarrowVolumeReconstruction::GetSettings() const
   settings.GaussSeidelTolerance = this->GaussSeidelTolerance;
   settings.Mode = this->Domain == WHOLE_DOMAIN ? nv::Domain::WholeDomain : nv::Domain::NarrowBand;
   settings.EdgeFunction = this->EdgeStoppingFunction == EQUATION_3 ? nv::EdgeStopping::Eq3 : nv::EdgeStopping::Eq4;
+  settings.PreserveOffset = this->PreserveOffset;
+  settings.RemoveSmallPieces = this->RemoveSmallPieces;
   settings.KeptSheets = static_cast<nv::Sheets>(this->Sheets);
   settings.OutputVolume = this->OutputVolume;
   settings.OutputInitialPhi = this->OutputInitialPhi;
@@ -216,18 +228,21 @@ int vtkNarrowVolumeReconstruction::RequestInformation(
       several ? this->Controller->GetNumberOfProcesses() : 1);
     request->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
     connection->GetProducer()->Update(connection->GetIndex(), requests);
-    vtkPointSet* input = vtkPointSet::GetData(inputVector[0], 0);
-    if (input && input->GetNumberOfPoints() > 0)
-    {
-      input->GetBounds(bounds);
-    }
   }
+  vtkPointSet* input = vtkPointSet::GetData(inputVector[0], 0);
+  if (input && input->GetNumberOfPoints() > 0)
+  {
+    input->GetBounds(bounds);
+  }
+  std::unique_ptr<vtkNarrowVolumeCommunicator> communicator;
   if (several)
   {
-    vtkNarrowVolumeCommunicator communicator(this->Controller);
-    nv::GlobalBounds(communicator, bounds);
+    communicator.reset(new vtkNarrowVolumeCommunicator(this->Controller));
+    nv::GlobalBounds(*communicator, bounds);
   }
-  const nv::Plan plan = nv::MakePlan(this->GetSettings(), bounds);
+  std::shared_ptr<const nv::Sampling> sampling;
+  nv::WithThreads(this->NumberOfThreads, [&]() { sampling = this->MeasureSampling(input, communicator.get()); });
+  const nv::Plan plan = nv::MakePlan(this->GetSettings(), bounds, sampling->Statistics());
   if (!plan.Valid())
   {
     // No grid: RequestData says why.
@@ -273,6 +288,8 @@ int vtkNarrowVolumeReconstruction::RequestData(
   volume->Initialize();
   surface->Initialize();
   this->RelativeChanges.clear();
+  this->OffsetDistanceUsed = this->SampleSpacingUsed = this->MedianPointSpacing = this->LargestGap = 0.0;
+  this->Gaps = this->RemovedPieces = this->RemovedVoids = 0;
   this->NumberOfBandNodes = 0;
   this->NumberOfGridNodes = 0;
   this->SetupTime = this->EvolutionTime = this->OutputTime = 0.0;
@@ -292,14 +309,37 @@ int vtkNarrowVolumeReconstruction::RequestData(
     communicator.reset(new vtkNarrowVolumeCommunicator(this->Controller));
   }
 
-  // Run, with NumberOfThreads threads for the core and for VTK's filters
-  // inside (all cores when the process-wide backend is Sequential).
   bool ok = false;
-  const nv::Settings settings = this->GetSettings();
-  nv::WithThreads(settings.NumberOfThreads, [&]() {
+  std::vector<nv::SummaryArray> summary;
+  nv::WithThreads(this->NumberOfThreads, [&]() {
     FilterMonitor monitor(this);
+    const nv::Settings settings = this->GetSettings();
     nv::Reconstruction run(settings, communicator.get(), &monitor);
-    if (!run.Run(PointsOf(vtkPointSet::GetData(inputVector[0], 0))))
+    // The dense arrays, filled by the run: for output 0, or for keeping one
+    // sheet (KeepSheets works on the whole grid, so not when distributed).
+    DenseArrays dense;
+    if (nv::NeedsDenseVolume(settings, distributed))
+    {
+      const std::int64_t ghosts = distributed && this->OutputVolume
+        ? outputVector->GetInformationObject(0)->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS())
+        : 0;
+      run.RequestVolume(ghosts, [&](std::int64_t kBegin, std::int64_t kEnd) {
+        const vtkIdType nodes = static_cast<vtkIdType>(run.GetGrid().Dims[0] * run.GetGrid().Dims[1] * (kEnd - kBegin));
+        const bool volume = this->OutputVolume;
+        dense.Phi = NewArray<vtkFloatArray>("phi", nodes);
+        dense.InitialPhi = volume && this->OutputInitialPhi ? NewArray<vtkFloatArray>("InitialPhi", nodes) : nullptr;
+        dense.Distance = volume && this->OutputDistance ? NewArray<vtkFloatArray>("Distance", nodes) : nullptr;
+        dense.Band = volume && this->OutputNarrowBand ? NewArray<vtkUnsignedCharArray>("NarrowBand", nodes) : nullptr;
+        nv::VolumeArrays arrays;
+        arrays.Phi = dense.Phi->GetPointer(0);
+        arrays.InitialPhi = dense.InitialPhi ? dense.InitialPhi->GetPointer(0) : nullptr;
+        arrays.Distance = dense.Distance ? dense.Distance->GetPointer(0) : nullptr;
+        arrays.Band = dense.Band ? dense.Band->GetPointer(0) : nullptr;
+        return arrays;
+      });
+    }
+    vtkPointSet* input = vtkPointSet::GetData(inputVector[0], 0);
+    if (!run.Run(PointsOf(input), this->MeasureSampling(input, communicator.get())))
     {
       if (!run.Error().empty())
       {
@@ -312,17 +352,31 @@ int vtkNarrowVolumeReconstruction::RequestData(
     this->RelativeChanges = run.RelativeChanges();
     this->SetupTime = run.SetupSeconds();
     this->EvolutionTime = run.EvolutionSeconds();
+    this->OffsetDistanceUsed = run.GetParameters().OffsetDistance;
+    this->SampleSpacingUsed = run.GetGrid().Spacing;
+    this->MedianPointSpacing = run.GetSampling().MedianSpacing;
+    this->Gaps = run.GetGaps().Gaps;
+    this->LargestGap = run.GetGaps().LargestGap;
+    std::copy(run.GetGaps().LargestGapCenter.begin(), run.GetGaps().LargestGapCenter.end(), this->LargestGapCenter);
     const auto start = std::chrono::steady_clock::now();
     bool explained = false;
-    ok = this->ProduceOutputs(
-      run, monitor, outputVector->GetInformationObject(0), volume, surface, distributed, explained);
+    nv::RemovedPieces removed;
+    ok = this->ProduceOutputs(run, monitor, dense, volume, surface, distributed, explained, removed);
+    this->RemovedPieces = removed.Pieces;
+    this->RemovedVoids = removed.Voids;
     this->OutputTime = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     ok = !run.Anywhere(!ok); // every process, whatever stage it stopped in
     const double surfacePoints = run.SumAll(static_cast<double>(surface->GetNumberOfPoints()));
-    if (ok && surfacePoints == 0 && !explained && (!communicator || communicator->Rank() == 0))
+    const bool firstProcess = !communicator || communicator->Rank() == 0;
+    if (ok && run.GetGaps().Gaps > 0 && firstProcess)
     {
-      vtkWarningMacro(<< nv::EmptySurfaceWarning(settings, run.GetGrid().Spacing));
+      vtkWarningMacro(<< nv::GapWarning(run.GetGaps(), this->OffsetDistanceUsed));
     }
+    if (ok && surfacePoints == 0 && !explained && firstProcess)
+    {
+      vtkWarningMacro(<< nv::EmptySurfaceWarning(this->OffsetDistanceUsed, run.GetGrid().Spacing));
+    }
+    summary = nv::RunSummary(run, removed);
   });
   if (!ok)
   {
@@ -330,137 +384,155 @@ int vtkNarrowVolumeReconstruction::RequestData(
     surface->Initialize();
     return 1;
   }
-  this->AddRunSummary(volume);
+  this->AddRunSummary(volume, summary);
   this->UpdateProgress(1.0);
   return 1;
 }
 
 //------------------------------------------------------------------------------
 bool vtkNarrowVolumeReconstruction::ProduceOutputs(nv::Reconstruction& run, nv::Monitor& monitor,
-  vtkInformation* volumeInfo, vtkImageData* volume, vtkPolyData* surface, bool distributed, bool& explained)
+  const DenseArrays& dense, vtkImageData* volume, vtkPolyData* surface, bool distributed, bool& explained,
+  nv::RemovedPieces& removed)
 {
   const nv::Grid& grid = run.GetGrid();
-  const nv::Settings& settings = run.GetSettings();
   if (run.EmptyPiece())
   {
     return true;
   }
   // Output 0: the volume, this process's piece of it (its geometry always,
-  // its arrays on request), with ghost layers if the pipeline asks.
-  const std::int64_t ghosts = distributed && settings.OutputVolume
-    ? volumeInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS())
-    : 0;
-  const std::int64_t volumeBegin = std::max(run.ComputedBegin(), run.PieceBegin() - ghosts);
-  const std::int64_t volumeEnd = std::min(run.ComputedEnd(), run.PieceEnd() + ghosts);
+  // its arrays on request), with ghost layers if the pipeline asked.
+  const std::int64_t volumeBegin = dense.Phi ? run.VolumeBegin() : run.PieceBegin();
+  const std::int64_t volumeEnd = dense.Phi ? run.VolumeEnd() : run.PieceEnd();
   volume->SetOrigin(grid.Origin[0], grid.Origin[1], grid.Origin[2]);
   volume->SetSpacing(grid.Spacing, grid.Spacing, grid.Spacing);
   volume->SetExtent(0, static_cast<int>(grid.Dims[0] - 1), 0, static_cast<int>(grid.Dims[1] - 1),
     static_cast<int>(volumeBegin), static_cast<int>(volumeEnd - 1));
-  if (nv::SurfaceBySlabs(settings, distributed))
+  if (run.GetSettings().OutputVolume)
   {
-    // Output 1 without a dense volume: slab by slab.
-    monitor.Stage(nv::SlabStage[0], nv::SlabStage[1]);
-    surface->ShallowCopy(nv::ExtractSurfaceBySlabs(run.GetDistance(), run.GetBand(), run.GetPhi(),
-      run.GetParameters(), &monitor, run.PieceBegin(), run.PieceEnd()));
-    return !monitor.Aborted(); // the slabs stop early: a partial surface is no result
-  }
-  const vtkIdType layerNodes = static_cast<vtkIdType>(grid.Dims[0] * grid.Dims[1]);
-  const vtkIdType nodes = layerNodes * (volumeEnd - volumeBegin);
-  vtkNew<vtkFloatArray> phi;
-  phi->SetName("phi");
-  phi->SetNumberOfTuples(nodes);
-  nv::VolumeArrays arrays;
-  arrays.Phi = phi->GetPointer(0);
-  if (settings.OutputVolume)
-  {
-    volume->GetPointData()->SetScalars(phi);
-    if (settings.OutputInitialPhi)
+    volume->GetPointData()->SetScalars(dense.Phi);
+    for (vtkDataArray* array : { static_cast<vtkDataArray*>(dense.InitialPhi), static_cast<vtkDataArray*>(dense.Distance),
+           static_cast<vtkDataArray*>(dense.Band) })
     {
-      arrays.InitialPhi = AddArray<vtkFloatArray>(volume, "InitialPhi", nodes);
+      if (array)
+      {
+        volume->GetPointData()->AddArray(array);
+      }
     }
-    if (settings.OutputDistance)
+    if (volumeBegin < run.PieceBegin() || volumeEnd > run.PieceEnd())
     {
-      arrays.Distance = AddArray<vtkFloatArray>(volume, "Distance", nodes);
+      // The piece without its ghost layers; the last node layer is shared
+      // with the next piece, which owns the cells above it.
+      int piece[6] = { 0, static_cast<int>(grid.Dims[0] - 1), 0, static_cast<int>(grid.Dims[1] - 1),
+        static_cast<int>(run.PieceBegin()), static_cast<int>(run.PieceEnd() - 1) };
+      volume->GenerateGhostArray(piece);
     }
-    if (settings.OutputNarrowBand)
-    {
-      arrays.Band = AddArray<vtkUnsignedCharArray>(volume, "NarrowBand", nodes);
-    }
-  }
-  else
-  {
-    vtkWarningMacro(<< nv::OneSheetNeedsGridWarning());
-  }
-  monitor.Stage(nv::VolumeStage[0], nv::VolumeStage[1]);
-  run.FillVolume(arrays, volumeBegin, volumeEnd);
-  if (monitor.Aborted())
-  {
-    return false;
-  }
-  if (volumeBegin < run.PieceBegin() || volumeEnd > run.PieceEnd())
-  {
-    // The piece without its ghost layers; the last node layer is shared with
-    // the next piece, which owns the cells above it.
-    int piece[6] = { 0, static_cast<int>(grid.Dims[0] - 1), 0, static_cast<int>(grid.Dims[1] - 1),
-      static_cast<int>(run.PieceBegin()), static_cast<int>(run.PieceEnd() - 1) };
-    volume->GenerateGhostArray(piece);
   }
 
-  // Output 1: the phi = 0 surfaces of the piece (without its ghost layers),
-  // all or some of them. Choosing sheets works on a copy: phi stays phi.
-  monitor.Stage(nv::SurfaceStage[0], nv::SurfaceStage[1]);
-  vtkNew<vtkFloatArray> contoured;
-  contoured->SetArray(arrays.Phi + layerNodes * (run.PieceBegin() - volumeBegin),
-    layerNodes * (run.PieceEnd() - run.PieceBegin()), 1); // borrowed
-  if (settings.KeptSheets != nv::Sheets::Both)
+  // Output 1: the phi = 0 surfaces of the piece, from the band; or, to keep
+  // some of them, from a copy of the dense phi (phi stays phi).
+  monitor.Stage(nv::OutputStage[0], nv::OutputStage[1]);
+  const nv::Settings& settings = run.GetSettings();
+  nv::PolyDataSink sink;
+  bool done = true;
+  if (!nv::SurfaceFromDenseCopy(settings, distributed))
   {
-    if (distributed)
+    if (settings.KeptSheets != nv::Sheets::Both)
     {
       vtkWarningMacro(<< nv::OneSheetDistributedWarning());
     }
-    else
+    done = run.ExtractSurface(sink);
+  }
+  else
+  {
+    if (!settings.OutputVolume)
     {
-      vtkNew<vtkFloatArray> copy;
-      copy->DeepCopy(phi);
-      contoured->ShallowCopy(copy);
-      const std::int64_t cavities = nv::KeepSheets(grid, contoured->GetPointer(0), settings.KeptSheets);
-      explained = nv::NoInnerSheet(settings, cavities);
-      if (explained)
-      {
-        vtkWarningMacro(<< nv::NoInnerSheetWarning());
-      }
+      vtkWarningMacro(<< nv::OneSheetNeedsGridWarning());
+    }
+    std::vector<float> phi(dense.Phi->GetPointer(0), dense.Phi->GetPointer(0) + dense.Phi->GetNumberOfValues());
+    std::int64_t cavities = 0;
+    done = nv::ContourDense(run, phi.data(), sink, &monitor, cavities);
+    explained = nv::NoInnerSheet(settings, cavities);
+    if (explained)
+    {
+      vtkWarningMacro(<< nv::NoInnerSheetWarning());
     }
   }
-  surface->ShallowCopy(nv::ExtractSurface(grid, contoured, run.PieceBegin(), run.PieceEnd(), &monitor));
-  return !monitor.Aborted();
+  if (done && settings.RemoveSmallPieces && !distributed && !monitor.Aborted())
+  {
+    // The surface's small parts go, and phi follows in the same regions.
+    removed = sink.RemoveSmallPieces(run.GetParameters().OffsetDistance, grid,
+      dense.Phi ? dense.Phi->GetPointer(0) : nullptr, volumeBegin, volumeEnd - volumeBegin);
+  }
+  surface->ShallowCopy(sink.Finish());
+  return done && !monitor.Aborted();
 }
 
 //------------------------------------------------------------------------------
-void vtkNarrowVolumeReconstruction::AddRunSummary(vtkImageData* volume)
+void vtkNarrowVolumeReconstruction::AddRunSummary(
+  vtkImageData* volume, const std::vector<nv::SummaryArray>& summary)
 {
-  // Run summary in the volume's field data, for scripts and the GUI's Information panel.
-  vtkNew<vtkIntArray> iterations;
-  iterations->SetName("NumberOfIterations");
-  iterations->InsertNextValue(this->GetNumberOfIterations());
-  vtkNew<vtkIdTypeArray> bandNodes;
-  bandNodes->SetName("NarrowBandNodes");
-  bandNodes->InsertNextValue(this->NumberOfBandNodes);
-  vtkNew<vtkDoubleArray> changes;
-  changes->SetName("RelativeChange");
-  for (double c : this->RelativeChanges)
+  // The run's figures in the volume's field data (nvOutputs.h), for scripts
+  // and the GUI's Information panel.
+  for (const nv::SummaryArray& values : summary)
   {
-    changes->InsertNextValue(c);
+    vtkSmartPointer<vtkDataArray> array;
+    switch (values.Kind)
+    {
+      case nv::SummaryArray::Int:
+        array = vtkSmartPointer<vtkIntArray>::New();
+        break;
+      case nv::SummaryArray::Id:
+        array = vtkSmartPointer<vtkIdTypeArray>::New();
+        break;
+      default:
+        array = vtkSmartPointer<vtkDoubleArray>::New();
+    }
+    array->SetName(values.Name.c_str());
+    array->SetNumberOfComponents(values.Components);
+    array->SetNumberOfTuples(static_cast<vtkIdType>(values.Values.size()) / values.Components);
+    for (std::size_t v = 0; v < values.Values.size(); ++v)
+    {
+      array->SetVariantValue(static_cast<vtkIdType>(v), values.Values[v]);
+    }
+    volume->GetFieldData()->AddArray(array);
   }
-  volume->GetFieldData()->AddArray(iterations);
-  volume->GetFieldData()->AddArray(bandNodes);
-  volume->GetFieldData()->AddArray(changes);
 }
+
+//------------------------------------------------------------------------------
+std::shared_ptr<const nv::Sampling> vtkNarrowVolumeReconstruction::MeasureSampling(
+  vtkPointSet* input, nv::Communicator* communicator)
+{
+  // The same points (object, modification time, count) are measured once:
+  // the information pass and the data pass, and runs that only change
+  // properties, share one measurement.
+  vtkPoints* points = input ? input->GetPoints() : nullptr;
+  const vtkMTimeType time = points ? points->GetMTime() : 0;
+  const vtkIdType count = points ? points->GetNumberOfPoints() : 0;
+  bool stale = !this->Sampled || time != this->SampledTime || count != this->SampledPoints ||
+    (communicator != nullptr) != this->SampledShared;
+  if (communicator)
+  {
+    stale = communicator->MaxAll(stale ? 1.0 : 0.0) > 0.0; // all measure, or none
+  }
+  if (stale)
+  {
+    auto sampling = std::make_shared<nv::Sampling>();
+    sampling->Measure(PointsOf(input), communicator);
+    this->Sampled = sampling;
+    this->SampledTime = time;
+    this->SampledPoints = count;
+    this->SampledShared = communicator != nullptr;
+  }
+  return this->Sampled;
+}
+
 
 //------------------------------------------------------------------------------
 void vtkNarrowVolumeReconstruction::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "OffsetDistance: " << this->OffsetDistance << "\n";
+  os << indent << "OffsetDistance: " << this->OffsetDistance << (this->OffsetDistance == 0.0 ? " (automatic)" : "")
+     << "\n";
   os << indent << "SampleSpacing: " << this->SampleSpacing << "\n";
   os << indent << "MaximumDimension: " << this->MaximumDimension << "\n";
   os << indent << "XiCells: " << this->XiCells << "\n";
@@ -471,7 +543,9 @@ void vtkNarrowVolumeReconstruction::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "GaussSeidelTolerance: " << this->GaussSeidelTolerance << "\n";
   os << indent << "Domain: " << (this->Domain == WHOLE_DOMAIN ? "Whole Domain" : "Narrow Band") << "\n";
   os << indent << "EdgeStoppingFunction: eq. (" << this->EdgeStoppingFunction << ")\n";
+  os << indent << "PreserveOffset: " << this->PreserveOffset << "\n";
   os << indent << "Sheets: " << this->Sheets << "\n";
+  os << indent << "RemoveSmallPieces: " << this->RemoveSmallPieces << "\n";
   os << indent << "OutputVolume: " << this->OutputVolume << "\n";
   os << indent << "OutputInitialPhi: " << this->OutputInitialPhi << "\n";
   os << indent << "OutputDistance: " << this->OutputDistance << "\n";

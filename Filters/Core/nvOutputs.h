@@ -2,18 +2,22 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // What a filter makes of a finished run (step 7), in the order both filters
 // follow, the VTK filter (vtkNarrowVolumeReconstruction) and the Python
-// filter of the wheel (narrowvolume/_filter.py):
+// filter of the wheel (Python/_filter.py):
 //
-//   1. the volume piece: its geometry always; phi and the optional arrays on
-//      request (Reconstruction::FillVolume), progress stage VolumeStage;
-//   2. the surface, stage SurfaceStage: phi = 0 by vtkFlyingEdges3D, on a
-//      copy of phi from which KeepSheets removed the unwanted sheets; or,
-//      without the volume, slab by slab (SurfaceSlabs), stage SlabStage;
-//   3. the warnings below, and the run's summary in the volume's field data
-//      (NumberOfIterations, NarrowBandNodes, RelativeChange).
+//   1. before the run, the dense arrays asked for (NeedsDenseVolume,
+//      Reconstruction::RequestVolume): output 0's phi and optional arrays;
+//   2. the surface, progress stage OutputStage: from the band
+//      (Reconstruction::ExtractSurface), or, to keep one sheet, from a copy
+//      of the dense phi that KeepSheets rewrote (SurfaceFromDenseCopy,
+//      ContourDense);
+//   3. its small pieces removed, and phi flipped in the same regions
+//      (RemoveSmallPieces, nvPieces.h);
+//   4. the warnings below, and the run's figures in the volume's field data
+//      (RunSummary).
 #ifndef nvOutputs_h
 #define nvOutputs_h
 
+#include "nvPieces.h"
 #include "nvReconstruction.h"
 
 #include <cstdint>
@@ -22,38 +26,54 @@
 
 namespace nv
 {
+class Monitor;
+class SurfaceSink;
 
-/// Progress stages of the outputs (the run itself takes [0, 0.65)): begin, width.
-constexpr double VolumeStage[2] = { 0.65, 0.15 };
-constexpr double SurfaceStage[2] = { 0.8, 0.2 };
-constexpr double SlabStage[2] = { 0.65, 0.35 };
+/// The progress stage of the outputs (the run itself takes [0, 0.65)): begin, width.
+constexpr double OutputStage[2] = { 0.65, 0.35 };
 
-/// Slab thickness in cells of the surface without the volume (a multiple of the brick size).
-constexpr int SlabCells = 16;
+/// Whether the run fills dense arrays (RequestVolume): for output 0, or to
+/// keep one sheet (KeepSheets needs the whole grid, which a distributed run
+/// does not have: there both sheets are kept).
+bool NeedsDenseVolume(const Settings& settings, bool distributed);
 
-/// Whether the surface is made slab by slab, without a dense phi: the volume
-/// is off and every sheet is kept (choosing sheets needs the whole grid,
-/// which a distributed run does not have: there both sheets are kept).
-bool SurfaceBySlabs(const Settings& settings, bool distributed);
+/// Whether the surface comes from a copy of the dense phi (one sheet kept)
+/// rather than from the band.
+bool SurfaceFromDenseCopy(const Settings& settings, bool distributed);
 
-/// A slab of node layers [Begin, End) to contour; consecutive slabs share a layer.
-struct Slab
-{
-  std::int64_t Begin;
-  std::int64_t End;
-};
-
-/// The slabs of the layers [kFirst, kLast) (kLast < 0: to the grid's end)
-/// that hold band nodes: elsewhere phi has no zero.
-std::vector<Slab> SurfaceSlabs(
-  const TruncatedDistance& distance, const NarrowBand& band, std::int64_t kFirst, std::int64_t kLast);
+/**
+ * The surface of the sheets the settings keep, from `phi`, a copy of the
+ * dense phi on the whole grid, which KeepSheets rewrites. Returns false if
+ * the monitor stopped it; `cavities`: KeepSheets' count (NoInnerSheet).
+ */
+bool ContourDense(const Reconstruction& run, float* phi, SurfaceSink& sink, Monitor* monitor,
+  std::int64_t& cavities);
 
 /// Whether the chosen sheets left nothing because the shell encloses no
-/// cavity (KeepSheets found none): an open input has no inner sheet.
+/// cavity: an open input has no inner sheet.
 bool NoInnerSheet(const Settings& settings, std::int64_t cavities);
 
+/// One array of the run's summary in the volume's field data.
+struct SummaryArray
+{
+  enum Type
+  {
+    Int,    ///< vtkIntArray
+    Id,     ///< vtkIdTypeArray
+    Double  ///< vtkDoubleArray
+  };
+  std::string Name;
+  Type Kind;
+  int Components;
+  std::vector<double> Values;
+};
+
+/// The run's figures, as the field data of output 0.
+std::vector<SummaryArray> RunSummary(const Reconstruction& run, const RemovedPieces& removed);
+
 /// The warnings a filter gives about its outputs.
-std::string EmptySurfaceWarning(const Settings& settings, double spacing);
+std::string GapWarning(const GapReport& gaps, double offset);
+std::string EmptySurfaceWarning(double offset, double spacing);
 std::string NoInnerSheetWarning();
 std::string OneSheetNeedsGridWarning();
 std::string OneSheetDistributedWarning();

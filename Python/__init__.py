@@ -12,28 +12,32 @@ set. `python -m narrowvolume` (or the `narrowvolume` command) reconstructs a
 cloud file.
 
 The package comes in two flavours with the same API:
-- built by CMake with the project (for ParaView's Python, pvpython): the
-  C++ filter wrapped by VTK (FLAVOUR "vtk-module"), with
-  vtkPointCloudTextReader for .xyz / .pts text clouds;
-- installed by pip (`pip install .`): the same C++ core, built without VTK,
-  driven by a Python filter that uses the VTK installed beside it
-  (FLAVOUR "wheel"); vtkPointCloudTextReader is None there.
+- built by CMake with the project (for ParaView's Python, pvpython;
+  FLAVOUR "vtk-module"): the C++ filter wrapped by VTK, and the readers
+  (module NarrowVolume::Readers), which give vtkPolyData clouds with a vertex
+  per point: vtkPointCloudTextReader reads .xyz / .pts text,
+  vtkLASPointCloudReader LAS 1.0-1.4, vtkPCDPointCloudReader PCD (ascii,
+  binary, binary_compressed);
+- installed by pip (`pip install .`; FLAVOUR "wheel"): the same C++ core,
+  built without VTK, driven by a Python filter that uses the vtk installed
+  beside it. The readers are None there.
 """
 import importlib.util
 import sys
 
 if importlib.util.find_spec(__name__ + ".NarrowVolumeFilters") is not None:
-    from .NarrowVolumeFilters import vtkNarrowVolumeReconstruction, vtkPointCloudTextReader
+    from .NarrowVolumeFilters import vtkNarrowVolumeReconstruction
+    from .NarrowVolumeReaders import vtkLASPointCloudReader, vtkPCDPointCloudReader, vtkPointCloudTextReader
     FLAVOUR = "vtk-module"
 else:
     from ._filter import vtkNarrowVolumeReconstruction
-    vtkPointCloudTextReader = None
+    vtkLASPointCloudReader = vtkPCDPointCloudReader = vtkPointCloudTextReader = None
     FLAVOUR = "wheel"
 
 from ._reconstruct import ReconstructionError, ReconstructionWarning, reconstruct
 
-__all__ = ["vtkNarrowVolumeReconstruction", "vtkPointCloudTextReader", "reconstruct", "ReconstructionError",
-           "ReconstructionWarning", "FLAVOUR"]
+__all__ = ["vtkNarrowVolumeReconstruction", "vtkLASPointCloudReader", "vtkPCDPointCloudReader",
+           "vtkPointCloudTextReader", "reconstruct", "ReconstructionError", "ReconstructionWarning", "FLAVOUR"]
 
 # With pyvista already imported, point sets get cloud.narrowvolume.reconstruct()
 # now (otherwise pyvista 0.48 and later load it through the wheel's entry point).
