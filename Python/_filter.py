@@ -3,9 +3,11 @@
 """vtkNarrowVolumeReconstruction of the wheel: the C++ filter's twin in Python.
 
 The run is the core's (narrowvolume._core, the same C++ as the C++ filter's,
-its loops on std::threads): this file only converts, as
+its loops on std::threads), and so are the surface (marching cubes in the
+band's bricks, as in the C++ filter), the small pieces' removal, the
+warnings and the field data: this file only converts, as
 vtkNarrowVolumeReconstruction.cxx does, in the order of the core's
-nvOutputs.h. The surface comes from the user's vtkFlyingEdges3D.
+nvOutputs.h. The arrays the core fills reach VTK without a copy.
 
 Not in this flavour: SetController (distributed runs under MPI need the
 VTK-wrapped filter of the CMake build).
@@ -14,14 +16,13 @@ import operator
 import time
 
 import numpy as np
-from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.util.vtkAlgorithm import VTKPythonAlgorithmBase
 from vtkmodules.vtkCommonCore import (VTK_FLOAT, vtkCommand, vtkDoubleArray, vtkFloatArray, vtkIdTypeArray,
                                       vtkInformationVector, vtkIntArray, vtkObject, vtkOutputWindow, vtkPoints,
-                                      vtkTypeInt32Array, vtkTypeInt64Array, vtkUnsignedCharArray)
+                                      vtkUnsignedCharArray)
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkDataObject, vtkImageData, vtkPointSet, vtkPolyData
 from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline as sddp
-from vtkmodules.vtkFiltersCore import vtkFlyingEdges3D
 
 from . import _core
 from ._properties import PROPERTIES
@@ -44,9 +45,14 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
     Input: any vtkPointSet (only its points are used).
     Output port 0 (vtkImageData): point array "phi" (float, in [-1, 1]), and
     on request "InitialPhi", "Distance" and "NarrowBand"; field data
-    "NumberOfIterations", "NarrowBandNodes" and "RelativeChange".
-    Output port 1 (vtkPolyData): the phi = 0 surfaces, by vtkFlyingEdges3D,
-    with point normals.
+    "NumberOfIterations", "NarrowBandNodes", "RelativeChange" (one value per
+    step), "OffsetDistance" and "SampleSpacing" (l and h used),
+    "MedianPointSpacing", "NumberOfGaps", "LargestGap", "LargestGapCenter",
+    "RemovedPieces" and "RemovedVoids".
+    Output port 1 (vtkPolyData): the phi = 0 surfaces with point normals
+    ("Normals") and double-precision points, made by the core (marching cubes
+    on the signed distance phi implies, in the band's bricks), as the C++
+    filter makes them: the same triangles, vertices and normals.
 
     The properties, their defaults and the outputs are the C++ filter's
     (Filters/vtkNarrowVolumeReconstruction.h), and phi is bit-identical to
@@ -65,12 +71,14 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
         # The properties live in the core's own settings: a default-constructed
         # nv::Settings holds the C++ defaults.
         self._settings = _core.Settings()
+        self._sampled = None  # (points' identity, modification time, count, the core's Sampling)
         self._clear_results()
 
     def _clear_results(self):
         self._band_nodes = 0
         self._grid_nodes = 0
         self._changes = ()
+        self._used = (0.0, 0.0)
         self._times = (0.0, 0.0, 0.0)
 
     # --- Inputs and outputs, as the C++ class has them.
@@ -112,6 +120,14 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
         """The relative change ||phi^{n+1} - phi^n||_2 / ||phi^n||_2 of each time step of the last run."""
         return tuple(self._changes)
 
+    def GetOffsetDistanceUsed(self):
+        """The offset distance l of the last run (the automatic one, or the one set)."""
+        return self._used[0]
+
+    def GetSampleSpacingUsed(self):
+        """The grid spacing h of the last run (the automatic one, or the one set)."""
+        return self._used[1]
+
     def GetSetupTime(self):
         """Wall-clock seconds of the last run's set-up (distance and band)."""
         return self._times[0]
@@ -148,10 +164,9 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
     # --- The pipeline passes.
     def RequestInformation(self, request, inInfoVec, outInfoVec):
         """Declares the volume's grid (whole extent, origin, spacing, float
-        scalars), which follows the input's points: the input is brought up
-        to date here, and the data pass finds it so."""
+        scalars), which follows the input's points and their sampling: the
+        input is brought up to date here, and the data pass finds it so."""
         volume_info = outInfoVec.GetInformationObject(0)
-        bounds = (1.0, 0.0, 1.0, 0.0, 1.0, 0.0)
         if self.GetNumberOfInputConnections(0) > 0:
             connection = self.GetInputConnection(0, 0)
             producer = connection.GetProducer()
@@ -162,10 +177,12 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
             piece.Set(sddp.UPDATE_NUMBER_OF_PIECES(), 1)
             piece.Set(sddp.UPDATE_NUMBER_OF_GHOST_LEVELS(), 0)
             producer.Update(connection.GetIndex(), requests)
-            data = vtkPointSet.GetData(inInfoVec[0], 0)
-            if data is not None and data.GetNumberOfPoints() > 0:
-                bounds = data.GetBounds()
-        plan = _core.MakePlan(self._settings, list(bounds))
+        data = vtkPointSet.GetData(inInfoVec[0], 0)
+        bounds = (1.0, 0.0, 1.0, 0.0, 1.0, 0.0)
+        if data is not None and data.GetNumberOfPoints() > 0:
+            bounds = data.GetBounds()
+        sampling = self._measure_sampling(data)
+        plan = _core.MakePlan(self._settings, list(bounds), sampling.Statistics())
         if not plan.Valid():
             volume_info.Set(sddp.WHOLE_EXTENT(), (0, -1, 0, -1, 0, -1), 6)  # RequestData says why
             return 1
@@ -176,6 +193,15 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
         volume_info.Set(vtkDataObject.SPACING(), (grid.Spacing,) * 3, 3)
         vtkDataObject.SetPointDataActiveScalarInfo(volume_info, VTK_FLOAT, 1)
         return 1
+
+    def _measure_sampling(self, data):
+        """The core's sampling of the input's points, measured once per
+        points (object, modification time, count), as the C++ filter does."""
+        points = data.GetPoints() if data is not None else None
+        key = (id(points), points.GetMTime() if points else 0, points.GetNumberOfPoints() if points else 0)
+        if self._sampled is None or self._sampled[0] != key:
+            self._sampled = (key, _core.Sampling(_points_of(data)))
+        return self._sampled[1]
 
     def RequestUpdateExtent(self, request, inInfoVec, outInfoVec):
         """The shell depends on every point: asks for the whole cloud."""
@@ -197,96 +223,87 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
         if piece_info.Has(sddp.UPDATE_PIECE_NUMBER()) and piece_info.Get(sddp.UPDATE_PIECE_NUMBER()) > 0:
             return 1
         try:
-            ok = self._run(vtkPointSet.GetData(inInfoVec[0], 0), volume, surface)
+            summary = self._run(vtkPointSet.GetData(inInfoVec[0], 0), volume, surface)
         except KeyboardInterrupt:
             self._error("Interrupted (Ctrl-C): the outputs are empty.")
-            ok = False
-        if not ok:
+            summary = None
+        if summary is None:
             volume.Initialize()
             surface.Initialize()
             return 1
-        self._add_run_summary(volume)
+        _add_field_data(volume, summary)
         self.UpdateProgress(1.0)
         return 1
 
     def _run(self, data, volume, surface):
+        """The run and its outputs, as vtkNarrowVolumeReconstruction::RequestData:
+        the run's summary, or None when it failed or stopped."""
+        settings = self._settings
         monitor = _core.Monitor(report=self.UpdateProgress, poll=lambda: bool(self.GetAbortExecute()))
-        run = _core.Reconstruction(self._settings, monitor)
-        if not run.Run(_points_of(data)):
+        run = _core.Reconstruction(settings, monitor)
+        if _core.NeedsDenseVolume(settings):
+            run.RequestVolume(settings.OutputInitialPhi, settings.OutputDistance, settings.OutputNarrowBand)
+        if not run.Run(_points_of(data), self._measure_sampling(data)):
             if run.Error():
                 self._error(run.Error())
-            return False
+            return None
         self._grid_nodes = run.GetGrid().NumberOfNodes()
         self._band_nodes = run.NumberOfBandNodes()
         self._changes = tuple(run.RelativeChanges())
+        offset = run.GetParameters().OffsetDistance
+        self._used = (offset, run.GetGrid().Spacing)
         start = time.perf_counter()
-        ok, explained = self._produce_outputs(run, monitor, volume, surface)
+        done, explained, removed = self._produce_outputs(run, monitor, volume, surface)
         self._times = (run.SetupSeconds(), run.EvolutionSeconds(), time.perf_counter() - start)
-        if ok and surface.GetNumberOfPoints() == 0 and not explained:
-            self._warning(_core.EmptySurfaceWarning(run.GetSettings(), run.GetGrid().Spacing))
-        return ok
+        if not done:
+            return None
+        if run.GetGaps().Gaps > 0:
+            self._warning(_core.GapWarning(run.GetGaps(), offset))
+        if surface.GetNumberOfPoints() == 0 and not explained:
+            self._warning(_core.EmptySurfaceWarning(offset, run.GetGrid().Spacing))
+        return run.RunSummary(*removed)
 
     def _produce_outputs(self, run, monitor, volume, surface):
-        """The volume and the surface of a finished run (nvOutputs.h): (ok, whether a warning explained an empty surface)."""
+        """The volume and the surface of a finished run (nvOutputs.h):
+        (done, whether a warning explained an empty surface, (pieces, voids) removed)."""
         settings = run.GetSettings()
         grid = run.GetGrid()
         nx, ny, nz = grid.Dims
+        dense = run.TakeVolume()  # {name: numpy array} of the layers VolumeBegin to VolumeEnd
+        begin, end = (run.VolumeBegin(), run.VolumeEnd()) if dense else (0, nz)
         volume.SetOrigin(tuple(grid.Origin))
         volume.SetSpacing((grid.Spacing,) * 3)
-        volume.SetExtent(0, nx - 1, 0, ny - 1, 0, nz - 1)
-        if _core.SurfaceBySlabs(settings):
-            # The surface without a dense volume: slab by slab.
-            monitor.Stage(*_core.SlabStage)
-            surface.ShallowCopy(surface_by_slabs(run, monitor))
-            return not monitor.Aborted(), False
-
-        nodes = nx * ny * nz
-        phi = _new_array(vtkFloatArray, "phi", nodes)
-        arrays = {"phi": vtk_to_numpy(phi)}
+        volume.SetExtent(0, nx - 1, 0, ny - 1, begin, end - 1)
         if settings.OutputVolume:
-            volume.GetPointData().SetScalars(phi)
-            for wanted, name, key, kind in ((settings.OutputInitialPhi, "InitialPhi", "initial_phi", vtkFloatArray),
-                                            (settings.OutputDistance, "Distance", "distance", vtkFloatArray),
-                                            (settings.OutputNarrowBand, "NarrowBand", "band", vtkUnsignedCharArray)):
-                if wanted:
-                    array = _new_array(kind, name, nodes)
+            for name, values in dense.items():
+                kind = vtkUnsignedCharArray if name == "NarrowBand" else vtkFloatArray
+                array = _vtk_array(kind, name, values)
+                if name == "phi":
+                    volume.GetPointData().SetScalars(array)
+                else:
                     volume.GetPointData().AddArray(array)
-                    arrays[key] = vtk_to_numpy(array)
-        else:
-            self._warning(_core.OneSheetNeedsGridWarning())
-        monitor.Stage(*_core.VolumeStage)
-        run.FillVolume(k_begin=0, k_end=nz, **arrays)
-        if monitor.Aborted():
-            return False, False
 
-        # The surface, of all sheets or some: choosing sheets works on a copy, phi stays phi.
-        monitor.Stage(*_core.SurfaceStage)
-        contoured, explained = phi, False
-        if settings.KeptSheets != _core.Sheets.Both:
-            copy = np.array(arrays["phi"])
-            cavities = _core.KeepSheets(grid, copy, settings.KeptSheets)
-            contoured = numpy_to_vtk(copy, deep=0)
-            contoured._kept = copy  # the array borrows copy's memory
+        # The surface, from the band; or, to keep some sheets, from a copy of
+        # the dense phi (phi stays phi).
+        monitor.Stage(*_core.OutputStage)
+        sink = _core.MeshSink()
+        explained = False
+        if not _core.SurfaceFromDenseCopy(settings):
+            done = run.ExtractSurface(sink)
+        else:
+            if not settings.OutputVolume:
+                self._warning(_core.OneSheetNeedsGridWarning())
+            done, cavities = run.ContourDense(np.array(dense["phi"]), sink)
             explained = _core.NoInnerSheet(settings, cavities)
             if explained:
                 self._warning(_core.NoInnerSheetWarning())
-        surface.ShallowCopy(extract_surface(grid, contoured, 0, nz, monitor))
-        return not monitor.Aborted(), explained
-
-    def _add_run_summary(self, volume):
-        """NumberOfIterations, NarrowBandNodes and RelativeChange in the volume's field data."""
-        iterations = vtkIntArray()
-        iterations.SetName("NumberOfIterations")
-        iterations.InsertNextValue(self.GetNumberOfIterations())
-        band = vtkIdTypeArray()
-        band.SetName("NarrowBandNodes")
-        band.InsertNextValue(self._band_nodes)
-        changes = vtkDoubleArray()
-        changes.SetName("RelativeChange")
-        for change in self._changes:
-            changes.InsertNextValue(change)
-        for array in (iterations, band, changes):
-            volume.GetFieldData().AddArray(array)
+        removed = (0, 0)
+        if done and settings.RemoveSmallPieces and not monitor.Aborted():
+            # The surface's small parts go, and phi follows in the same regions.
+            removed = sink.RemoveSmallPieces(run.GetParameters().OffsetDistance, grid,
+                                             dense["phi"] if settings.OutputVolume else None, begin, end - begin)
+        surface.ShallowCopy(_polydata(*sink.Take()))
+        return done and not monitor.Aborted(), explained, removed
 
 
 def _points_of(data):
@@ -296,164 +313,46 @@ def _points_of(data):
     return np.ascontiguousarray(vtk_to_numpy(data.GetPoints().GetData()), dtype=np.float64).reshape(-1, 3)
 
 
-def _new_array(kind, name, tuples):
+def _vtk_array(kind, name, values):
+    """A VTK array of class kind that uses the memory of the numpy array
+    values (one tuple per row), which it keeps alive, as numpy_to_vtk does."""
     array = kind()
     array.SetName(name)
-    array.SetNumberOfTuples(tuples)
+    array.SetNumberOfComponents(values.shape[1] if values.ndim == 2 else 1)
+    array.SetVoidArray(values, values.size, 1)
+    array._numpy_reference = values
     return array
 
 
-# --- The surface, as Filters/vtkNarrowVolumeSurface.cxx makes it: contoured
-# in the grid's own frame (origin 0), then moved to world coordinates in
-# double precision, so that a cloud far from the origin keeps its precision.
-def _contour_local(grid, scalars, k_begin, k_end, monitor=None):
-    nx, ny, _ = grid.Dims
-    image = vtkImageData()
-    image.SetOrigin(0.0, 0.0, 0.0)
-    image.SetSpacing((grid.Spacing,) * 3)
-    image.SetExtent(0, nx - 1, 0, ny - 1, k_begin, k_end - 1)
-    image.GetPointData().SetScalars(scalars)
-    contour = vtkFlyingEdges3D()
-    contour.SetInputData(image)
-    contour.SetValue(0, 0.0)
-    contour.ComputeNormalsOn()
-    contour.ComputeGradientsOff()
-    contour.ComputeScalarsOff()
-    failure = []
-    if monitor is not None:
-        def forward(caller, event):
-            # The isosurfacer's progress to the monitor, the monitor's abort to it.
-            try:
-                monitor.Progress(caller.GetProgress())
-                stop = monitor.Aborted()
-            except BaseException as error:  # Ctrl-C: raised again below
-                failure.append(error)
-                stop = True
-            if stop:
-                caller.SetAbortExecute(1)
-        contour.AddObserver(vtkCommand.ProgressEvent, forward)
-    contour.Update()
-    if failure:
-        raise failure[0]
-    return contour.GetOutput()
-
-
-def _world_points(local, grid):
-    """Grid-frame float points as double world points."""
-    xyz = vtk_to_numpy(local.GetData()).astype(np.float64) + np.asarray(grid.Origin)
-    points = vtkPoints()
-    points.SetDataTypeToDouble()
-    points.SetData(numpy_to_vtk(np.ascontiguousarray(xyz), deep=1))
-    return points
-
-
-def extract_surface(grid, phi, k_begin, k_end, monitor=None):
-    """The phi = 0 surface of a dense phi (a vtkDataArray, the node layers [k_begin, k_end))."""
-    surface = _contour_local(grid, phi, k_begin, k_end, monitor)
-    if surface.GetPoints() is not None:
-        surface.SetPoints(_world_points(surface.GetPoints(), grid))
-    return surface
-
-
-class _Growing:
-    """Rows appended to a numpy array that grows in place, handed to VTK
-    without a copy at the end. It starts at 64 MiB of address space, which
-    the system maps on demand (untouched pages take no memory) and which
-    malloc serves by mmap: growing and the final trim are then mremap calls,
-    without copies or freed pieces left behind in the heap."""
-
-    START = 1 << 26  # bytes
-
-    def __init__(self, dtype, columns):
-        rows = self.START // (np.dtype(dtype).itemsize * columns)
-        self.data = np.empty((rows, columns), dtype=dtype)
-        self.size = 0
-
-    def append(self, rows):
-        needed = self.size + len(rows)
-        if needed > len(self.data):
-            self.data.resize((max(needed, 2 * len(self.data)), self.data.shape[1]), refcheck=False)
-        self.data[self.size:needed] = rows
-        self.size = needed
-
-    def to_vtk(self, kind, name):
-        """The rows as a VTK array of class kind that uses the same memory (which it keeps alive)."""
-        self.data.resize((self.size, self.data.shape[1]), refcheck=False)
-        array = kind()
-        array.SetName(name)
-        array.SetNumberOfComponents(self.data.shape[1])
-        array.SetVoidArray(self.data, self.data.size, 1)
-        array._numpy_reference = self.data  # as numpy_to_vtk does
-        return array
-
-
-def surface_by_slabs(run, monitor):
-    """The same surface without the dense volume: the slabs that hold band
-    nodes (the core's SurfaceSlabs) filled and contoured one at a time, the
-    vertices on the plane two slabs share merged. Each slab's part goes
-    straight into the output's arrays, which grow in place: memory holds the
-    surface about once, as the C++ filter's does."""
-    grid = run.GetGrid()
-    nx, ny, nz = grid.Dims
-    origin = np.asarray(grid.Origin)
-    points, normals = _Growing(np.float64, 3), _Growing(np.float32, 3)
-    # 32-bit cells (vtkCellArray's own storage option) while ids and offsets
-    # fit: half the memory of vtkIdType's, the largest part of a surface.
-    connectivity = _Growing(np.int32, 1)
-    count = 0
-    below = {}  # (x, y) of the vertices the previous slab made on this slab's first plane -> id
-    previous_end = -1
-    for k_begin, k_end in run.SurfaceSlabs(0, nz):
-        if k_begin != previous_end - 1:
-            below = {}  # the slab below was skipped
-        previous_end = k_end
-        monitor.Progress(k_begin / nz)
-        if monitor.Aborted():
-            break
-        slab = np.empty(nx * ny * (k_end - k_begin), dtype=np.float32)
-        run.FillVolume(phi=slab, k_begin=k_begin, k_end=k_end, monitored=False)
-        scalars = numpy_to_vtk(slab, deep=0)
-        scalars.SetName("phi")
-        piece = _contour_local(grid, scalars, k_begin, k_end)
-        if piece.GetNumberOfPoints() == 0:
-            below = {}
-            continue
-        xyz = vtk_to_numpy(piece.GetPoints().GetData())
-        z_below = np.float32(k_begin * grid.Spacing)
-        z_above = np.float32((k_end - 1) * grid.Spacing)
-        ids = np.full(len(xyz), -1, dtype=np.int64)
-        if below:
-            for p in np.nonzero(xyz[:, 2] == z_below)[0]:
-                ids[p] = below.get((xyz[p, 0].item(), xyz[p, 1].item()), -1)
-        new = ids < 0
-        added = int(new.sum())
-        ids[new] = count + np.arange(added)
-        count += added
-        above = np.nonzero(new & (xyz[:, 2] == z_above))[0]
-        below = {(xyz[p, 0].item(), xyz[p, 1].item()): int(ids[p]) for p in above}
-        points.append(xyz[new] + origin)  # world coordinates, in double precision
-        normals.append(vtk_to_numpy(piece.GetPointData().GetNormals())[new])
-        cells = ids[vtk_to_numpy(piece.GetPolys().GetConnectivityArray())]
-        if max(count, connectivity.size + len(cells)) >= 2 ** 31 and connectivity.data.dtype == np.int32:
-            wide = _Growing(np.int64, 1)
-            wide.append(connectivity.data[:connectivity.size])
-            connectivity = wide
-        connectivity.append(cells.reshape(-1, 1))
-
+def _polydata(points, normals, triangles):
+    """The core's surface arrays as a vtkPolyData, without copies: double
+    world coordinates, float "Normals", triangles in 64-bit cells."""
     surface = vtkPolyData()
-    if count == 0:
+    if len(triangles) == 0:
         return surface
-    kind = vtkTypeInt32Array if connectivity.data.dtype == np.int32 else vtkTypeInt64Array
-    offsets = _Growing(connectivity.data.dtype, 1)
-    offsets.append(np.arange(0, connectivity.size + 1, 3).reshape(-1, 1))
-    polys = vtkCellArray()
-    polys.SetData(offsets.to_vtk(kind, "Offsets"), connectivity.to_vtk(kind, "Connectivity"))
     world = vtkPoints()
-    world.SetData(points.to_vtk(vtkDoubleArray, "Points"))
+    world.SetData(_vtk_array(vtkDoubleArray, "Points", points))
     surface.SetPoints(world)
-    surface.GetPointData().SetNormals(normals.to_vtk(vtkFloatArray, "Normals"))
+    surface.GetPointData().SetNormals(_vtk_array(vtkFloatArray, "Normals", normals))
+    offsets = np.arange(0, 3 * len(triangles) + 1, 3, dtype=np.int64)
+    polys = vtkCellArray()
+    polys.SetData(_vtk_array(vtkIdTypeArray, "Offsets", offsets),
+                  _vtk_array(vtkIdTypeArray, "Connectivity", triangles.reshape(-1)))
     surface.SetPolys(polys)
     return surface
+
+
+def _add_field_data(volume, summary):
+    """The run's figures (the core's RunSummary) as the volume's field data."""
+    kinds = {"int": vtkIntArray, "id": vtkIdTypeArray, "double": vtkDoubleArray}
+    for name, kind, components, values in summary:
+        array = kinds[kind]()
+        array.SetName(name)
+        array.SetNumberOfComponents(components)
+        array.SetNumberOfTuples(len(values) // components)
+        for v, value in enumerate(values):
+            array.SetValue(v, int(value) if kind != "double" else value)
+        volume.GetFieldData().AddArray(array)
 
 
 # --- The properties, made from the table (_properties.py).

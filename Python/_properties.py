@@ -36,12 +36,14 @@ doc: what it means, its unit and default."""
 PROPERTIES = (
     Property("OffsetDistance", "OffsetDistance", float, None, None, (),
              "Offset distance l in world units: the half-thickness of the shell, the distance of both "
-             "phi = 0 sheets from the points. Must be > 0."),
+             "phi = 0 sheets from the points. 0 chooses it from the cloud: l = max(1.5 m, q), m the median "
+             "and q the 99.9th percentile of the distances from each point to its nearest neighbour."),
     Property("SampleSpacing", "SampleSpacing", float, None, None, (),
-             "Grid spacing h in world units. When <= 0, h is chosen so that the longest side of the "
-             "padded box has MaximumDimension cells."),
-    Property("MaximumDimension", "MaximumDimension", int, 16, 100000, (),
-             "Number of cells along the longest side of the padded box when SampleSpacing <= 0."),
+             "Grid spacing h in world units. When <= 0, h comes from MaximumDimension, or, when that is 0 "
+             "too, h = l / 4 (the paper's ratio) with at most 320 cells along the padded box's longest side."),
+    Property("MaximumDimension", "MaximumDimension", int, 0, 100000, (),
+             "Number of cells along the longest side of the padded box when SampleSpacing <= 0 (at least "
+             "16); 0: h follows l, see SampleSpacing."),
     Property("XiCells", "XiCells", float, None, None, (),
              "xi = eps_m with m = XiCells (eq. 2): the width of the initial profile and of the band, "
              "2 m cells. Larger values close small holes and thin gaps. Range [1, 64], checked when the "
@@ -66,6 +68,9 @@ PROPERTIES = (
              (("EQUATION_3", "Equation3", 3), ("EQUATION_4", "Equation4", 4)),
              "Edge-stopping function g: EQUATION_4 (4), (1 - |phi0|) |phi0|; or EQUATION_3 (3), "
              "1 - phi0^2."),
+    Property("PreserveOffset", "PreserveOffset", bool, None, None, (),
+             "Keep the sheets at the offset distance while they are smoothed: after each step the local "
+             "mean translation of the sheets (mean-curvature drift) is cancelled. Off: the paper's scheme."),
     Property("Sheets", "KeptSheets", int, 0, 2,
              (("BOTH_SHEETS", "Both", 0), ("OUTER_SHEET", "Outer", 1), ("INNER_SHEETS", "Inner", 2)),
              "Which phi = 0 sheets the surface output holds: BOTH_SHEETS (0); OUTER_SHEET (1), the one "
@@ -73,7 +78,10 @@ PROPERTIES = (
              "(2), those facing cavities enclosed by the shell (its erosion). phi is the same."),
     Property("OutputVolume", "OutputVolume", bool, None, None, (),
              "Whether output port 0 carries the phase field on the grid. Off: the volume keeps only its "
-             "geometry and the surface is made slab by slab, so memory follows the band."),
+             "geometry, and memory follows the band."),
+    Property("RemoveSmallPieces", "RemoveSmallPieces", bool, None, None, (),
+             "Remove loose pieces smaller than a ball of radius 2 l and voids inside the wall smaller than "
+             "a ball of radius l; field data RemovedPieces and RemovedVoids count them."),
     Property("OutputInitialPhi", "OutputInitialPhi", bool, None, None, (),
              "Adds the point array \"InitialPhi\" (phi0 of eq. 2) to output port 0."),
     Property("OutputDistance", "OutputDistance", bool, None, None, (),

@@ -18,7 +18,10 @@ from vtkmodules.vtkCommonExecutionModel import vtkAlgorithm
 CPP_ONLY = {"SetController", "GetController"}
 
 # Runs compared between the flavours: name -> properties (the input: the
-# points saved by pip_reference.py).
+# points saved by pip_reference.py, with lone points that make gaps and
+# loose pieces). Every property's path is in one run at least: the
+# automatic offset and grid, PreserveOffset, RemoveSmallPieces on and off
+# (with the dense phi, and without it), one sheet from the dense phi.
 CASES = {
     "default": {"MaximumDimension": 80, "OffsetDistance": 0.12},
     "outputs": {"MaximumDimension": 80, "OffsetDistance": 0.12, "OutputInitialPhi": True, "OutputDistance": True,
@@ -28,6 +31,11 @@ CASES = {
     "outer-sheet": {"SampleSpacing": 0.03, "OffsetDistance": 0.12, "Sheets": 1},
     "volume-off": {"SampleSpacing": 0.02, "OffsetDistance": 0.1, "OutputVolume": False},
     "fine": {"SampleSpacing": 0.008, "OffsetDistance": 0.06},
+    "automatic": {},
+    "preserve-offset": {"MaximumDimension": 80, "OffsetDistance": 0.12, "PreserveOffset": True,
+                        "MaximumNumberOfIterations": 5},
+    "keep-pieces": {"MaximumDimension": 80, "OffsetDistance": 0.12, "RemoveSmallPieces": False},
+    "inner-sheet-volume-off": {"SampleSpacing": 0.03, "OffsetDistance": 0.12, "Sheets": 2, "OutputVolume": False},
 }
 
 
@@ -55,8 +63,9 @@ def _plain(value):
 
 
 def run_case(cls, cloud, properties):
-    """The outputs of one run, as arrays: point arrays of the volume, its
-    field data, the surface's point count, triangles and points."""
+    """The outputs of one run, as arrays: the volume's grid, point arrays and
+    field data (every array, with its class), and the surface (points, normals, triangles: the core makes
+    it in both flavours)."""
     f = cls()
     f.SetInputData(cloud)
     for key, value in properties.items():
@@ -68,15 +77,22 @@ def run_case(cls, cloud, properties):
     for i in range(volume.GetPointData().GetNumberOfArrays()):
         array = volume.GetPointData().GetArray(i)
         out["point:" + array.GetName()] = vtk_to_numpy(array).copy()
-    for name in ("NumberOfIterations", "NarrowBandNodes", "RelativeChange"):
-        out["field:" + name] = vtk_to_numpy(volume.GetFieldData().GetArray(name)).copy()
+    fields = volume.GetFieldData()
+    for i in range(fields.GetNumberOfArrays()):
+        array = fields.GetArray(i)
+        out["field:%s:%s" % (array.GetName(), array.GetClassName())] = vtk_to_numpy(array).copy()
     out["triangles"] = np.array([surface.GetNumberOfPolys()])
-    out["surface points"] = np.array([surface.GetNumberOfPoints()])
+    if surface.GetNumberOfPoints():
+        out["surface:points"] = vtk_to_numpy(surface.GetPoints().GetData()).astype(np.float64)
+        out["surface:normals"] = vtk_to_numpy(surface.GetPointData().GetNormals()).copy()
+        out["surface:connectivity"] = vtk_to_numpy(surface.GetPolys().GetConnectivityArray()).astype(np.int64)
     return out
 
 
 def summary(outputs):
     """{key: [dtype, shape, SHA-256 of the bytes, sum]} of run_case's arrays:
-    equal summaries mean equal arrays, bit for bit."""
+    equal dtypes, shapes and digests mean equal arrays, bit for bit (the sum,
+    for a reader, depends on numpy's summation order, which its versions
+    change)."""
     return {key: [str(a.dtype), list(a.shape), hashlib.sha256(np.ascontiguousarray(a).tobytes()).hexdigest(),
                   float(np.sum(a, dtype=np.float64))] for key, a in sorted(outputs.items())}

@@ -7,8 +7,8 @@ with the CMake build's package:
 
 OUT_DIR/reference.json: the filter's public names, each property's default
 and clamping, and a summary (SHA-256 digests) of the outputs of each run of
-nvflavours.CASES on OUT_DIR/points.npy (the demo cloud's points and a
-sphere, saved so that both flavours run on the same bytes).
+nvflavours.CASES on OUT_DIR/points.npy (the demo cloud's points, a sphere
+and lone points, saved so that both flavours run on the same bytes).
 """
 import json
 import os
@@ -32,7 +32,9 @@ reader = vtkXMLPolyDataReader()
 reader.SetFileName(os.path.join(os.path.dirname(__file__), "..", "..", "Data", "trefoil.vtp"))
 reader.Update()
 trefoil = vtk_to_numpy(reader.GetOutput().GetPoints().GetData()).astype(np.float64)
-points = np.vstack([trefoil, nvtesting.sphere_points(4000, 0.4, (2.5, 0.0, 0.0))])
+# Lone points (gaps, and loose pieces that RemoveSmallPieces drops).
+lone = np.array([[2.5, 0.0, 1.0], [-2.0, 2.2, 0.3], [1.0, -2.3, -0.4]])
+points = np.vstack([trefoil, nvtesting.sphere_points(4000, 0.4, (2.5, 0.0, 0.0)), lone])
 np.save(os.path.join(out, "points.npy"), points)
 cloud = nvtesting.cloud(points)
 record = {"api": nvflavours.public_api(cls), "properties": nvflavours.property_report(cls, _properties.PROPERTIES),

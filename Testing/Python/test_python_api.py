@@ -110,7 +110,7 @@ def test_setter_marks_modified():
     before = f.GetMTime()
     f.SetOffsetDistance(f.GetOffsetDistance())
     assert f.GetMTime() == before
-    f.SetOffsetDistance(f.GetOffsetDistance() * 2)
+    f.SetOffsetDistance(f.GetOffsetDistance() + 1.0)
     assert f.GetMTime() > before
 
 
@@ -137,8 +137,9 @@ def test_same_names_defaults_and_clamping_as_cpp():
 @needs_reference
 @pytest.mark.parametrize("case", sorted(nvflavours.CASES))
 def test_outputs_bit_identical_to_cpp(case):
-    """The same points give the C++ filter's outputs: phi and the optional
-    arrays bit for bit, the grid, the field data, the surface's size."""
+    """The same points give the C++ filter's outputs bit for bit: the grid,
+    phi and the optional arrays, every field data array (with its class),
+    and the surface's points, normals and triangles."""
     with open(os.path.join(REFERENCE, "reference.json")) as f:
         expected = json.load(f)["cases"][case]
     cloud = nvtesting.cloud(np.load(os.path.join(REFERENCE, "points.npy")))
@@ -146,7 +147,9 @@ def test_outputs_bit_identical_to_cpp(case):
                                                  nvflavours.CASES[case]))
     assert sorted(got) == sorted(expected)
     for key in expected:
-        assert got[key] == expected[key], key
+        # dtype, shape and digest: the bytes. (The sums only help to read a
+        # failure: numpy's summation order differs between its versions.)
+        assert got[key][:3] == expected[key][:3], (key, got[key], expected[key])
 
 
 # --- reconstruct()
@@ -254,9 +257,14 @@ def test_ctrl_c_from_progress():
 
 @only_wheel
 def test_ctrl_c_while_the_core_runs():
-    """Ctrl-C from outside, with no progress callback: the core polls it
-    between its steps (the GIL released meanwhile) and the run stops."""
-    settings = dict(OffsetDistance=0.1, SampleSpacing=0.01, MaximumNumberOfIterations=40)
+    """Ctrl-C from outside while the core computes (the GIL released), with
+    no Python callback at all: the binding's monitor polls Python's signals
+    between the core's steps, the run stops, Run raises KeyboardInterrupt."""
+    from narrowvolume import _core
+    settings = _core.Settings()
+    settings.OffsetDistance, settings.SampleSpacing = 0.1, 0.01
+    settings.MaximumNumberOfIterations = 5000  # minutes: the signal comes long before the end
+    run = _core.Reconstruction(settings, _core.Monitor())
     sent = []
 
     def interrupt():
@@ -266,11 +274,11 @@ def test_ctrl_c_while_the_core_runs():
     start = time.perf_counter()
     timer.start()
     with pytest.raises(KeyboardInterrupt):
-        narrowvolume.reconstruct(SPHERE, **settings)
+        run.Run(np.ascontiguousarray(SPHERE))
     end = time.perf_counter()
     timer.join()
     print("interrupted %.3f s after Ctrl-C, %.2f s into the run" % (end - sent[0], end - start))
-    assert end - sent[0] < 0.5
+    assert run.Aborted() and end - sent[0] < 0.5
 
 
 @only_wheel
@@ -279,8 +287,9 @@ def test_ctrl_c_during_update():
     empty, an error says so, and Update() returns."""
     f = narrowvolume.vtkNarrowVolumeReconstruction()
     f.SetInputData(nvtesting.cloud(SPHERE))
+    f.SetOffsetDistance(0.1)
     f.SetSampleSpacing(0.01)
-    f.SetMaximumNumberOfIterations(40)
+    f.SetMaximumNumberOfIterations(5000)
     errors = []
     f.AddObserver(vtkCommand.ErrorEvent, calldata_type(VTK_STRING)(lambda c, e, text: errors.append(text)))
     timer = threading.Timer(0.5, lambda: os.kill(os.getpid(), signal.SIGINT))
