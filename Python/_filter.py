@@ -20,7 +20,7 @@ from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.util.vtkAlgorithm import VTKPythonAlgorithmBase
 from vtkmodules.vtkCommonCore import (VTK_FLOAT, vtkCommand, vtkDoubleArray, vtkFloatArray, vtkIdTypeArray,
                                       vtkInformationVector, vtkIntArray, vtkObject, vtkOutputWindow, vtkPoints,
-                                      vtkUnsignedCharArray)
+                                      vtkTypeInt64Array, vtkUnsignedCharArray)
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkDataObject, vtkImageData, vtkPointSet, vtkPolyData
 from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline as sddp
 
@@ -326,7 +326,12 @@ def _vtk_array(kind, name, values):
 
 def _polydata(points, normals, triangles):
     """The core's surface arrays as a vtkPolyData, without copies: double
-    world coordinates, float "Normals", triangles in 64-bit cells."""
+    world coordinates, float "Normals", triangles in 64-bit cells.
+
+    The cells are vtkTypeInt64Array, the cell array's own storage type: VTK
+    9.3 takes a vtkIdTypeArray by a shallow copy into a new array, which
+    drops the Python array that keeps the numpy memory alive (the cells then
+    point to freed memory), while its own type is kept as it is."""
     surface = vtkPolyData()
     if len(triangles) == 0:
         return surface
@@ -336,8 +341,8 @@ def _polydata(points, normals, triangles):
     surface.GetPointData().SetNormals(_vtk_array(vtkFloatArray, "Normals", normals))
     offsets = np.arange(0, 3 * len(triangles) + 1, 3, dtype=np.int64)
     polys = vtkCellArray()
-    polys.SetData(_vtk_array(vtkIdTypeArray, "Offsets", offsets),
-                  _vtk_array(vtkIdTypeArray, "Connectivity", triangles.reshape(-1)))
+    polys.SetData(_vtk_array(vtkTypeInt64Array, "Offsets", offsets),
+                  _vtk_array(vtkTypeInt64Array, "Connectivity", triangles.reshape(-1)))
     surface.SetPolys(polys)
     return surface
 

@@ -14,9 +14,10 @@ enumerated property, and what it means. From this table:
 - the command line makes one option per row.
 
 Adding a property to the core (a field of nv::Settings, bound in
-nvBindings.cxx) and to the C++ filter is one more row here. The test
-PipProperties checks the table against the C++ class: the same names,
-defaults and clamping.
+nvBindings.cxx) and to the C++ filter is one more row here. The tests
+check the table against the C++ class (test_python_api.py: PythonApi reads
+the wrapped class; PipVtkOldest and PipVtkNewest compare the wheel's filter
+with the C++ filter's record): the same names, defaults and clamping.
 """
 from collections import namedtuple
 import re

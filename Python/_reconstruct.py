@@ -52,7 +52,8 @@ def reconstruct(points, progress=None, **properties):
         vtkPointSet (vtkPolyData, vtkUnstructuredGrid, ...; only its points
         are used) or a pyvista point set (PolyData, PointSet, ...).
     progress: optional callable, progress(fraction) with fraction in [0, 1],
-        called on the calling thread while the run proceeds (about 45 times).
+        called on the calling thread while the run proceeds (a few dozen times,
+        never going back, ending at 1).
         An exception it raises stops the run and propagates.
     properties: the filter's properties by their names, OffsetDistance=0.05,
         or in snake_case, offset_distance=0.05 (see vtkNarrowVolumeReconstruction;
@@ -65,10 +66,11 @@ def reconstruct(points, progress=None, **properties):
     they are pyvista objects (ImageData, PolyData).
 
     Raises ReconstructionError when the filter refuses the input or the
-    properties (no points, a NaN coordinate, an offset <= 0, a grid too large
+    properties (no points, a NaN coordinate, an offset < 0, a grid too large
     for the memory limit), with the filter's message; TypeError for an
     unknown property. Ctrl-C stops the run within a progress step and raises
-    KeyboardInterrupt. The filter's warnings come as ReconstructionWarning.
+    KeyboardInterrupt. The filter's warnings (gaps wider than the offset, an
+    empty surface, no inner sheet) come as ReconstructionWarning.
 
         volume, surface = narrowvolume.reconstruct(xyz, OffsetDistance=0.05)
     """

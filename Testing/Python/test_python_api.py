@@ -503,6 +503,59 @@ def test_console_script():
     assert result.returncode == 0 and "--offset-distance" in result.stdout
 
 
+# --- The README's pip section
+README = os.path.join(HERE, "..", "..", "README.md")
+
+
+def readme_pip_snippets():
+    """The ```python blocks of the README's "## pip" section."""
+    import re
+    text = open(README).read()
+    section = text.split("\n## pip\n", 1)[1].split("\n## ", 1)[0]
+    return re.findall(r"```python\n(.*?)```", section, re.S)
+
+
+def test_readme_pip_snippets(tmp_path):
+    """Each Python snippet of the README's pip section runs as written, in
+    a folder where scan.xyz and scan.ply hold a sphere of radius 15 sampled
+    about 1.2 apart (so that the snippets' offset of 2 closes it), and the
+    files it writes hold a closed shell."""
+    from vtkmodules.vtkIOPLY import vtkPLYWriter
+    snippets = readme_pip_snippets()
+    assert len(snippets) >= 4, "the pip section's snippets"
+    points = nvtesting.sphere_points(2000, 15.0)
+    np.savetxt(str(tmp_path / "scan.xyz"), points)
+    writer = vtkPLYWriter()
+    writer.SetInputData(nvtesting.cloud(points))
+    writer.SetFileName(str(tmp_path / "scan.ply"))
+    writer.Write()
+    try:
+        import pyvista  # noqa: F401
+        has_pyvista = True
+    except ImportError:
+        has_pyvista = False
+    ran = 0
+    for number, code in enumerate(snippets):
+        if "import pyvista" in code and not (has_pyvista and WHEEL):
+            # pyvista finds the accessor through the wheel's entry point.
+            print("snippet %d skipped: %s" % (number, "not the wheel" if has_pyvista else "no pyvista"))
+            continue
+        stl = tmp_path / "shell.stl"
+        if stl.exists():
+            stl.unlink()
+        result = subprocess.run(nvtesting.python_command() + ["-c", code], cwd=str(tmp_path),
+                                capture_output=True, text=True)
+        assert result.returncode == 0, "snippet %d:\n%s\n%s" % (number, code, nvtesting.explain(result))
+        assert "Traceback" not in result.stderr and "refused" not in result.stdout, result.stdout + result.stderr
+        print("snippet %d: %s" % (number, result.stdout.strip().replace("\n", " | ")[-200:]))
+        if '"shell.stl"' in code:
+            surface = _read(str(stl))
+            triangles, open_edges, _ = nvtesting.merged_surface(surface)
+            assert triangles > 1000 and open_edges == 0, (number, triangles, open_edges)
+        ran += 1
+    assert ran >= 3
+
+
 # --- The project's other Python tests, against the wheel (ctest runs them
 # against the CMake build's package, each on its own).
 SHARED_SCRIPTS = {
