@@ -200,7 +200,7 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
         points = data.GetPoints() if data is not None else None
         key = (id(points), points.GetMTime() if points else 0, points.GetNumberOfPoints() if points else 0)
         if self._sampled is None or self._sampled[0] != key:
-            self._sampled = (key, _core.Sampling(_points_of(data)))
+            self._sampled = (key, _core.Sampling(_points_of(data), self._settings.NumberOfThreads))
         return self._sampled[1]
 
     def RequestUpdateExtent(self, request, inInfoVec, outInfoVec):

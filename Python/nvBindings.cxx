@@ -423,14 +423,16 @@ NB_MODULE(_core, m)
     .def_ro("LargestGap", &nv::GapReport::LargestGap)
     .def_prop_ro("LargestGapCenter", [](const nv::GapReport& g) { return g.LargestGapCenter; });
   nb::class_<nv::Sampling>(m, "Sampling", "The sampling of a cloud (nv::Sampling), measured once per cloud.")
-    .def(nb::new_([](Points points) {
+    .def(nb::new_([](Points points, int threads) {
       auto sampling = std::make_shared<nv::Sampling>();
       std::vector<double> xyz(points.data(), points.data() + 3 * points.shape(0));
       nb::gil_scoped_release release;
-      sampling->Measure(xyz, nullptr);
+      nv::WithThreads(threads, [&]() { sampling->Measure(xyz, nullptr); });
       return sampling;
     }),
-      "points"_a, "Measures the nearest-neighbour distances of the points ((n, 3) float64), without the GIL.")
+      "points"_a, "threads"_a = 0,
+      "Measures the nearest-neighbour distances of the points ((n, 3) float64) on `threads` threads (0: all "
+      "cores), without the GIL.")
     .def("Statistics", &nv::Sampling::Statistics);
 
   m.def(

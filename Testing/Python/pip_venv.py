@@ -42,7 +42,10 @@ def step(title, command, **kwargs):
 def venv(folder):
     """A fresh virtual environment; its Python."""
     if os.path.isdir(folder):
+        start = time.perf_counter()
         shutil.rmtree(folder)
+        print("pip_venv: removing the previous %s took %.1f s" % (os.path.basename(folder), time.perf_counter() - start),
+              flush=True)
     step("venv " + os.path.basename(folder), [sys.executable, "-m", "venv", folder])
     return os.path.join(folder, "bin", "python")
 
@@ -85,8 +88,10 @@ def test(name, cache, work, reference, requirements):
     step("pip install", [python, "-m", "pip", "install", "-q"] + offline(cache) + ["--find-links", dist,
                                                                                   "narrowvolume", "pytest"]
          + requirements)
-    versions = subprocess.run([python, "-c", "import vtk, numpy, narrowvolume; print('vtk', vtk.vtkVersion.GetVTKVersion(), "
-                               "'numpy', numpy.__version__, narrowvolume.FLAVOUR, narrowvolume.__file__)"],
+    # vtkmodules.vtkCommonCore, not vtk: importing vtk loads every VTK module (seconds).
+    versions = subprocess.run([python, "-c", "from vtkmodules.vtkCommonCore import vtkVersion; import numpy, narrowvolume; "
+                               "print('vtk', vtkVersion.GetVTKVersion(), 'numpy', numpy.__version__, "
+                               "narrowvolume.FLAVOUR, narrowvolume.__file__)"],
                               capture_output=True, text=True)
     print("pip_venv: %s %s" % (name, versions.stdout.strip() or versions.stderr.strip()), flush=True)
     environment = dict(os.environ, NV_EXPECT_FLAVOUR="wheel", NV_PIP_REFERENCE=reference)
