@@ -2,15 +2,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkNarrowVolumeReconstruction.h"
 
+#include "nvOutputs.h"
 #include "nvParallel.h"
-#include "nvPieces.h"
 #include "nvReconstruction.h"
 #include "nvSampling.h"
-#include "nvSheets.h"
-#include "nvSurface.h"
-#include "nvSurfaceField.h"
 #include "vtkNarrowVolumeCommunicator.h"
-#include "vtkNarrowVolumePieces.h"
 #include "vtkNarrowVolumeSurface.h"
 
 #include "vtkAlgorithmOutput.h"
@@ -29,67 +25,34 @@
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnsignedCharArray.h"
 
-#include <vtksys/SystemInformation.hxx>
-
-#include <atomic>
 #include <chrono>
 #include <memory>
-#include <thread>
 
 vtkStandardNewMacro(vtkNarrowVolumeReconstruction);
 
 namespace
 {
 
-/// Forwards the core's progress to the filter (main thread only) and polls
-/// the filter's abort flag there; worker threads see the cached answer.
-class FilterMonitor : public nv::Monitor
+/// The core's progress to the filter, and the filter's abort flag to the
+/// core, on the thread that runs the filter (see nv::CallerMonitor).
+class FilterMonitor : public nv::CallerMonitor
 {
 public:
   FilterMonitor(vtkAlgorithm* filter)
     : Filter(filter)
-    , MainThread(std::this_thread::get_id())
   {
   }
-  void Stage(double begin, double width) override
-  {
-    this->Begin = begin;
-    this->Width = width;
-    this->Progress(0.0);
-  }
-  void Progress(double fraction) override
-  {
-    if (std::this_thread::get_id() == this->MainThread)
-    {
-      // Monotone: a stage's parts may report out of order.
-      const double progress = std::max(this->Filter->GetProgress(), this->Begin + this->Width * fraction);
-      if (progress > this->Filter->GetProgress() || fraction == 0.0)
-      {
-        this->Filter->UpdateProgress(progress);
-      }
-      this->Stop = this->Stop || this->Filter->GetAbortExecute();
-    }
-  }
-  bool Aborted() override
-  {
-    if (std::this_thread::get_id() == this->MainThread)
-    {
-      this->Stop = this->Stop || this->Filter->GetAbortExecute();
-    }
-    return this->Stop;
-  }
+
+protected:
+  void Report(double progress) override { this->Filter->UpdateProgress(progress); }
+  bool Poll() override { return this->Filter->GetAbortExecute() != 0; }
 
 private:
   vtkAlgorithm* Filter;
-  std::thread::id MainThread;
-  double Begin = 0.0;
-  double Width = 1.0;
-  std::atomic<bool> Stop{ false };
 };
 
 /// The points of a point set as xyz triples in double precision.
@@ -106,31 +69,6 @@ std::vector<double> PointsOf(vtkPointSet* input)
     }
   }
   return xyz;
-}
-
-/// Runs fn with NumberOfThreads threads, and all cores when the process-wide
-/// backend is Sequential (the default of Debian's ParaView).
-template <class Function>
-void WithThreads(int threads, Function fn)
-{
-  std::string backend = vtkSMPTools::GetBackend() ? vtkSMPTools::GetBackend() : "Sequential";
-  if (backend == "Sequential")
-  {
-    backend = "STDThread";
-  }
-  vtkSMPTools::LocalScope(vtkSMPTools::Config{ threads, backend, false }, fn);
-}
-
-/// MemoryLimit (MiB; 0: half the physical memory) in bytes.
-double MemoryLimitBytes(double limitMiB)
-{
-  if (limitMiB <= 0.0)
-  {
-    vtksys::SystemInformation info;
-    info.RunMemoryCheck();
-    limitMiB = 0.5 * static_cast<double>(info.GetTotalPhysicalMemory());
-  }
-  return limitMiB * 1048576.0;
 }
 
 /// An array of `nodes` values named `name`.
@@ -254,12 +192,15 @@ nv::Settings vtkNarrowVolumeReconstruction::GetSettings() const
   settings.GaussSeidelTolerance = this->GaussSeidelTolerance;
   settings.Mode = this->Domain == WHOLE_DOMAIN ? nv::Domain::WholeDomain : nv::Domain::NarrowBand;
   settings.EdgeFunction = this->EdgeStoppingFunction == EQUATION_3 ? nv::EdgeStopping::Eq3 : nv::EdgeStopping::Eq4;
-  settings.RemoveSmallPieces = this->RemoveSmallPieces;
   settings.PreserveOffset = this->PreserveOffset;
-  // phi, the optional arrays, and the isosurfacer's working memory.
-  settings.OutputBytesPerNode = this->OutputVolume ? 4.0 + (this->OutputInitialPhi ? 4.0 : 0.0) +
-      (this->OutputDistance ? 4.0 : 0.0) + (this->OutputNarrowBand ? 1.0 : 0.0) + 2.0
-                                                    : 0.0;
+  settings.RemoveSmallPieces = this->RemoveSmallPieces;
+  settings.KeptSheets = static_cast<nv::Sheets>(this->Sheets);
+  settings.OutputVolume = this->OutputVolume;
+  settings.OutputInitialPhi = this->OutputInitialPhi;
+  settings.OutputDistance = this->OutputDistance;
+  settings.OutputNarrowBand = this->OutputNarrowBand;
+  settings.NumberOfThreads = this->NumberOfThreads;
+  settings.MemoryLimit = this->MemoryLimit;
   return settings;
 }
 
@@ -300,7 +241,7 @@ int vtkNarrowVolumeReconstruction::RequestInformation(
     nv::GlobalBounds(*communicator, bounds);
   }
   std::shared_ptr<const nv::Sampling> sampling;
-  WithThreads(this->NumberOfThreads, [&]() { sampling = this->MeasureSampling(input, communicator.get()); });
+  nv::WithThreads(this->NumberOfThreads, [&]() { sampling = this->MeasureSampling(input, communicator.get()); });
   const nv::Plan plan = nv::MakePlan(this->GetSettings(), bounds, sampling->Statistics());
   if (!plan.Valid())
   {
@@ -369,15 +310,15 @@ int vtkNarrowVolumeReconstruction::RequestData(
   }
 
   bool ok = false;
-  WithThreads(this->NumberOfThreads, [&]() {
+  std::vector<nv::SummaryArray> summary;
+  nv::WithThreads(this->NumberOfThreads, [&]() {
     FilterMonitor monitor(this);
-    nv::Settings settings = this->GetSettings();
-    settings.MemoryLimitBytes = MemoryLimitBytes(this->MemoryLimit);
+    const nv::Settings settings = this->GetSettings();
     nv::Reconstruction run(settings, communicator.get(), &monitor);
     // The dense arrays, filled by the run: for output 0, or for keeping one
     // sheet (KeepSheets works on the whole grid, so not when distributed).
     DenseArrays dense;
-    if (this->OutputVolume || (this->Sheets != BOTH_SHEETS && !distributed))
+    if (nv::NeedsDenseVolume(settings, distributed))
     {
       const std::int64_t ghosts = distributed && this->OutputVolume
         ? outputVector->GetInformationObject(0)->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS())
@@ -419,20 +360,23 @@ int vtkNarrowVolumeReconstruction::RequestData(
     std::copy(run.GetGaps().LargestGapCenter.begin(), run.GetGaps().LargestGapCenter.end(), this->LargestGapCenter);
     const auto start = std::chrono::steady_clock::now();
     bool explained = false;
-    ok = this->ProduceOutputs(run, monitor, dense, volume, surface, distributed, explained);
+    nv::RemovedPieces removed;
+    ok = this->ProduceOutputs(run, monitor, dense, volume, surface, distributed, explained, removed);
+    this->RemovedPieces = removed.Pieces;
+    this->RemovedVoids = removed.Voids;
     this->OutputTime = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     ok = !run.Anywhere(!ok); // every process, whatever stage it stopped in
     const double surfacePoints = run.SumAll(static_cast<double>(surface->GetNumberOfPoints()));
-    if (ok)
+    const bool firstProcess = !communicator || communicator->Rank() == 0;
+    if (ok && run.GetGaps().Gaps > 0 && firstProcess)
     {
-      this->WarnAboutGaps(!communicator || communicator->Rank() == 0);
+      vtkWarningMacro(<< nv::GapWarning(run.GetGaps(), this->OffsetDistanceUsed));
     }
-    if (ok && surfacePoints == 0 && !explained && (!communicator || communicator->Rank() == 0))
+    if (ok && surfacePoints == 0 && !explained && firstProcess)
     {
-      vtkWarningMacro("The surface is empty: the shell did not survive the evolution. The offset distance ("
-        << this->OffsetDistanceUsed << ") is probably small against the gaps between points or the grid spacing ("
-        << run.GetGrid().Spacing << "): increase OffsetDistance or XiCells, or refine the grid.");
+      vtkWarningMacro(<< nv::EmptySurfaceWarning(this->OffsetDistanceUsed, run.GetGrid().Spacing));
     }
+    summary = nv::RunSummary(run, removed);
   });
   if (!ok)
   {
@@ -440,14 +384,15 @@ int vtkNarrowVolumeReconstruction::RequestData(
     surface->Initialize();
     return 1;
   }
-  this->AddRunSummary(volume);
+  this->AddRunSummary(volume, summary);
   this->UpdateProgress(1.0);
   return 1;
 }
 
 //------------------------------------------------------------------------------
 bool vtkNarrowVolumeReconstruction::ProduceOutputs(nv::Reconstruction& run, nv::Monitor& monitor,
-  const DenseArrays& dense, vtkImageData* volume, vtkPolyData* surface, bool distributed, bool& explained)
+  const DenseArrays& dense, vtkImageData* volume, vtkPolyData* surface, bool distributed, bool& explained,
+  nv::RemovedPieces& removed)
 {
   const nv::Grid& grid = run.GetGrid();
   if (run.EmptyPiece())
@@ -462,7 +407,7 @@ bool vtkNarrowVolumeReconstruction::ProduceOutputs(nv::Reconstruction& run, nv::
   volume->SetSpacing(grid.Spacing, grid.Spacing, grid.Spacing);
   volume->SetExtent(0, static_cast<int>(grid.Dims[0] - 1), 0, static_cast<int>(grid.Dims[1] - 1),
     static_cast<int>(volumeBegin), static_cast<int>(volumeEnd - 1));
-  if (this->OutputVolume)
+  if (run.GetSettings().OutputVolume)
   {
     volume->GetPointData()->SetScalars(dense.Phi);
     for (vtkDataArray* array : { static_cast<vtkDataArray*>(dense.InitialPhi), static_cast<vtkDataArray*>(dense.Distance),
@@ -485,90 +430,72 @@ bool vtkNarrowVolumeReconstruction::ProduceOutputs(nv::Reconstruction& run, nv::
 
   // Output 1: the phi = 0 surfaces of the piece, from the band; or, to keep
   // some of them, from a copy of the dense phi (phi stays phi).
-  monitor.Stage(0.65, 0.35);
+  monitor.Stage(nv::OutputStage[0], nv::OutputStage[1]);
+  const nv::Settings& settings = run.GetSettings();
   nv::PolyDataSink sink;
   bool done = true;
-  if (this->Sheets == BOTH_SHEETS || distributed)
+  if (!nv::SurfaceFromDenseCopy(settings, distributed))
   {
-    if (this->Sheets != BOTH_SHEETS)
+    if (settings.KeptSheets != nv::Sheets::Both)
     {
-      vtkWarningMacro("Keeping one sheet needs the whole grid on one process: both sheets are "
-                      "output in a distributed run.");
+      vtkWarningMacro(<< nv::OneSheetDistributedWarning());
     }
     done = run.ExtractSurface(sink);
   }
   else
   {
-    if (!this->OutputVolume)
+    if (!settings.OutputVolume)
     {
-      vtkWarningMacro("Keeping one sheet needs the dense grid: memory follows the box although "
-                      "OutputVolume is off.");
+      vtkWarningMacro(<< nv::OneSheetNeedsGridWarning());
     }
     std::vector<float> phi(dense.Phi->GetPointer(0), dense.Phi->GetPointer(0) + dense.Phi->GetNumberOfValues());
-    const std::int64_t cavities =
-      nv::KeepSheets(grid, phi.data(), this->Sheets == OUTER_SHEET ? nv::Sheets::Outer : nv::Sheets::Inner);
-    explained = this->Sheets == INNER_SHEETS && cavities == 0;
+    std::int64_t cavities = 0;
+    done = nv::ContourDense(run, phi.data(), sink, &monitor, cavities);
+    explained = nv::NoInnerSheet(settings, cavities);
     if (explained)
     {
-      vtkWarningMacro("There is no inner sheet: the shell encloses no cavity, so its two sheets join "
-                      "into one. The input's surface is open (a one-sided scan, or holes wider than "
-                      "twice the offset distance); its shell has only an outer sheet.");
+      vtkWarningMacro(<< nv::NoInnerSheetWarning());
     }
-    const nv::DenseField field(grid, phi.data(), 0, grid.Dims[2], run.GetParameters());
-    done = nv::ContourBricks(grid, field, sink, 0, -1, &monitor);
   }
-  surface->ShallowCopy(sink.Finish());
-  if (done && this->RemoveSmallPieces && !distributed && !monitor.Aborted())
+  if (done && settings.RemoveSmallPieces && !distributed && !monitor.Aborted())
   {
     // The surface's small parts go, and phi follows in the same regions.
-    const double offset = run.GetParameters().OffsetDistance;
-    std::vector<nv::DroppedPart> dropped;
-    const nv::RemovedPieces removed = nv::RemoveSmallSurfacePieces(surface, offset, dense.Phi ? &dropped : nullptr);
-    this->RemovedPieces = removed.Pieces;
-    this->RemovedVoids = removed.Voids;
-    for (const nv::DroppedPart& part : dropped)
-    {
-      nv::FlipRegion(grid, dense.Phi->GetPointer(0), volumeBegin, volumeEnd - volumeBegin, part.Vertex.data(),
-        part.Piece, 2.0 * (part.Piece ? nv::SmallPieceVolume(offset) : nv::SmallVoidVolume(offset)));
-    }
+    removed = sink.RemoveSmallPieces(run.GetParameters().OffsetDistance, grid,
+      dense.Phi ? dense.Phi->GetPointer(0) : nullptr, volumeBegin, volumeEnd - volumeBegin);
   }
+  surface->ShallowCopy(sink.Finish());
   return done && !monitor.Aborted();
 }
 
 //------------------------------------------------------------------------------
-void vtkNarrowVolumeReconstruction::AddRunSummary(vtkImageData* volume)
+void vtkNarrowVolumeReconstruction::AddRunSummary(
+  vtkImageData* volume, const std::vector<nv::SummaryArray>& summary)
 {
-  // Run summary in the volume's field data, for scripts and the GUI's Information panel.
-  vtkNew<vtkIntArray> iterations;
-  iterations->SetName("NumberOfIterations");
-  iterations->InsertNextValue(this->GetNumberOfIterations());
-  vtkNew<vtkIdTypeArray> bandNodes;
-  bandNodes->SetName("NarrowBandNodes");
-  bandNodes->InsertNextValue(this->NumberOfBandNodes);
-  vtkNew<vtkDoubleArray> changes;
-  changes->SetName("RelativeChange");
-  for (double c : this->RelativeChanges)
+  // The run's figures in the volume's field data (nvOutputs.h), for scripts
+  // and the GUI's Information panel.
+  for (const nv::SummaryArray& values : summary)
   {
-    changes->InsertNextValue(c);
-  }
-  volume->GetFieldData()->AddArray(iterations);
-  volume->GetFieldData()->AddArray(bandNodes);
-  volume->GetFieldData()->AddArray(changes);
-  auto addValues = [volume](const char* name, std::initializer_list<double> values) {
-    vtkNew<vtkDoubleArray> array;
-    array->SetName(name);
-    array->SetNumberOfComponents(static_cast<int>(values.size()));
-    array->InsertNextTuple(values.begin());
+    vtkSmartPointer<vtkDataArray> array;
+    switch (values.Kind)
+    {
+      case nv::SummaryArray::Int:
+        array = vtkSmartPointer<vtkIntArray>::New();
+        break;
+      case nv::SummaryArray::Id:
+        array = vtkSmartPointer<vtkIdTypeArray>::New();
+        break;
+      default:
+        array = vtkSmartPointer<vtkDoubleArray>::New();
+    }
+    array->SetName(values.Name.c_str());
+    array->SetNumberOfComponents(values.Components);
+    array->SetNumberOfTuples(static_cast<vtkIdType>(values.Values.size()) / values.Components);
+    for (std::size_t v = 0; v < values.Values.size(); ++v)
+    {
+      array->SetVariantValue(static_cast<vtkIdType>(v), values.Values[v]);
+    }
     volume->GetFieldData()->AddArray(array);
-  };
-  addValues("OffsetDistance", { this->OffsetDistanceUsed });
-  addValues("SampleSpacing", { this->SampleSpacingUsed });
-  addValues("MedianPointSpacing", { this->MedianPointSpacing });
-  addValues("NumberOfGaps", { static_cast<double>(this->Gaps) });
-  addValues("LargestGap", { this->LargestGap });
-  addValues("LargestGapCenter", { this->LargestGapCenter[0], this->LargestGapCenter[1], this->LargestGapCenter[2] });
-  addValues("RemovedPieces", { static_cast<double>(this->RemovedPieces) });
-  addValues("RemovedVoids", { static_cast<double>(this->RemovedVoids) });
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -599,21 +526,6 @@ std::shared_ptr<const nv::Sampling> vtkNarrowVolumeReconstruction::MeasureSampli
   return this->Sampled;
 }
 
-void vtkNarrowVolumeReconstruction::WarnAboutGaps(bool firstProcess)
-{
-  if (this->Gaps == 0 || !firstProcess)
-  {
-    return;
-  }
-  vtkWarningMacro("The cloud has " << this->Gaps << (this->Gaps == 1 ? " gap" : " gaps")
-    << " wider than the offset distance " << this->OffsetDistanceUsed
-    << ": there, points have no neighbour within the offset, so the shell may open (a tunnel through "
-       "its wall, or a loose piece around a point farther than twice the offset from all others). The largest gap is "
-    << this->LargestGap << " wide, at (" << this->LargestGapCenter[0] << ", " << this->LargestGapCenter[1] << ", "
-    << this->LargestGapCenter[2] << "). To bridge the gaps, set OffsetDistance to at least " << this->LargestGap
-    << ", or fill them with points; loose pieces are dropped by RemoveSmallPieces. Field data NumberOfGaps, "
-       "LargestGap and LargestGapCenter hold these figures.");
-}
 
 //------------------------------------------------------------------------------
 void vtkNarrowVolumeReconstruction::PrintSelf(ostream& os, vtkIndent indent)

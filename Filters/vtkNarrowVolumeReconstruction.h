@@ -67,7 +67,9 @@ class Communicator;
 class Monitor;
 class Reconstruction;
 class Sampling;
+struct RemovedPieces;
 struct Settings;
+struct SummaryArray;
 }
 
 class vtkImageData;
@@ -368,21 +370,18 @@ protected:
   bool HasSeveralProcesses() const;
   /// Whether this request is one piece of a distributed run (see SetController).
   bool IsDistributed(vtkInformationVector* outputVector) const;
-  /// The properties, as the core takes them (all but the memory limit,
-  /// which only the run needs: RequestData resolves it).
+  /// The properties, as the core takes them.
   nv::Settings GetSettings() const;
   /// The volume piece and the surface of a finished run; false if aborted.
   /// explained: a warning already said why the surface is empty.
   struct DenseArrays;
   bool ProduceOutputs(nv::Reconstruction& run, nv::Monitor& monitor, const DenseArrays& dense,
-    vtkImageData* volume, vtkPolyData* surface, bool distributed, bool& explained);
-  /// The run's figures as the volume's field data.
-  void AddRunSummary(vtkImageData* volume);
+    vtkImageData* volume, vtkPolyData* surface, bool distributed, bool& explained, nv::RemovedPieces& removed);
+  /// The run's figures (nv::RunSummary) as the volume's field data.
+  void AddRunSummary(vtkImageData* volume, const std::vector<nv::SummaryArray>& summary);
   /// The sampling of the input's points, measured once per input (collective
   /// when the processes share the cloud).
   std::shared_ptr<const nv::Sampling> MeasureSampling(vtkPointSet* input, nv::Communicator* communicator);
-  /// Warns about gaps wider than the offset (on the first process).
-  void WarnAboutGaps(bool firstProcess);
 
   double OffsetDistance = 0.0;
   double SampleSpacing = 0.0;

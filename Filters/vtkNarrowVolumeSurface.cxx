@@ -55,6 +55,22 @@ VertexId* PolyDataSink::AddTriangles(std::int64_t n)
   return Extend(this->Connectivity.GetPointer(), 3 * n);
 }
 
+RemovedPieces PolyDataSink::RemoveSmallPieces(
+  double offset, const Grid& grid, float* phi, std::int64_t kBegin, std::int64_t layers)
+{
+  SurfaceArrays arrays;
+  arrays.Points = this->Points->GetPointer(0);
+  arrays.Normals = this->Normals->GetPointer(0);
+  arrays.Triangles = this->Connectivity->GetPointer(0);
+  arrays.NumberOfPoints = this->Points->GetNumberOfTuples();
+  arrays.NumberOfTriangles = this->Connectivity->GetNumberOfTuples() / 3;
+  const RemovedPieces removed = nv::RemoveSmallPieces(arrays, offset, grid, phi, kBegin, layers);
+  this->Points->SetNumberOfTuples(arrays.NumberOfPoints);
+  this->Normals->SetNumberOfTuples(arrays.NumberOfPoints);
+  this->Connectivity->SetNumberOfTuples(3 * arrays.NumberOfTriangles);
+  return removed;
+}
+
 vtkSmartPointer<vtkPolyData> PolyDataSink::Finish()
 {
   this->Points->Squeeze();

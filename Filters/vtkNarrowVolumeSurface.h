@@ -7,6 +7,7 @@
 #ifndef vtkNarrowVolumeSurface_h
 #define vtkNarrowVolumeSurface_h
 
+#include "nvPieces.h"
 #include "nvSurface.h"
 
 #include "vtkNew.h"
@@ -27,6 +28,10 @@ public:
   ~PolyDataSink() override;
   void AddPoints(std::int64_t n, double*& xyz, float*& normals) override;
   VertexId* AddTriangles(std::int64_t n) override;
+  /// Removes the small pieces and voids of the surface received so far, in
+  /// place, and flips phi (may be null) in the same regions (nv::RemoveSmallPieces).
+  RemovedPieces RemoveSmallPieces(
+    double offset, const Grid& grid, float* phi, std::int64_t kBegin, std::int64_t layers);
   /// The surface received so far.
   vtkSmartPointer<vtkPolyData> Finish();
 

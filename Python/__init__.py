@@ -2,17 +2,44 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """NarrowVolume: narrow volume (thick shell) reconstruction from point clouds.
 
-    from narrowvolume import vtkNarrowVolumeReconstruction
+    from narrowvolume import vtkNarrowVolumeReconstruction, reconstruct
 
-The filter is a VTK algorithm: set its input to any vtkPointSet and read the
-phase field (output port 0, vtkImageData) and the offset surfaces (output
-port 1, vtkPolyData). The readers (module NarrowVolume::Readers) give
-vtkPolyData clouds with a vertex per point: vtkPointCloudTextReader reads
-.xyz / .pts text, vtkLASPointCloudReader LAS 1.0-1.4, vtkPCDPointCloudReader
-PCD (ascii, binary, binary_compressed).
+vtkNarrowVolumeReconstruction is a VTK algorithm: set its input to any
+vtkPointSet and read the phase field (output port 0, vtkImageData) and the
+offset surfaces (output port 1, vtkPolyData). reconstruct(points, ...) does
+the same in one call for an (n, 3) array, a vtkPointSet or a pyvista point
+set. `python -m narrowvolume` (or the `narrowvolume` command) reconstructs a
+cloud file.
+
+The package comes in two flavours with the same API:
+- built by CMake with the project (for ParaView's Python, pvpython;
+  FLAVOUR "vtk-module"): the C++ filter wrapped by VTK, and the readers
+  (module NarrowVolume::Readers), which give vtkPolyData clouds with a vertex
+  per point: vtkPointCloudTextReader reads .xyz / .pts text,
+  vtkLASPointCloudReader LAS 1.0-1.4, vtkPCDPointCloudReader PCD (ascii,
+  binary, binary_compressed);
+- installed by pip (`pip install .`; FLAVOUR "wheel"): the same C++ core,
+  built without VTK, driven by a Python filter that uses the vtk installed
+  beside it. The readers are None there.
 """
-from .NarrowVolumeFilters import vtkNarrowVolumeReconstruction
-from .NarrowVolumeReaders import vtkLASPointCloudReader, vtkPCDPointCloudReader, vtkPointCloudTextReader
+import importlib.util
+import sys
+
+if importlib.util.find_spec(__name__ + ".NarrowVolumeFilters") is not None:
+    from .NarrowVolumeFilters import vtkNarrowVolumeReconstruction
+    from .NarrowVolumeReaders import vtkLASPointCloudReader, vtkPCDPointCloudReader, vtkPointCloudTextReader
+    FLAVOUR = "vtk-module"
+else:
+    from ._filter import vtkNarrowVolumeReconstruction
+    vtkLASPointCloudReader = vtkPCDPointCloudReader = vtkPointCloudTextReader = None
+    FLAVOUR = "wheel"
+
+from ._reconstruct import ReconstructionError, ReconstructionWarning, reconstruct
 
 __all__ = ["vtkNarrowVolumeReconstruction", "vtkLASPointCloudReader", "vtkPCDPointCloudReader",
-           "vtkPointCloudTextReader"]
+           "vtkPointCloudTextReader", "reconstruct", "ReconstructionError", "ReconstructionWarning", "FLAVOUR"]
+
+# With pyvista already imported, point sets get cloud.narrowvolume.reconstruct()
+# now (otherwise pyvista 0.48 and later load it through the wheel's entry point).
+if "pyvista" in sys.modules:
+    from . import _pyvista  # noqa: F401

@@ -18,7 +18,7 @@ PACKAGES=(
   python3-dev python3-numpy libeigen3-dev libx11-dev libgl-dev libboost-dev liblzma-dev
   qtbase5-dev qttools5-dev libqt5svg5-dev qttools5-dev-tools qtxmlpatterns5-dev-tools
   xvfb xauth clang libclang-rt-14-dev time
-  python3-pip liblzf1
+  python3-venv python3-pip python3-pytest liblzf1
 )
 # Optional extras asked for by name: NV_EXTRA_PACKAGES="libopenvdb-dev libtbb-dev"
 read -r -a EXTRA <<< "${NV_EXTRA_PACKAGES:-}"

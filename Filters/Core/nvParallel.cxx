@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "nvParallel.h"
 
-#include <vtkSMPTools.h>
+#include "nvParallelBackend.h"
 
 #include <algorithm>
 #include <vector>
@@ -47,9 +47,8 @@ void ParallelFor(std::int64_t begin, std::int64_t end, std::int64_t grain, const
     return;
   }
   grain = std::max<std::int64_t>(grain, 1);
-  // One chunk of work, or one thread: run here. A parallel region costs tens
-  // of microseconds in VTK 9.2's STDThread backend, even with one thread.
-  if (end - begin <= grain || vtkSMPTools::GetEstimatedNumberOfThreads() <= 1)
+  // One chunk of work, or one thread: run here.
+  if (end - begin <= grain || !backend::Concurrent())
   {
     for (std::int64_t first = begin; first < end; first += grain)
     {
@@ -57,7 +56,12 @@ void ParallelFor(std::int64_t begin, std::int64_t end, std::int64_t grain, const
     }
     return;
   }
-  vtkSMPTools::For(begin, end, grain, [&fn](std::int64_t first, std::int64_t last) { fn(first, last); });
+  backend::For(begin, end, grain, fn);
+}
+
+void WithThreads(int threads, const std::function<void()>& body)
+{
+  backend::Scope(threads, body);
 }
 
 bool MonitoredFor(
@@ -107,6 +111,44 @@ void Monitor::Progress(double) {}
 bool Monitor::Aborted()
 {
   return false;
+}
+
+//------------------------------------------------------------------------------
+CallerMonitor::CallerMonitor()
+  : Caller(std::this_thread::get_id())
+{
+}
+
+void CallerMonitor::Stage(double begin, double width)
+{
+  this->Begin = begin;
+  this->Width = width;
+  this->Progress(0.0);
+}
+
+void CallerMonitor::Progress(double fraction)
+{
+  if (this->OnCallerThread())
+  {
+    // Monotone: a stage's parts may report out of order. A stage's start is
+    // reported even when it adds nothing.
+    const double progress = std::max(this->Last, this->Begin + this->Width * fraction);
+    if (progress > this->Last || fraction == 0.0)
+    {
+      this->Last = progress;
+      this->Report(progress);
+    }
+    this->Stop = this->Stop || this->Poll();
+  }
+}
+
+bool CallerMonitor::Aborted()
+{
+  if (this->OnCallerThread())
+  {
+    this->Stop = this->Stop || this->Poll();
+  }
+  return this->Stop;
 }
 
 } // namespace nv

@@ -1,14 +1,22 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
 // SPDX-License-Identifier: BSD-3-Clause
 // Parallel loops for the numerical core. The core states its loops as plain
-// functions of an index range; this file runs them with vtkSMPTools. Sums and
+// functions of an index range; this file runs them on threads. Sums and
 // maxima are reduced over fixed-size chunks in a fixed order, so results are
-// bit-identical for any number of threads.
+// bit-identical for any number of threads and for either backend.
+//
+// The threads come from one of two backends, chosen when the core is built
+// (CMake option NARROWVOLUME_CORE_THREADS): vtkSMPTools in the VTK build
+// (nvParallelVTK.cxx), so that the filter shares VTK's threads; or a small
+// pool of std::threads (nvParallelThreads.cxx) in the Python wheel, which is
+// built without VTK.
 #ifndef nvParallel_h
 #define nvParallel_h
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
+#include <thread>
 
 namespace nv
 {
@@ -37,6 +45,14 @@ double ParallelSum(std::int64_t n, const RangeReduction& fn);
 /// Maximum of fn over fixed chunks of [0, n) (0 for an empty range).
 double ParallelMax(std::int64_t n, const RangeReduction& fn);
 
+/**
+ * Runs body with `threads` threads for the loops above (0: all cores). With
+ * vtkSMPTools, a process whose backend is Sequential (the default of
+ * Debian's ParaView) gets the STDThread backend for the scope, so that the
+ * VTK filters run inside body (the isosurfacer) use the same threads.
+ */
+void WithThreads(int threads, const std::function<void()>& body);
+
 /// Receives progress and answers whether the caller wants the work stopped.
 class Monitor
 {
@@ -48,6 +64,38 @@ public:
   /// fraction in [0, 1] of the current stage
   virtual void Progress(double fraction);
   virtual bool Aborted();
+};
+
+/**
+ * A monitor for a caller that takes progress and answers "stop?" only on
+ * its own thread (a GUI's event loop, Python's interpreter): the whole run's
+ * progress as one fraction that never goes back, reported from the thread
+ * that created the monitor; worker threads get the caller's last answer.
+ * The VTK filter and the Python binding both derive from it.
+ */
+class CallerMonitor : public Monitor
+{
+public:
+  CallerMonitor();
+  void Stage(double begin, double width) override;
+  void Progress(double fraction) override;
+  bool Aborted() override;
+
+protected:
+  /// The run's progress in [0, 1], on the caller's thread, never below the last report.
+  virtual void Report(double progress) = 0;
+  /// Whether the caller wants the run stopped, asked on the caller's thread
+  /// (not again once it said yes).
+  virtual bool Poll() = 0;
+
+private:
+  bool OnCallerThread() const { return std::this_thread::get_id() == this->Caller; }
+
+  std::thread::id Caller;
+  double Begin = 0.0;
+  double Width = 1.0;
+  double Last = 0.0;
+  std::atomic<bool> Stop{ false };
 };
 
 } // namespace nv

@@ -3,6 +3,8 @@
 #include "nvPieces.h"
 
 #include <algorithm>
+#include <array>
+#include <numeric>
 #include <cmath>
 #include <unordered_set>
 #include <vector>
@@ -85,6 +87,121 @@ bool FlipRegion(const Grid& grid, float* phi, std::int64_t kBegin, std::int64_t 
     phi[n] = inside ? -phi[n] : (phi[n] == 0.0f ? 1e-6f : -phi[n]);
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+RemovedPieces RemoveSmallPieces(SurfaceArrays& surface, double offset, const Grid& grid, float* phi,
+  std::int64_t kBegin, std::int64_t layers)
+{
+  RemovedPieces removed;
+  const std::int64_t n = surface.NumberOfPoints, m = surface.NumberOfTriangles;
+  if (m == 0)
+  {
+    return removed;
+  }
+  const VertexId* triangles = surface.Triangles;
+  // Connected parts: union-find over the points that triangles share.
+  std::vector<std::int64_t> parent(static_cast<std::size_t>(n));
+  std::iota(parent.begin(), parent.end(), 0);
+  auto root = [&](std::int64_t a) {
+    while (parent[a] != a)
+    {
+      a = parent[a] = parent[parent[a]];
+    }
+    return a;
+  };
+  for (std::int64_t t = 0; t < m; ++t)
+  {
+    parent[root(triangles[3 * t + 1])] = root(triangles[3 * t]);
+    parent[root(triangles[3 * t + 2])] = root(triangles[3 * t]);
+  }
+  // Signed volume of each part: the sum of p0 . (p1 x p2) / 6 over its triangles.
+  std::vector<double> volume(static_cast<std::size_t>(n), 0.0); // by root
+  std::vector<char> used(static_cast<std::size_t>(n), 0);
+  for (std::int64_t t = 0; t < m; ++t)
+  {
+    const double* a = surface.Points + 3 * triangles[3 * t];
+    const double* b = surface.Points + 3 * triangles[3 * t + 1];
+    const double* c = surface.Points + 3 * triangles[3 * t + 2];
+    const std::int64_t r = root(triangles[3 * t]);
+    volume[r] += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+                   a[2] * (b[0] * c[1] - b[1] * c[0])) / 6.0;
+    used[r] = 1;
+  }
+  // Which parts go; when every piece is small, the largest stays.
+  const double smallPiece = SmallPieceVolume(offset), smallVoid = SmallVoidVolume(offset);
+  std::int64_t spared = -1;
+  bool largePiece = false;
+  for (std::int64_t r = 0; r < n; ++r)
+  {
+    if (used[r] && volume[r] > 0.0)
+    {
+      largePiece = largePiece || volume[r] >= smallPiece;
+      spared = (spared < 0 || volume[r] > volume[spared]) ? r : spared;
+    }
+  }
+  std::vector<char> drop(static_cast<std::size_t>(n), 0);
+  for (std::int64_t r = 0; r < n; ++r)
+  {
+    if (!used[r] || (!largePiece && r == spared))
+    {
+      continue;
+    }
+    if (volume[r] > 0.0 && volume[r] < smallPiece)
+    {
+      drop[r] = 1;
+      ++removed.Pieces;
+    }
+    else if (volume[r] <= 0.0 && -volume[r] < smallVoid)
+    {
+      drop[r] = 1;
+      ++removed.Voids;
+    }
+  }
+  if (removed.Pieces + removed.Voids == 0)
+  {
+    return removed;
+  }
+  // phi follows: each dropped region flipped from one of its vertices (the
+  // root is one), before the points move.
+  for (std::int64_t r = 0; phi && r < n; ++r)
+  {
+    if (drop[r])
+    {
+      const bool piece = volume[r] > 0.0;
+      FlipRegion(grid, phi, kBegin, layers, surface.Points + 3 * r, piece,
+        2.0 * (piece ? SmallPieceVolume(offset) : SmallVoidVolume(offset)));
+    }
+  }
+  // The kept points to the front, in their order (new id <= old id), then
+  // the kept triangles, renumbered.
+  std::vector<std::int64_t> newId(static_cast<std::size_t>(n), -1);
+  std::int64_t kept = 0;
+  for (std::int64_t p = 0; p < n; ++p)
+  {
+    if (!drop[root(p)])
+    {
+      newId[p] = kept;
+      std::copy(surface.Points + 3 * p, surface.Points + 3 * p + 3, surface.Points + 3 * kept);
+      std::copy(surface.Normals + 3 * p, surface.Normals + 3 * p + 3, surface.Normals + 3 * kept);
+      ++kept;
+    }
+  }
+  std::int64_t keptTriangles = 0;
+  for (std::int64_t t = 0; t < m; ++t)
+  {
+    if (!drop[root(triangles[3 * t])])
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        surface.Triangles[3 * keptTriangles + c] = newId[surface.Triangles[3 * t + c]];
+      }
+      ++keptTriangles;
+    }
+  }
+  surface.NumberOfPoints = kept;
+  surface.NumberOfTriangles = keptTriangles;
+  return removed;
 }
 
 } // namespace nv

@@ -20,6 +20,7 @@
 #define nvPieces_h
 
 #include "nvGrid.h"
+#include "nvSurface.h"
 
 #include <cstdint>
 
@@ -47,6 +48,32 @@ double SmallVoidVolume(double offset);
  */
 bool FlipRegion(const Grid& grid, float* phi, std::int64_t kBegin, std::int64_t layers, const double point[3],
   bool inside, double maximumVolume);
+
+/// A triangle surface in a sink's arrays: NumberOfPoints points (3 doubles
+/// each) with their normals (3 floats each), NumberOfTriangles triangles (3
+/// vertex ids each).
+struct SurfaceArrays
+{
+  double* Points = nullptr;
+  float* Normals = nullptr;
+  VertexId* Triangles = nullptr;
+  std::int64_t NumberOfPoints = 0;
+  std::int64_t NumberOfTriangles = 0;
+};
+
+/**
+ * Removes the small pieces and voids from the surface, in place: each
+ * connected part bounds a region whose signed volume (divergence theorem,
+ * normals out of the shell) is positive for a piece and negative for a void;
+ * pieces below SmallPieceVolume and voids below SmallVoidVolume go (when
+ * every piece is small, the largest stays: a tiny cloud's shell is all there
+ * is). The kept points and triangles move to the front of the arrays, in
+ * their order, and the counts shrink. phi (may be null), the dense phi of the
+ * node layers [kBegin, kBegin + layers), is flipped in the same regions
+ * (FlipRegion), so that contouring it gives the same surface.
+ */
+RemovedPieces RemoveSmallPieces(SurfaceArrays& surface, double offset, const Grid& grid, float* phi,
+  std::int64_t kBegin, std::int64_t layers);
 
 } // namespace nv
 

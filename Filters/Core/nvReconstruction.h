@@ -32,6 +32,7 @@
 #include "nvParameters.h"
 #include "nvPartition.h"
 #include "nvSampling.h"
+#include "nvSheets.h"
 #include "nvTruncatedDistance.h"
 #include "nvVolume.h"
 
@@ -48,8 +49,11 @@ class Monitor;
 class SurfaceSink;
 
 /// What the user chooses (the filter's properties), before the grid is known.
+/// The VTK filter and the Python filter of the wheel both fill one from
+/// their properties; a default-constructed one holds their defaults.
 struct Settings
 {
+  // The method (section 3, 4).
   double OffsetDistance = 0.0; ///< l, world units; 0: automatic (nvSampling.h)
   double SampleSpacing = 0.0;  ///< h, world units; <= 0: from MaximumDimension
   int MaximumDimension = 0;    ///< cells along the padded box's longest side; 0: automatic
@@ -62,9 +66,22 @@ struct Settings
   Domain Mode = Domain::NarrowBand;
   EdgeStopping EdgeFunction = EdgeStopping::Eq4;
   bool PreserveOffset = false;
-  double MemoryLimitBytes = 0.0;  ///< the largest allocation of a run (> 0)
-  double OutputBytesPerNode = 0.0; ///< dense output arrays, bytes per node of the piece
-  bool RemoveSmallPieces = true;   ///< drop loose pieces and tiny voids (nvPieces.h)
+  // The outputs (nvOutputs.h).
+  bool RemoveSmallPieces = true;    ///< drop loose pieces and tiny voids (nvPieces.h)
+  Sheets KeptSheets = Sheets::Both; ///< the phi = 0 sheets the surface keeps
+  bool OutputVolume = true;         ///< phi on the grid (RequestVolume); off: the surface only
+  bool OutputInitialPhi = false;    ///< phi0 (eq. 2) on the grid too
+  bool OutputDistance = false;      ///< d (eq. 6) on the grid too
+  bool OutputNarrowBand = false;    ///< 1 on band nodes, on the grid too
+  // The machine.
+  int NumberOfThreads = 0;  ///< threads of the loops; 0: all cores
+  double MemoryLimit = 0.0; ///< MiB a run may allocate; 0: half the physical memory
+
+  /// MemoryLimit in bytes (> 0).
+  double MemoryLimitBytes() const;
+  /// Bytes per node of the dense output piece: the arrays asked for and the
+  /// isosurfacer's working memory; 0 with OutputVolume off.
+  double OutputBytesPerNode() const;
 };
 
 /// The grid that points with given bounds get, and the scheme's parameters on
@@ -127,6 +144,7 @@ public:
   /// Collective: the sum over processes (itself when serial).
   double SumAll(double value);
 
+  const Settings& GetSettings() const { return this->TheSettings; }
   const Grid& GetGrid() const { return this->ThePlan.TheGrid; }
   const Plan& GetPlan() const { return this->ThePlan; }
   const SamplingStatistics& GetSampling() const { return this->TheSampling->Statistics(); }
@@ -160,6 +178,7 @@ public:
   const std::vector<double>& GetPhi() const { return this->Solver->GetPhi(); }
 
 private:
+  bool RunSteps(std::vector<double> xyz, std::shared_ptr<const Sampling> measured);
   bool Fail(const std::string& message);
   bool CheckMemory(double gridNodes, double points);
   void Partition(const std::vector<double>& xyz, std::int64_t layers);

@@ -296,7 +296,7 @@ void TestDistributedRun(int ranks, bool preserve = false)
   settings.MaximumNumberOfIterations = preserve ? 10 : settings.MaximumNumberOfIterations;
   settings.OffsetDistance = 0.08;
   settings.MaximumDimension = 60;
-  settings.MemoryLimitBytes = 1e9;
+  settings.MemoryLimit = 1000.0;
   nv::Reconstruction serial(settings, nullptr, nullptr);
   NV_CHECK(serial.Run(points));
   nv::SurfaceMesh serialMesh;
@@ -403,7 +403,7 @@ void TestDistributedErrors()
           mine = { 0.0, 0.0, 0.0, 1.0, std::nan(""), 0.0 };
         }
         nv::Settings settings;
-        settings.MemoryLimitBytes = 1e9;
+        settings.MemoryLimit = 1000.0;
         ThreadCommunicator communicator(hub, rank);
         nv::Reconstruction run(settings, &communicator, nullptr);
         NV_CHECK(!run.Run(mine));

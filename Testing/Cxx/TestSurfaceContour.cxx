@@ -210,7 +210,7 @@ void TestBand()
   nv::Settings settings;
   settings.OffsetDistance = 0.1;
   settings.SampleSpacing = 0.02;
-  settings.MemoryLimitBytes = 1e9;
+  settings.MemoryLimit = 1000.0;
   nv::Reconstruction run(settings, nullptr, nullptr);
   NV_CHECK(run.Run(nvtest::SpherePoints(6000, 0.5, Center)));
   nv::SurfaceMesh mesh;

@@ -2,7 +2,9 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """Helpers shared by the Python tests: point clouds and surface checks."""
 import math
+import os
 import re
+import shlex
 import sys
 
 import numpy as np
@@ -29,6 +31,16 @@ def cloud(xyz):
     data = vtkPolyData()
     data.SetPoints(points)
     return data
+
+
+def python_command():
+    """The command that runs a Python with the same narrowvolume package as
+    this one: $NV_PYTHON if set, else pvpython for the CMake build's package,
+    else this interpreter (the wheel's)."""
+    if os.environ.get("NV_PYTHON"):
+        return shlex.split(os.environ["NV_PYTHON"])
+    import narrowvolume
+    return [sys.executable] if narrowvolume.FLAVOUR == "wheel" else ["pvpython"]
 
 
 def boundary_edges(surface):

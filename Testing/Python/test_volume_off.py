@@ -61,7 +61,8 @@ print(json.dumps(dict(rss=resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1
 """
 peaks = {}
 for volume in (True, False):
-    result = subprocess.run(["pvpython", "-c", CHILD % (sys.path, volume)], capture_output=True, text=True)
+    result = subprocess.run(nvtesting.python_command() + ["-c", CHILD % (sys.path, volume)],
+                            capture_output=True, text=True)
     lines = [l for l in result.stdout.splitlines() if l.startswith("{")]
     t.check(result.returncode == 0 and lines, "child ran: %s" % nvtesting.explain(result))
     if lines:

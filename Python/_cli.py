@@ -1,0 +1,254 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+# SPDX-License-Identifier: BSD-3-Clause
+"""narrowvolume: reconstruct the narrow volume (thick shell) around a point cloud file.
+
+    narrowvolume scan.ply -o shell.stl
+    narrowvolume scan.xyz --offset-distance 0.02 --sample-spacing 0.005 -o shell.vtp -o phi.vti
+    pvpython -m narrowvolume scan.ply -o shell.stl      (the CMake build's package)
+
+The cloud: any file VTK reads as a point set (by extension: .vtp .vtu .vts
+.vtk .ply .stl .obj .pts, and their parallel .pvtp .pvtu), and plain-text
+clouds .xyz .txt .csv (x y z in the first three columns). Each output is
+written by its extension: .stl, .vtp or .ply the surface, .vti the volume (VTK
+XML files in Binary mode). Every property of the filter is an option, with the
+filter's default. Exit status: 0 done, 1 the run or a file failed (the message
+says why), 2 a wrong command line, 130 interrupted (Ctrl-C).
+"""
+import argparse
+import os
+import signal
+import sys
+import threading
+import time
+
+import numpy as np
+
+from . import _properties
+
+# Readers by extension: (module of vtkmodules, class).
+READERS = {
+    ".vtp": ("vtkIOXML", "vtkXMLPolyDataReader"),
+    ".vtu": ("vtkIOXML", "vtkXMLUnstructuredGridReader"),
+    ".vts": ("vtkIOXML", "vtkXMLStructuredGridReader"),
+    ".pvtp": ("vtkIOParallelXML", "vtkXMLPPolyDataReader"),
+    ".pvtu": ("vtkIOParallelXML", "vtkXMLPUnstructuredGridReader"),
+    ".vtk": ("vtkIOLegacy", "vtkDataSetReader"),
+    ".ply": ("vtkIOPLY", "vtkPLYReader"),
+    ".stl": ("vtkIOGeometry", "vtkSTLReader"),
+    ".obj": ("vtkIOGeometry", "vtkOBJReader"),
+    ".pts": ("vtkIOGeometry", "vtkPTSReader"),
+}
+TEXT = (".xyz", ".txt", ".csv")
+# Writers by extension: (module, class, which output, binary file).
+WRITERS = {
+    ".stl": ("vtkIOGeometry", "vtkSTLWriter", "surface"),
+    ".ply": ("vtkIOPLY", "vtkPLYWriter", "surface"),
+    ".vtp": ("vtkIOXML", "vtkXMLPolyDataWriter", "surface"),
+    ".vti": ("vtkIOXML", "vtkXMLImageDataWriter", "volume"),
+}
+
+
+class Failure(Exception):
+    """A file that cannot be read or written: the message says which and why."""
+
+
+def _vtk_class(module, name):
+    import importlib
+    return getattr(importlib.import_module("vtkmodules." + module), name)
+
+
+def _errors_of(algorithm):
+    """Collects the error messages of a VTK algorithm instead of printing them."""
+    from vtkmodules.util.misc import calldata_type
+    from vtkmodules.util.vtkConstants import VTK_STRING
+
+    errors = []
+    algorithm.AddObserver("ErrorEvent", calldata_type(VTK_STRING)(lambda caller, event, text: errors.append(text)))
+    return errors
+
+
+def _read_text(path):
+    """x y z of a plain-text cloud: the first three columns (spaces, tabs or
+    commas), header lines and # or // comments skipped. The CMake build's
+    package reads these files with vtkPointCloudTextReader instead."""
+    rows = []
+    with open(path, "r", errors="replace") as text:
+        for number, line in enumerate(text, 1):
+            fields = line.replace(",", " ").split()
+            if not fields or fields[0].startswith(("#", "//")):
+                continue
+            try:
+                values = [float(v) for v in fields[:3]]
+            except ValueError:
+                if rows:
+                    raise Failure("%s, line %d: not a point (x y z): %r" % (path, number, line.strip()))
+                continue  # a header line
+            if len(values) == 3:
+                rows.append(values)
+            elif not (len(fields) == 1 and not rows):  # a .pts file's point count
+                raise Failure("%s, line %d: not a point (x y z): %r" % (path, number, line.strip()))
+    from ._reconstruct import point_cloud
+    return point_cloud(np.array(rows, dtype=np.float64).reshape(-1, 3))
+
+
+def read_cloud(path):
+    """The point set of a cloud file."""
+    if not os.path.isfile(path):
+        raise Failure("%s: no such file" % path)
+    extension = os.path.splitext(path)[1].lower()
+    import narrowvolume
+
+    if extension in TEXT or (extension == ".pts" and narrowvolume.vtkPointCloudTextReader is not None):
+        if narrowvolume.vtkPointCloudTextReader is None:
+            return _read_text(path)
+        reader = narrowvolume.vtkPointCloudTextReader()
+    elif extension in READERS:
+        reader = _vtk_class(*READERS[extension])()
+    else:
+        raise Failure("%s: unknown cloud format %r; known: %s" % (
+            path, extension, " ".join(sorted(set(READERS) | set(TEXT)))))
+    reader.SetFileName(path)
+    errors = _errors_of(reader)
+    reader.Update()
+    data = reader.GetOutputDataObject(0)
+    if errors:
+        raise Failure("%s: %s" % (path, errors[-1].strip()))
+    from vtkmodules.vtkCommonDataModel import vtkPointSet
+    if not isinstance(data, vtkPointSet):
+        raise Failure("%s: holds a %s, not a point set" % (path, data.GetClassName() if data else "nothing"))
+    return data
+
+
+def write(path, volume, surface):
+    """Writes the volume or the surface, by the file's extension."""
+    module, name, which = WRITERS[os.path.splitext(path)[1].lower()]
+    writer = _vtk_class(module, name)()
+    writer.SetFileName(path)
+    writer.SetInputData(volume if which == "volume" else surface)
+    if hasattr(writer, "SetDataModeToBinary"):
+        writer.SetDataModeToBinary()  # not Appended: see the README
+    if hasattr(writer, "SetFileTypeToBinary"):
+        writer.SetFileTypeToBinary()
+    errors = _errors_of(writer)
+    if not writer.Write() or errors:
+        raise Failure("%s: cannot write it%s" % (path, (": " + errors[-1].strip()) if errors else ""))
+    return which
+
+
+class Progress:
+    """A progress bar on a terminal (standard error); nothing elsewhere."""
+
+    def __init__(self, stream, enabled):
+        self.stream = stream
+        self.enabled = enabled
+        self.shown = -1
+
+    def __call__(self, fraction):
+        percent = int(100 * fraction)
+        if self.enabled and percent != self.shown:
+            self.shown = percent
+            bar = "#" * (percent // 4)
+            self.stream.write("\rnarrowvolume: [%-25s] %3d %%" % (bar, percent))
+            self.stream.flush()
+
+    def done(self):
+        if self.enabled and self.shown >= 0:
+            self.stream.write("\n")
+            self.stream.flush()
+
+
+def _option(prop):
+    return "--" + _properties.snake_case(prop.name).replace("_", "-")
+
+
+def _choice_type(prop):
+    names = {_properties.snake_case(suffix).replace("_", "-"): value for _, suffix, value in prop.choices}
+
+    def parse(text):
+        if text.lower() in names:
+            return names[text.lower()]
+        try:
+            return int(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError("%r: one of %s" % (text, ", ".join(
+                "%s (%d)" % item for item in names.items())))
+    return parse, names
+
+
+def make_parser(defaults):
+    """The command line's parser; `defaults`: the filter's {property: default}."""
+    parser = argparse.ArgumentParser(
+        prog="narrowvolume", description=__doc__.split("\n")[0],
+        epilog="Outputs by extension: .stl .ply .vtp (surface), .vti (volume). Clouds: %s." % " ".join(
+            sorted(set(READERS) | set(TEXT))))
+    parser.add_argument("cloud", help="the point cloud file")
+    parser.add_argument("-o", "--output", action="append", default=[], metavar="FILE",
+                        help="a file to write (repeat for several); default: CLOUD's name with _shell.stl")
+    parser.add_argument("-q", "--quiet", action="store_true", help="no progress bar and no summary")
+    group = parser.add_argument_group("the filter's properties (vtkNarrowVolumeReconstruction)")
+    for prop in _properties.PROPERTIES:
+        default = defaults[prop.name]
+        help_text = "%s (default: %s)" % (prop.doc.replace("%", "%%"), default)
+        if prop.kind is bool:
+            group.add_argument(_option(prop), dest=prop.name, action=argparse.BooleanOptionalAction,
+                               default=None, help=help_text)
+        elif prop.choices:
+            parse, names = _choice_type(prop)
+            group.add_argument(_option(prop), dest=prop.name, type=parse, default=None,
+                               metavar="{%s}" % ",".join(names), help=help_text)
+        else:
+            group.add_argument(_option(prop), dest=prop.name, type=prop.kind, default=None,
+                               metavar=prop.kind.__name__.upper(), help=help_text)
+    return parser
+
+
+def main(argv=None):
+    """Runs the command line; returns the exit status."""
+    import narrowvolume
+
+    if threading.current_thread() is threading.main_thread():
+        # Ctrl-C as Python's KeyboardInterrupt, which stops the run (pvpython
+        # leaves SIGINT to ParaView's logger, which ends the process with a stack trace).
+        signal.signal(signal.SIGINT, signal.default_int_handler)
+    defaults = _properties.defaults_of(narrowvolume.vtkNarrowVolumeReconstruction())
+    parser = make_parser(defaults)
+    args = parser.parse_args(argv)
+    outputs = args.output or [os.path.splitext(os.path.basename(args.cloud))[0] + "_shell.stl"]
+    for path in outputs:
+        if os.path.splitext(path)[1].lower() not in WRITERS:
+            parser.error("%s: unknown output format; known: %s" % (path, " ".join(sorted(WRITERS))))
+    properties = {p.name: getattr(args, p.name) for p in _properties.PROPERTIES if getattr(args, p.name) is not None}
+    # File descriptor 2 itself: pvpython's sys.stderr answers isatty() for standard input.
+    progress = Progress(sys.stderr, not args.quiet and os.isatty(2))
+    start = time.perf_counter()
+    try:
+        cloud = read_cloud(args.cloud)
+        if not args.quiet:
+            print("narrowvolume: %d points from %s" % (cloud.GetNumberOfPoints(), args.cloud), flush=True)
+        import warnings
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always", narrowvolume.ReconstructionWarning)
+            try:
+                volume, surface = narrowvolume.reconstruct(cloud, progress=progress, **properties)
+            finally:
+                progress.done()
+        for warning in caught:
+            print("narrowvolume: warning: %s" % warning.message, file=sys.stderr)
+        written = [(path, write(path, volume, surface)) for path in outputs]
+    except (Failure, narrowvolume.ReconstructionError) as failure:
+        print("narrowvolume: error: %s" % failure, file=sys.stderr)
+        return 1
+    except KeyboardInterrupt:
+        print("narrowvolume: interrupted", file=sys.stderr)
+        return 130
+    if not args.quiet:
+        dims = volume.GetDimensions()
+        for path, which in written:
+            what = ("%d x %d x %d grid" % dims) if which == "volume" else ("%d triangles" % surface.GetNumberOfPolys())
+            print("narrowvolume: wrote %s (%s)" % (path, what))
+        print("narrowvolume: done in %.2f s" % (time.perf_counter() - start))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

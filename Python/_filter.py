@@ -1,0 +1,433 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+# SPDX-License-Identifier: BSD-3-Clause
+"""vtkNarrowVolumeReconstruction of the wheel: the C++ filter's twin in Python.
+
+The run is the core's (narrowvolume._core, the same C++ as the C++ filter's,
+its loops on std::threads), and so are the surface (marching cubes in the
+band's bricks, as in the C++ filter), the small pieces' removal, the
+warnings and the field data: this file only converts, as
+vtkNarrowVolumeReconstruction.cxx does, in the order of the core's
+nvOutputs.h. The arrays the core fills reach VTK without a copy.
+
+Not in this flavour: SetController (distributed runs under MPI need the
+VTK-wrapped filter of the CMake build).
+"""
+import operator
+import time
+
+import numpy as np
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.util.vtkAlgorithm import VTKPythonAlgorithmBase
+from vtkmodules.vtkCommonCore import (VTK_FLOAT, vtkCommand, vtkDoubleArray, vtkFloatArray, vtkIdTypeArray,
+                                      vtkInformationVector, vtkIntArray, vtkObject, vtkOutputWindow, vtkPoints,
+                                      vtkTypeInt64Array, vtkUnsignedCharArray)
+from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkDataObject, vtkImageData, vtkPointSet, vtkPolyData
+from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline as sddp
+
+from . import _core
+from ._properties import PROPERTIES
+
+_CLASS_NAME = "vtkNarrowVolumeReconstruction"
+
+
+class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
+    """Reconstructs a narrow volume (a thick shell) around an unorganized point cloud.
+
+    The phase-field method of Li et al., "Fast and efficient narrow volume
+    reconstruction from scattered data", Pattern Recognition 48 (2015): a
+    uniform grid of spacing h around the points, the narrow band of nodes
+    whose distance d to the nearest point is within eta/2 of the offset l,
+    phi0 = tanh((l - d) / (sqrt(2) xi)) (eq. 2), and time steps of the
+    Allen-Cahn equation with an edge-stopping function on the band only
+    (eq. 10-12). phi is close to +1 inside the shell and -1 outside; phi = 0
+    is the pair of offset surfaces at distance l on either side of the points.
+
+    Input: any vtkPointSet (only its points are used).
+    Output port 0 (vtkImageData): point array "phi" (float, in [-1, 1]), and
+    on request "InitialPhi", "Distance" and "NarrowBand"; field data
+    "NumberOfIterations", "NarrowBandNodes", "RelativeChange" (one value per
+    step), "OffsetDistance" and "SampleSpacing" (l and h used),
+    "MedianPointSpacing", "NumberOfGaps", "LargestGap", "LargestGapCenter",
+    "RemovedPieces" and "RemovedVoids".
+    Output port 1 (vtkPolyData): the phi = 0 surfaces with point normals
+    ("Normals") and double-precision points, made by the core (marching cubes
+    on the signed distance phi implies, in the band's bricks), as the C++
+    filter makes them: the same triangles, vertices and normals.
+
+    The properties, their defaults and the outputs are the C++ filter's
+    (Filters/vtkNarrowVolumeReconstruction.h), and phi is bit-identical to
+    its phi on the same input. Ctrl-C during Update() stops the run: the
+    outputs are empty and an error says so.
+
+        f = vtkNarrowVolumeReconstruction()
+        f.SetInputData(points)          # any vtkPointSet
+        f.SetOffsetDistance(0.1)
+        f.Update()
+        volume, surface = f.GetOutput(0), f.GetOutput(1)
+    """
+
+    def __init__(self):
+        VTKPythonAlgorithmBase.__init__(self, nInputPorts=1, inputType="vtkPointSet", nOutputPorts=2)
+        # The properties live in the core's own settings: a default-constructed
+        # nv::Settings holds the C++ defaults.
+        self._settings = _core.Settings()
+        self._sampled = None  # (points' identity, modification time, count, the core's Sampling)
+        self._clear_results()
+
+    def _clear_results(self):
+        self._band_nodes = 0
+        self._grid_nodes = 0
+        self._changes = ()
+        self._used = (0.0, 0.0)
+        self._times = (0.0, 0.0, 0.0)
+
+    # --- Inputs and outputs, as the C++ class has them.
+    def FillOutputPortInformation(self, port, info):
+        """Port 0 gives a vtkImageData (the volume), port 1 a vtkPolyData (the surface)."""
+        info.Set(vtkDataObject.DATA_TYPE_NAME(), "vtkImageData" if port == 0 else "vtkPolyData")
+        return 1
+
+    def SetInputData(self, data):
+        """The input point set (any vtkPointSet)."""
+        self.SetInputDataObject(0, data)
+
+    def GetOutput(self, port=0):
+        """Output `port`: 0 the volume (vtkImageData), 1 the surface (vtkPolyData)."""
+        return self.GetOutputDataObject(port)
+
+    def GetVolumeOutput(self):
+        """Output port 0, the volume (vtkImageData)."""
+        return self.GetOutputDataObject(0)
+
+    def GetSurfaceOutput(self):
+        """Output port 1, the surface (vtkPolyData)."""
+        return self.GetOutputDataObject(1)
+
+    # --- Results of the last run.
+    def GetNumberOfIterations(self):
+        """Time steps the last run took."""
+        return len(self._changes)
+
+    def GetNumberOfBandNodes(self):
+        """Narrow band nodes of the last run."""
+        return self._band_nodes
+
+    def GetNumberOfGridNodes(self):
+        """Grid nodes of the last run."""
+        return self._grid_nodes
+
+    def GetRelativeChanges(self):
+        """The relative change ||phi^{n+1} - phi^n||_2 / ||phi^n||_2 of each time step of the last run."""
+        return tuple(self._changes)
+
+    def GetOffsetDistanceUsed(self):
+        """The offset distance l of the last run (the automatic one, or the one set)."""
+        return self._used[0]
+
+    def GetSampleSpacingUsed(self):
+        """The grid spacing h of the last run (the automatic one, or the one set)."""
+        return self._used[1]
+
+    def GetSetupTime(self):
+        """Wall-clock seconds of the last run's set-up (distance and band)."""
+        return self._times[0]
+
+    def GetEvolutionTime(self):
+        """Wall-clock seconds of the last run's time steps."""
+        return self._times[1]
+
+    def GetOutputTime(self):
+        """Wall-clock seconds of the last run's outputs (volume and surface)."""
+        return self._times[2]
+
+    # --- Messages, as vtkErrorMacro and vtkWarningMacro give them.
+    def _message(self, event, text):
+        if not vtkObject.GetGlobalWarningDisplay():
+            return
+        if self.HasObserver(event):
+            self.InvokeEvent(event, text)
+            return
+        kind = "ERROR" if event == vtkCommand.ErrorEvent else "Warning"
+        line = "%s: In %s\n%s (%s): %s\n\n" % (kind, __file__, _CLASS_NAME, hex(id(self)), text)
+        window = vtkOutputWindow.GetInstance()
+        if event == vtkCommand.ErrorEvent:
+            window.DisplayErrorText(line)
+        else:
+            window.DisplayWarningText(line)
+
+    def _error(self, text):
+        self._message(vtkCommand.ErrorEvent, text)
+
+    def _warning(self, text):
+        self._message(vtkCommand.WarningEvent, text)
+
+    # --- The pipeline passes.
+    def RequestInformation(self, request, inInfoVec, outInfoVec):
+        """Declares the volume's grid (whole extent, origin, spacing, float
+        scalars), which follows the input's points and their sampling: the
+        input is brought up to date here, and the data pass finds it so."""
+        volume_info = outInfoVec.GetInformationObject(0)
+        if self.GetNumberOfInputConnections(0) > 0:
+            connection = self.GetInputConnection(0, 0)
+            producer = connection.GetProducer()
+            requests = vtkInformationVector()
+            requests.SetNumberOfInformationObjects(producer.GetNumberOfOutputPorts())
+            piece = requests.GetInformationObject(connection.GetIndex())
+            piece.Set(sddp.UPDATE_PIECE_NUMBER(), 0)
+            piece.Set(sddp.UPDATE_NUMBER_OF_PIECES(), 1)
+            piece.Set(sddp.UPDATE_NUMBER_OF_GHOST_LEVELS(), 0)
+            producer.Update(connection.GetIndex(), requests)
+        data = vtkPointSet.GetData(inInfoVec[0], 0)
+        bounds = (1.0, 0.0, 1.0, 0.0, 1.0, 0.0)
+        if data is not None and data.GetNumberOfPoints() > 0:
+            bounds = data.GetBounds()
+        sampling = self._measure_sampling(data)
+        plan = _core.MakePlan(self._settings, list(bounds), sampling.Statistics())
+        if not plan.Valid():
+            volume_info.Set(sddp.WHOLE_EXTENT(), (0, -1, 0, -1, 0, -1), 6)  # RequestData says why
+            return 1
+        grid = plan.TheGrid
+        nx, ny, nz = grid.Dims
+        volume_info.Set(sddp.WHOLE_EXTENT(), (0, nx - 1, 0, ny - 1, 0, nz - 1), 6)
+        volume_info.Set(vtkDataObject.ORIGIN(), tuple(grid.Origin), 3)
+        volume_info.Set(vtkDataObject.SPACING(), (grid.Spacing,) * 3, 3)
+        vtkDataObject.SetPointDataActiveScalarInfo(volume_info, VTK_FLOAT, 1)
+        return 1
+
+    def _measure_sampling(self, data):
+        """The core's sampling of the input's points, measured once per
+        points (object, modification time, count), as the C++ filter does."""
+        points = data.GetPoints() if data is not None else None
+        key = (id(points), points.GetMTime() if points else 0, points.GetNumberOfPoints() if points else 0)
+        if self._sampled is None or self._sampled[0] != key:
+            self._sampled = (key, _core.Sampling(_points_of(data), self._settings.NumberOfThreads))
+        return self._sampled[1]
+
+    def RequestUpdateExtent(self, request, inInfoVec, outInfoVec):
+        """The shell depends on every point: asks for the whole cloud."""
+        info = inInfoVec[0].GetInformationObject(0)
+        info.Set(sddp.UPDATE_PIECE_NUMBER(), 0)
+        info.Set(sddp.UPDATE_NUMBER_OF_PIECES(), 1)
+        info.Set(sddp.UPDATE_NUMBER_OF_GHOST_LEVELS(), 0)
+        return 1
+
+    def RequestData(self, request, inInfoVec, outInfoVec):
+        """Runs the core on the input's points and makes the two outputs."""
+        volume = vtkImageData.GetData(outInfoVec, 0)
+        surface = vtkPolyData.GetData(outInfoVec, 1)
+        volume.Initialize()
+        surface.Initialize()
+        self._clear_results()
+        # One process computes everything: a request for another piece is left empty.
+        piece_info = outInfoVec.GetInformationObject(1)
+        if piece_info.Has(sddp.UPDATE_PIECE_NUMBER()) and piece_info.Get(sddp.UPDATE_PIECE_NUMBER()) > 0:
+            return 1
+        try:
+            summary = self._run(vtkPointSet.GetData(inInfoVec[0], 0), volume, surface)
+        except KeyboardInterrupt:
+            self._error("Interrupted (Ctrl-C): the outputs are empty.")
+            summary = None
+        if summary is None:
+            volume.Initialize()
+            surface.Initialize()
+            return 1
+        _add_field_data(volume, summary)
+        self.UpdateProgress(1.0)
+        return 1
+
+    def _run(self, data, volume, surface):
+        """The run and its outputs, as vtkNarrowVolumeReconstruction::RequestData:
+        the run's summary, or None when it failed or stopped."""
+        settings = self._settings
+        monitor = _core.Monitor(report=self.UpdateProgress, poll=lambda: bool(self.GetAbortExecute()))
+        run = _core.Reconstruction(settings, monitor)
+        if _core.NeedsDenseVolume(settings):
+            run.RequestVolume(settings.OutputInitialPhi, settings.OutputDistance, settings.OutputNarrowBand)
+        if not run.Run(_points_of(data), self._measure_sampling(data)):
+            if run.Error():
+                self._error(run.Error())
+            return None
+        self._grid_nodes = run.GetGrid().NumberOfNodes()
+        self._band_nodes = run.NumberOfBandNodes()
+        self._changes = tuple(run.RelativeChanges())
+        offset = run.GetParameters().OffsetDistance
+        self._used = (offset, run.GetGrid().Spacing)
+        start = time.perf_counter()
+        done, explained, removed = self._produce_outputs(run, monitor, volume, surface)
+        self._times = (run.SetupSeconds(), run.EvolutionSeconds(), time.perf_counter() - start)
+        if not done:
+            return None
+        if run.GetGaps().Gaps > 0:
+            self._warning(_core.GapWarning(run.GetGaps(), offset))
+        if surface.GetNumberOfPoints() == 0 and not explained:
+            self._warning(_core.EmptySurfaceWarning(offset, run.GetGrid().Spacing))
+        return run.RunSummary(*removed)
+
+    def _produce_outputs(self, run, monitor, volume, surface):
+        """The volume and the surface of a finished run (nvOutputs.h):
+        (done, whether a warning explained an empty surface, (pieces, voids) removed)."""
+        settings = run.GetSettings()
+        grid = run.GetGrid()
+        nx, ny, nz = grid.Dims
+        dense = run.TakeVolume()  # {name: numpy array} of the layers VolumeBegin to VolumeEnd
+        begin, end = (run.VolumeBegin(), run.VolumeEnd()) if dense else (0, nz)
+        volume.SetOrigin(tuple(grid.Origin))
+        volume.SetSpacing((grid.Spacing,) * 3)
+        volume.SetExtent(0, nx - 1, 0, ny - 1, begin, end - 1)
+        if settings.OutputVolume:
+            for name, values in dense.items():
+                kind = vtkUnsignedCharArray if name == "NarrowBand" else vtkFloatArray
+                array = _vtk_array(kind, name, values)
+                if name == "phi":
+                    volume.GetPointData().SetScalars(array)
+                else:
+                    volume.GetPointData().AddArray(array)
+
+        # The surface, from the band; or, to keep some sheets, from a copy of
+        # the dense phi (phi stays phi).
+        monitor.Stage(*_core.OutputStage)
+        sink = _core.MeshSink()
+        explained = False
+        if not _core.SurfaceFromDenseCopy(settings):
+            done = run.ExtractSurface(sink)
+        else:
+            if not settings.OutputVolume:
+                self._warning(_core.OneSheetNeedsGridWarning())
+            done, cavities = run.ContourDense(np.array(dense["phi"]), sink)
+            explained = _core.NoInnerSheet(settings, cavities)
+            if explained:
+                self._warning(_core.NoInnerSheetWarning())
+        removed = (0, 0)
+        if done and settings.RemoveSmallPieces and not monitor.Aborted():
+            # The surface's small parts go, and phi follows in the same regions.
+            removed = sink.RemoveSmallPieces(run.GetParameters().OffsetDistance, grid,
+                                             dense["phi"] if settings.OutputVolume else None, begin, end - begin)
+        surface.ShallowCopy(_polydata(*sink.Take()))
+        return done and not monitor.Aborted(), explained, removed
+
+
+def _points_of(data):
+    """The points of a point set as an (n, 3) float64 array in C order."""
+    if data is None or data.GetPoints() is None:
+        return np.zeros((0, 3))
+    return np.ascontiguousarray(vtk_to_numpy(data.GetPoints().GetData()), dtype=np.float64).reshape(-1, 3)
+
+
+def _vtk_array(kind, name, values):
+    """A VTK array of class kind that uses the memory of the numpy array
+    values (one tuple per row), which it keeps alive, as numpy_to_vtk does."""
+    array = kind()
+    array.SetName(name)
+    array.SetNumberOfComponents(values.shape[1] if values.ndim == 2 else 1)
+    array.SetVoidArray(values, values.size, 1)
+    array._numpy_reference = values
+    return array
+
+
+def _polydata(points, normals, triangles):
+    """The core's surface arrays as a vtkPolyData, without copies: double
+    world coordinates, float "Normals", triangles in 64-bit cells.
+
+    The cells are vtkTypeInt64Array, the cell array's own storage type: VTK
+    9.3 takes a vtkIdTypeArray by a shallow copy into a new array, which
+    drops the Python array that keeps the numpy memory alive (the cells then
+    point to freed memory), while its own type is kept as it is."""
+    surface = vtkPolyData()
+    if len(triangles) == 0:
+        return surface
+    world = vtkPoints()
+    world.SetData(_vtk_array(vtkDoubleArray, "Points", points))
+    surface.SetPoints(world)
+    surface.GetPointData().SetNormals(_vtk_array(vtkFloatArray, "Normals", normals))
+    offsets = np.arange(0, 3 * len(triangles) + 1, 3, dtype=np.int64)
+    polys = vtkCellArray()
+    polys.SetData(_vtk_array(vtkTypeInt64Array, "Offsets", offsets),
+                  _vtk_array(vtkTypeInt64Array, "Connectivity", triangles.reshape(-1)))
+    surface.SetPolys(polys)
+    return surface
+
+
+def _add_field_data(volume, summary):
+    """The run's figures (the core's RunSummary) as the volume's field data."""
+    kinds = {"int": vtkIntArray, "id": vtkIdTypeArray, "double": vtkDoubleArray}
+    for name, kind, components, values in summary:
+        array = kinds[kind]()
+        array.SetName(name)
+        array.SetNumberOfComponents(components)
+        array.SetNumberOfTuples(len(values) // components)
+        for v, value in enumerate(values):
+            array.SetValue(v, int(value) if kind != "double" else value)
+        volume.GetFieldData().AddArray(array)
+
+
+# --- The properties, made from the table (_properties.py).
+def _convert(prop, value):
+    """A value as the C++ setter takes it: clamped like vtkSetClampMacro."""
+    if prop.kind is float:
+        value = float(value)
+    else:
+        value = operator.index(value)
+        if prop.kind is bool:
+            return bool(value)
+    if prop.low is not None and value < prop.low:
+        value = prop.low
+    elif prop.high is not None and value > prop.high:
+        value = prop.high
+    return prop.kind(value)
+
+
+def _install_properties(cls):
+    defaults = _core.Settings()
+    for prop in PROPERTIES:
+        field_type = type(getattr(defaults, prop.field))
+        default = prop.kind(getattr(defaults, prop.field))
+        clamp = "" if prop.low is None else " Clamped to [%g, %g]." % (prop.low, prop.high)
+        doc = "%s Default %r.%s" % (prop.doc, default, clamp)
+
+        def getter(self, prop=prop):
+            return prop.kind(getattr(self._settings, prop.field))
+
+        def setter(self, value, prop=prop, field_type=field_type):
+            value = _convert(prop, value)
+            if getattr(self, "Get" + prop.name)() != value:
+                setattr(self._settings, prop.field, field_type(value))
+                self.Modified()
+
+        getter.__doc__ = "%s\n\n%s" % (prop.name, doc)
+        setter.__doc__ = "Sets %s.\n\n%s" % (prop.name, doc)
+        getter.__name__, setter.__name__ = "Get" + prop.name, "Set" + prop.name
+        setattr(cls, getter.__name__, getter)
+        setattr(cls, setter.__name__, setter)
+        if prop.kind is bool:
+            def on(self, prop=prop):
+                getattr(self, "Set" + prop.name)(True)
+
+            def off(self, prop=prop):
+                getattr(self, "Set" + prop.name)(False)
+            on.__doc__, off.__doc__ = "Sets %s on." % prop.name, "Sets %s off." % prop.name
+            setattr(cls, prop.name + "On", on)
+            setattr(cls, prop.name + "Off", off)
+        if prop.low is not None:
+            def low(self, prop=prop):
+                return prop.low
+
+            def high(self, prop=prop):
+                return prop.high
+            low.__doc__ = "The smallest value Set%s takes (%r)." % (prop.name, prop.low)
+            high.__doc__ = "The largest value Set%s takes (%r)." % (prop.name, prop.high)
+            setattr(cls, "Get%sMinValue" % prop.name, low)
+            setattr(cls, "Get%sMaxValue" % prop.name, high)
+        if prop.choices:
+            # As VTK wraps a C++ enum: an int type, whose values are the class's constants.
+            kind = type(prop.name + "Type", (int,), {"__doc__": "The values of %s." % prop.name,
+                                                     "__module__": cls.__module__})
+            setattr(cls, kind.__name__, kind)
+        for constant, suffix, value in prop.choices:
+            def choose(self, prop=prop, value=value):
+                getattr(self, "Set" + prop.name)(value)
+            choose.__doc__ = "Sets %s to %s (%d)." % (prop.name, constant, value)
+            setattr(cls, constant, kind(value))
+            setattr(cls, "Set%sTo%s" % (prop.name, suffix), choose)
+
+
+_install_properties(vtkNarrowVolumeReconstruction)

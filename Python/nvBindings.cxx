@@ -1,0 +1,556 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+// SPDX-License-Identifier: BSD-3-Clause
+// narrowvolume._core: the numerical core for Python (nanobind), in the wheel
+// that pip builds without VTK. The Python filter (_filter.py) drives a run
+// through these names, which are the core's own (nvReconstruction.h,
+// nvOutputs.h, nvSampling.h): nothing of the method is decided here.
+//
+// The GIL is released while the core computes (Measure, Run, ExtractSurface,
+// ContourDense, RemoveSmallPieces). The core reports progress and asks
+// whether to stop on the calling thread only (nv::CallerMonitor): there the
+// monitor takes the GIL back, runs Python's signal handlers (Ctrl-C raises
+// KeyboardInterrupt) and calls the Python callbacks. An exception from
+// either stops the run and is raised again when the call returns.
+//
+// The arrays the core fills (the dense volume, the surface) are allocated
+// here and handed to numpy without a copy; the Python filter hands them to
+// VTK without a copy either.
+#include "nvOutputs.h"
+#include "nvParallel.h"
+#include "nvPieces.h"
+#include "nvReconstruction.h"
+#include "nvSampling.h"
+#include "nvSheets.h"
+#include "nvSurface.h"
+
+#include <nanobind/nanobind.h>
+#include <nanobind/ndarray.h>
+#include <nanobind/stl/array.h>
+#include <nanobind/stl/optional.h>
+#include <nanobind/stl/pair.h>
+#include <nanobind/stl/shared_ptr.h>
+#include <nanobind/stl/string.h>
+#include <nanobind/stl/tuple.h>
+#include <nanobind/stl/vector.h>
+
+#include <array>
+#include <cstdlib>
+#include <memory>
+#include <new>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+namespace nb = nanobind;
+using namespace nb::literals;
+
+namespace
+{
+using Points = nb::ndarray<const double, nb::shape<-1, 3>, nb::c_contig, nb::device::cpu>;
+using FloatArray = nb::ndarray<float, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
+
+/// Memory from malloc that grows in place (realloc) and is handed to numpy
+/// at the end. It starts at 64 MiB of address space: the system maps pages
+/// only when they are written, and malloc serves such a size by mmap, so
+/// growing and the final trim are mremap calls, without copies or freed
+/// pieces left in the heap (the surface is held once, as in the C++ filter).
+template <class T>
+class Buffer
+{
+public:
+  Buffer() = default;
+  Buffer(const Buffer&) = delete;
+  Buffer& operator=(const Buffer&) = delete;
+  ~Buffer() { std::free(this->Data); }
+
+  /// Room for n more values at the end.
+  T* Extend(std::size_t n)
+  {
+    if (this->Size + n > this->Capacity)
+    {
+      const std::size_t start = (std::size_t(1) << 26) / sizeof(T);
+      this->Reallocate(std::max({ this->Size + n, 2 * this->Capacity, start }));
+    }
+    T* room = this->Data + this->Size;
+    this->Size += n;
+    return room;
+  }
+  T* Get() { return this->Data; }
+  std::size_t GetSize() const { return this->Size; }
+  void Truncate(std::size_t size) { this->Size = std::min(size, this->Size); }
+
+  /// The values as a numpy array of `columns` columns, which owns them; the buffer is empty afterwards.
+  nb::object Release(std::size_t columns)
+  {
+    this->Reallocate(std::max<std::size_t>(this->Size, 1));
+    T* data = this->Data;
+    nb::capsule owner(data, [](void* p) noexcept { std::free(p); });
+    const std::size_t shape[2] = { this->Size / columns, columns };
+    this->Data = nullptr;
+    this->Size = this->Capacity = 0;
+    return nb::cast(nb::ndarray<nb::numpy, T>(data, columns > 1 ? 2 : 1, shape, owner));
+  }
+
+private:
+  void Reallocate(std::size_t capacity)
+  {
+    T* data = static_cast<T*>(std::realloc(this->Data, capacity * sizeof(T)));
+    if (!data)
+    {
+      throw std::bad_alloc();
+    }
+    this->Data = data;
+    this->Capacity = capacity;
+  }
+
+  T* Data = nullptr;
+  std::size_t Size = 0;
+  std::size_t Capacity = 0;
+};
+
+/// Progress and abort of a run, from and to Python: report(progress) gets the
+/// whole run's progress in [0, 1], poll() says whether to stop (both
+/// optional), and Ctrl-C stops the run too.
+class PythonMonitor : public nv::CallerMonitor
+{
+public:
+  PythonMonitor(nb::object report, nb::object poll)
+    : ReportCallback(std::move(report))
+    , PollCallback(std::move(poll))
+  {
+  }
+
+  ~PythonMonitor() override
+  {
+    nb::gil_scoped_acquire gil;
+    this->Pending.reset();
+    this->ReportCallback.reset();
+    this->PollCallback.reset();
+  }
+
+  /// Raises the exception a callback or a signal handler raised, if any.
+  void RaisePending()
+  {
+    if (this->Pending)
+    {
+      std::unique_ptr<nb::python_error> pending = std::move(this->Pending);
+      pending->restore();
+      throw nb::python_error();
+    }
+  }
+
+protected:
+  void Report(double progress) override
+  {
+    nb::gil_scoped_acquire gil;
+    if (this->Pending || !this->ReportCallback.is_valid() || this->ReportCallback.is_none())
+    {
+      return;
+    }
+    try
+    {
+      this->ReportCallback(progress);
+    }
+    catch (nb::python_error& error)
+    {
+      this->Pending.reset(new nb::python_error(std::move(error)));
+    }
+  }
+
+  bool Poll() override
+  {
+    nb::gil_scoped_acquire gil;
+    if (this->Pending)
+    {
+      return true;
+    }
+    try
+    {
+      if (PyErr_CheckSignals() != 0) // KeyboardInterrupt, or what a handler raised
+      {
+        throw nb::python_error();
+      }
+      if (this->PollCallback.is_valid() && !this->PollCallback.is_none())
+      {
+        return nb::cast<bool>(this->PollCallback());
+      }
+    }
+    catch (nb::python_error& error)
+    {
+      this->Pending.reset(new nb::python_error(std::move(error)));
+      return true;
+    }
+    return false;
+  }
+
+private:
+  nb::object ReportCallback;
+  nb::object PollCallback;
+  std::unique_ptr<nb::python_error> Pending;
+};
+
+/// A surface received from the core into growing buffers.
+class MeshSink : public nv::SurfaceSink
+{
+public:
+  void AddPoints(std::int64_t n, double*& xyz, float*& normals) override
+  {
+    xyz = this->Points.Extend(static_cast<std::size_t>(3 * n));
+    normals = this->Normals.Extend(static_cast<std::size_t>(3 * n));
+  }
+  nv::VertexId* AddTriangles(std::int64_t n) override
+  {
+    return this->Triangles.Extend(static_cast<std::size_t>(3 * n));
+  }
+  nv::SurfaceArrays View()
+  {
+    nv::SurfaceArrays arrays;
+    arrays.Points = this->Points.Get();
+    arrays.Normals = this->Normals.Get();
+    arrays.Triangles = this->Triangles.Get();
+    arrays.NumberOfPoints = static_cast<std::int64_t>(this->Points.GetSize() / 3);
+    arrays.NumberOfTriangles = static_cast<std::int64_t>(this->Triangles.GetSize() / 3);
+    return arrays;
+  }
+  void Truncate(const nv::SurfaceArrays& arrays)
+  {
+    this->Points.Truncate(static_cast<std::size_t>(3 * arrays.NumberOfPoints));
+    this->Normals.Truncate(static_cast<std::size_t>(3 * arrays.NumberOfPoints));
+    this->Triangles.Truncate(static_cast<std::size_t>(3 * arrays.NumberOfTriangles));
+  }
+
+  Buffer<double> Points;
+  Buffer<float> Normals;
+  Buffer<nv::VertexId> Triangles;
+};
+
+/// The dense arrays a run fills, allocated when the run asks.
+struct VolumeBuffers
+{
+  bool InitialPhi = false, Distance = false, Band = false;
+  Buffer<float> PhiValues, InitialPhiValues, DistanceValues;
+  Buffer<unsigned char> BandValues;
+
+  nv::VolumeArrays Allocate(std::size_t nodes)
+  {
+    nv::VolumeArrays arrays;
+    arrays.Phi = this->PhiValues.Extend(nodes);
+    arrays.InitialPhi = this->InitialPhi ? this->InitialPhiValues.Extend(nodes) : nullptr;
+    arrays.Distance = this->Distance ? this->DistanceValues.Extend(nodes) : nullptr;
+    arrays.Band = this->Band ? this->BandValues.Extend(nodes) : nullptr;
+    return arrays;
+  }
+};
+
+/// A run with its monitor (which it keeps alive) and the arrays it fills.
+class PythonRun
+{
+public:
+  PythonRun(const nv::Settings& settings, std::shared_ptr<PythonMonitor> monitor)
+    : Watch(std::move(monitor))
+    , Run(settings, nullptr, this->Watch.get())
+  {
+  }
+
+  void RequestVolume(bool initialPhi, bool distance, bool band)
+  {
+    this->Volume.reset(new VolumeBuffers);
+    this->Volume->InitialPhi = initialPhi;
+    this->Volume->Distance = distance;
+    this->Volume->Band = band;
+    VolumeBuffers* buffers = this->Volume.get();
+    const nv::Reconstruction& run = this->Run;
+    this->Run.RequestVolume(0, [buffers, &run](std::int64_t kBegin, std::int64_t kEnd) {
+      const nv::Grid& grid = run.GetGrid();
+      return buffers->Allocate(static_cast<std::size_t>(grid.Dims[0] * grid.Dims[1] * (kEnd - kBegin)));
+    });
+  }
+
+  bool Start(Points points, std::shared_ptr<const nv::Sampling> sampling)
+  {
+    std::vector<double> xyz(points.data(), points.data() + 3 * points.shape(0));
+    bool ok = false;
+    {
+      nb::gil_scoped_release release;
+      ok = this->Run.Run(std::move(xyz), std::move(sampling));
+    }
+    this->RaisePending();
+    return ok;
+  }
+
+  /// {name: numpy array} of the filled dense arrays (once).
+  nb::dict TakeVolume()
+  {
+    nb::dict arrays;
+    if (this->Volume)
+    {
+      arrays["phi"] = this->Volume->PhiValues.Release(1);
+      if (this->Volume->InitialPhi)
+      {
+        arrays["InitialPhi"] = this->Volume->InitialPhiValues.Release(1);
+      }
+      if (this->Volume->Distance)
+      {
+        arrays["Distance"] = this->Volume->DistanceValues.Release(1);
+      }
+      if (this->Volume->Band)
+      {
+        arrays["NarrowBand"] = this->Volume->BandValues.Release(1);
+      }
+      this->Volume.reset();
+    }
+    return arrays;
+  }
+
+  bool ExtractSurface(MeshSink& sink)
+  {
+    bool done = false;
+    {
+      nb::gil_scoped_release release;
+      done = this->Run.ExtractSurface(sink);
+    }
+    this->RaisePending();
+    return done;
+  }
+
+  std::pair<bool, std::int64_t> ContourDense(FloatArray phi, MeshSink& sink)
+  {
+    if (static_cast<std::int64_t>(phi.size()) != this->Run.GetGrid().NumberOfNodes())
+    {
+      throw std::invalid_argument("ContourDense: phi must hold one value per grid node");
+    }
+    std::int64_t cavities = 0;
+    bool done = false;
+    {
+      nb::gil_scoped_release release;
+      done = nv::ContourDense(this->Run, phi.data(), sink, this->Watch.get(), cavities);
+    }
+    this->RaisePending();
+    return { done, cavities };
+  }
+
+  void RaisePending()
+  {
+    if (this->Watch)
+    {
+      this->Watch->RaisePending();
+    }
+  }
+
+  std::shared_ptr<PythonMonitor> Watch;
+  nv::Reconstruction Run;
+  std::unique_ptr<VolumeBuffers> Volume;
+};
+
+std::array<double, 6> Bounds(const std::vector<double>& bounds)
+{
+  if (bounds.size() != 6)
+  {
+    throw std::invalid_argument("bounds: 6 values (xmin, xmax, ymin, ymax, zmin, zmax)");
+  }
+  std::array<double, 6> b;
+  std::copy(bounds.begin(), bounds.end(), b.begin());
+  return b;
+}
+} // namespace
+
+NB_MODULE(_core, m)
+{
+  m.doc() = "The numerical core of NarrowVolume (Filters/Core), for the Python filter of the wheel.";
+  // A filter alive at exit (a script's global) holds its Settings; VTK's
+  // Python objects may outlive nanobind's leak check, which would only warn.
+  nb::set_leak_warnings(false);
+
+  nb::enum_<nv::Domain>(m, "Domain", nb::is_arithmetic(), "Which nodes the scheme updates.")
+    .value("NarrowBand", nv::Domain::NarrowBand)
+    .value("WholeDomain", nv::Domain::WholeDomain);
+  nb::enum_<nv::EdgeStopping>(m, "EdgeStopping", nb::is_arithmetic(), "The edge-stopping function g, by equation.")
+    .value("Eq3", nv::EdgeStopping::Eq3)
+    .value("Eq4", nv::EdgeStopping::Eq4);
+  nb::enum_<nv::Sheets>(m, "Sheets", nb::is_arithmetic(), "The phi = 0 sheets a surface keeps.")
+    .value("Both", nv::Sheets::Both)
+    .value("Outer", nv::Sheets::Outer)
+    .value("Inner", nv::Sheets::Inner);
+
+  // Every field of nv::Settings; a default-constructed one holds the defaults.
+  nb::class_<nv::Settings>(m, "Settings", "What the user chooses (nv::Settings): the filter's properties.")
+    .def(nb::init<>())
+    .def_rw("OffsetDistance", &nv::Settings::OffsetDistance)
+    .def_rw("SampleSpacing", &nv::Settings::SampleSpacing)
+    .def_rw("MaximumDimension", &nv::Settings::MaximumDimension)
+    .def_rw("XiCells", &nv::Settings::XiCells)
+    .def_rw("EpsilonCells", &nv::Settings::EpsilonCells)
+    .def_rw("TimeStep", &nv::Settings::TimeStep)
+    .def_rw("MaximumNumberOfIterations", &nv::Settings::MaximumNumberOfIterations)
+    .def_rw("ConvergenceTolerance", &nv::Settings::ConvergenceTolerance)
+    .def_rw("GaussSeidelTolerance", &nv::Settings::GaussSeidelTolerance)
+    .def_rw("Mode", &nv::Settings::Mode)
+    .def_rw("EdgeFunction", &nv::Settings::EdgeFunction)
+    .def_rw("PreserveOffset", &nv::Settings::PreserveOffset)
+    .def_rw("RemoveSmallPieces", &nv::Settings::RemoveSmallPieces)
+    .def_rw("KeptSheets", &nv::Settings::KeptSheets)
+    .def_rw("OutputVolume", &nv::Settings::OutputVolume)
+    .def_rw("OutputInitialPhi", &nv::Settings::OutputInitialPhi)
+    .def_rw("OutputDistance", &nv::Settings::OutputDistance)
+    .def_rw("OutputNarrowBand", &nv::Settings::OutputNarrowBand)
+    .def_rw("NumberOfThreads", &nv::Settings::NumberOfThreads)
+    .def_rw("MemoryLimit", &nv::Settings::MemoryLimit)
+    .def("MemoryLimitBytes", &nv::Settings::MemoryLimitBytes)
+    .def("OutputBytesPerNode", &nv::Settings::OutputBytesPerNode);
+
+  nb::class_<nv::Grid>(m, "Grid", "The uniform grid: nodes Origin + (i, j, k) Spacing.")
+    .def_prop_ro("Origin", [](const nv::Grid& g) { return g.Origin; })
+    .def_prop_ro("Dims", [](const nv::Grid& g) { return g.Dims; })
+    .def_ro("Spacing", &nv::Grid::Spacing)
+    .def("NumberOfNodes", &nv::Grid::NumberOfNodes);
+  nb::class_<nv::Parameters>(m, "Parameters", "The scheme's parameters on the grid (nv::Parameters).")
+    .def_ro("OffsetDistance", &nv::Parameters::OffsetDistance)
+    .def_ro("Spacing", &nv::Parameters::Spacing);
+  nb::class_<nv::Plan>(m, "Plan", "The grid that points with given bounds get (nv::MakePlan).")
+    .def_ro("TheGrid", &nv::Plan::TheGrid)
+    .def_ro("Scheme", &nv::Plan::Scheme)
+    .def_ro("Error", &nv::Plan::Error)
+    .def("Valid", &nv::Plan::Valid);
+
+  nb::class_<nv::SamplingStatistics>(m, "SamplingStatistics", "Nearest-neighbour distances of a cloud.")
+    .def_ro("Points", &nv::SamplingStatistics::Points)
+    .def_ro("MedianSpacing", &nv::SamplingStatistics::MedianSpacing)
+    .def_ro("WideSpacing", &nv::SamplingStatistics::WideSpacing)
+    .def("Valid", &nv::SamplingStatistics::Valid);
+  nb::class_<nv::GapReport>(m, "GapReport", "The gaps wider than the offset distance.")
+    .def_ro("Gaps", &nv::GapReport::Gaps)
+    .def_ro("GapPoints", &nv::GapReport::GapPoints)
+    .def_ro("LargestGap", &nv::GapReport::LargestGap)
+    .def_prop_ro("LargestGapCenter", [](const nv::GapReport& g) { return g.LargestGapCenter; });
+  nb::class_<nv::Sampling>(m, "Sampling", "The sampling of a cloud (nv::Sampling), measured once per cloud.")
+    .def(nb::new_([](Points points, int threads) {
+      auto sampling = std::make_shared<nv::Sampling>();
+      std::vector<double> xyz(points.data(), points.data() + 3 * points.shape(0));
+      nb::gil_scoped_release release;
+      nv::WithThreads(threads, [&]() { sampling->Measure(xyz, nullptr); });
+      return sampling;
+    }),
+      "points"_a, "threads"_a = 0,
+      "Measures the nearest-neighbour distances of the points ((n, 3) float64) on `threads` threads (0: all "
+      "cores), without the GIL.")
+    .def("Statistics", &nv::Sampling::Statistics);
+
+  m.def(
+    "MakePlan",
+    [](const nv::Settings& settings, const std::vector<double>& bounds, const nv::SamplingStatistics& sampling) {
+      const std::array<double, 6> b = Bounds(bounds);
+      return nv::MakePlan(settings, b.data(), sampling);
+    },
+    "settings"_a, "bounds"_a, "sampling"_a, "The grid for points with these bounds and sampling, or why there is none.");
+
+  nb::class_<PythonMonitor>(m, "Monitor",
+    "Progress and abort of a run: report(progress) receives the whole run's progress in [0, 1], never "
+    "going back; poll() returns True to stop it. Both are called on the thread that made the monitor, "
+    "which also handles Ctrl-C there.")
+    .def(nb::new_([](nb::object report, nb::object poll) {
+      return std::make_shared<PythonMonitor>(std::move(report), std::move(poll));
+    }),
+      "report"_a = nb::none(), "poll"_a = nb::none())
+    .def(
+      "Stage",
+      [](PythonMonitor& monitor, double begin, double width) {
+        monitor.Stage(begin, width);
+        monitor.RaisePending();
+      },
+      "begin"_a, "width"_a, "A stage of the run begins; it covers [begin, begin + width) of its progress.")
+    .def(
+      "Progress",
+      [](PythonMonitor& monitor, double fraction) {
+        monitor.Progress(fraction);
+        monitor.RaisePending();
+      },
+      "fraction"_a, "The fraction done of the current stage.")
+    .def(
+      "Aborted",
+      [](PythonMonitor& monitor) {
+        const bool stop = monitor.Aborted();
+        monitor.RaisePending();
+        return stop;
+      },
+      "Whether the run is to stop.");
+
+  nb::class_<MeshSink>(m, "MeshSink", "Receives the surface the core makes.")
+    .def(nb::init<>())
+    .def(
+      "RemoveSmallPieces",
+      [](MeshSink& sink, double offset, const nv::Grid& grid, std::optional<FloatArray> phi, std::int64_t kBegin,
+        std::int64_t layers) {
+        if (phi && static_cast<std::int64_t>(phi->size()) != grid.Dims[0] * grid.Dims[1] * layers)
+        {
+          throw std::invalid_argument("RemoveSmallPieces: phi must hold the given node layers");
+        }
+        nv::SurfaceArrays arrays = sink.View();
+        nv::RemovedPieces removed;
+        {
+          nb::gil_scoped_release release;
+          removed = nv::RemoveSmallPieces(arrays, offset, grid, phi ? phi->data() : nullptr, kBegin, layers);
+        }
+        sink.Truncate(arrays);
+        return std::make_pair(removed.Pieces, removed.Voids);
+      },
+      "offset"_a, "grid"_a, "phi"_a = nb::none(), "k_begin"_a = 0, "layers"_a = 0,
+      "Removes the small pieces and voids (nvPieces.h) and flips phi in the same regions; (pieces, voids).")
+    .def(
+      "Take",
+      [](MeshSink& sink) {
+        return nb::make_tuple(sink.Points.Release(3), sink.Normals.Release(3), sink.Triangles.Release(3));
+      },
+      "(points (n, 3) float64, normals (n, 3) float32, triangles (m, 3) int64), without a copy; the sink is "
+      "empty afterwards.");
+
+  nb::class_<PythonRun>(m, "Reconstruction", "The whole run of the method (nv::Reconstruction), serial.")
+    .def(nb::init<const nv::Settings&, std::shared_ptr<PythonMonitor>>(), "settings"_a, "monitor"_a = nb::none())
+    .def("RequestVolume", &PythonRun::RequestVolume, "initial_phi"_a = false, "distance"_a = false,
+      "band"_a = false, "Asks the run to fill phi (and these arrays) on the grid.")
+    .def("Run", &PythonRun::Start, "points"_a, "sampling"_a = nb::none(),
+      "Steps 1-6 for the points ((n, 3) float64, C order), without the GIL. False when the run stops: "
+      "Error() says why, or Aborted(). sampling: the points' Sampling, if measured already.")
+    .def("TakeVolume", &PythonRun::TakeVolume, "{name: numpy array} of the dense arrays the run filled.")
+    .def("ExtractSurface", &PythonRun::ExtractSurface, "sink"_a, "Step 7: the phi = 0 surface from the band.")
+    .def("ContourDense", &PythonRun::ContourDense, "phi"_a, "sink"_a,
+      "The surface of the sheets the settings keep, from a copy of the dense phi: (done, cavities).")
+    .def("Error", [](const PythonRun& r) { return r.Run.Error(); })
+    .def("Aborted", [](const PythonRun& r) { return r.Run.Aborted(); })
+    .def("GetSettings", [](const PythonRun& r) { return r.Run.GetSettings(); })
+    .def("GetGrid", [](const PythonRun& r) { return r.Run.GetGrid(); })
+    .def("GetParameters", [](const PythonRun& r) { return r.Run.GetParameters(); })
+    .def("GetSampling", [](const PythonRun& r) { return r.Run.GetSampling(); })
+    .def("GetGaps", [](const PythonRun& r) { return r.Run.GetGaps(); })
+    .def("VolumeBegin", [](const PythonRun& r) { return r.Run.VolumeBegin(); })
+    .def("VolumeEnd", [](const PythonRun& r) { return r.Run.VolumeEnd(); })
+    .def("NumberOfBandNodes", [](const PythonRun& r) { return r.Run.NumberOfBandNodes(); })
+    .def("RelativeChanges", [](const PythonRun& r) { return r.Run.RelativeChanges(); })
+    .def("SetupSeconds", [](const PythonRun& r) { return r.Run.SetupSeconds(); })
+    .def("EvolutionSeconds", [](const PythonRun& r) { return r.Run.EvolutionSeconds(); })
+    .def(
+      "RunSummary",
+      [](const PythonRun& r, std::int64_t pieces, std::int64_t voids) {
+        nv::RemovedPieces removed;
+        removed.Pieces = pieces;
+        removed.Voids = voids;
+        nb::list summary;
+        for (const nv::SummaryArray& array : nv::RunSummary(r.Run, removed))
+        {
+          const char* kind = array.Kind == nv::SummaryArray::Int ? "int"
+            : array.Kind == nv::SummaryArray::Id                 ? "id"
+                                                                 : "double";
+          summary.append(nb::make_tuple(array.Name, kind, array.Components, array.Values));
+        }
+        return summary;
+      },
+      "pieces"_a, "voids"_a, "[(name, 'int' | 'id' | 'double', components, values)]: the volume's field data.");
+
+  m.def("NeedsDenseVolume", &nv::NeedsDenseVolume, "settings"_a, "distributed"_a = false);
+  m.def("SurfaceFromDenseCopy", &nv::SurfaceFromDenseCopy, "settings"_a, "distributed"_a = false);
+  m.def("NoInnerSheet", &nv::NoInnerSheet, "settings"_a, "cavities"_a);
+  m.def("GapWarning", &nv::GapWarning, "gaps"_a, "offset"_a);
+  m.def("EmptySurfaceWarning", &nv::EmptySurfaceWarning, "offset"_a, "spacing"_a);
+  m.def("NoInnerSheetWarning", &nv::NoInnerSheetWarning);
+  m.def("OneSheetNeedsGridWarning", &nv::OneSheetNeedsGridWarning);
+  m.attr("OutputStage") = nb::make_tuple(nv::OutputStage[0], nv::OutputStage[1]);
+}

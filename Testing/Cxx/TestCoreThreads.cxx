@@ -1,0 +1,246 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+// SPDX-License-Identifier: BSD-3-Clause
+// The core's loops on either thread backend (this test is built twice: with
+// vtkSMPTools, and with the std::thread pool of the Python wheel): every
+// index visited once for any grain and thread count, no more threads than
+// asked for, loops inside loops and loops from two threads at once, an
+// exception reaching the caller (the pool), reductions and the shipped run's phi
+// bit-identical for any thread count, and (std::thread pool) a forked child
+// that still runs parallel loops.
+#include "nvParallel.h"
+#include "nvReconstruction.h"
+#include "nvTestUtilities.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstring>
+#include <memory>
+#include <mutex>
+#include <set>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+#ifndef _WIN32
+#include <csignal>
+#include <sys/wait.h>
+#include <unistd.h>
+#endif
+
+namespace
+{
+
+/// Every index of [begin, end) visited exactly once by ParallelFor.
+bool VisitsOnce(std::int64_t begin, std::int64_t end, std::int64_t grain)
+{
+  std::unique_ptr<std::atomic<int>[]> visits(new std::atomic<int>[static_cast<std::size_t>(end - begin)]);
+  for (std::int64_t i = 0; i < end - begin; ++i)
+  {
+    visits[i] = 0;
+  }
+  nv::ParallelFor(begin, end, grain, [&](std::int64_t first, std::int64_t last) {
+    for (std::int64_t i = first; i < last; ++i)
+    {
+      ++visits[i - begin];
+    }
+  });
+  for (std::int64_t i = 0; i < end - begin; ++i)
+  {
+    if (visits[i] != 1)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+void TestCoverage()
+{
+  for (int threads : { 1, 2, 3, 8 })
+  {
+    nv::WithThreads(threads, [&]() {
+      for (std::int64_t grain : { 1, 7, 1000, 100000 })
+      {
+        NV_CHECK(VisitsOnce(0, 10000, grain));
+        NV_CHECK(VisitsOnce(-35, 77, grain));
+      }
+      NV_CHECK(VisitsOnce(5, 5, 3)); // empty
+    });
+  }
+}
+
+/// The distinct threads that ran the chunks of a loop of slow chunks.
+std::size_t ThreadsSeen(int threads)
+{
+  std::mutex lock;
+  std::set<std::thread::id> seen;
+  nv::WithThreads(threads, [&]() {
+    nv::ParallelFor(0, 100, 1, [&](std::int64_t, std::int64_t) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+      std::lock_guard<std::mutex> guard(lock);
+      seen.insert(std::this_thread::get_id());
+    });
+  });
+  return seen.size();
+}
+
+void TestThreadCount()
+{
+  const std::size_t one = ThreadsSeen(1), three = ThreadsSeen(3);
+  std::printf("threads seen: %zu with 1 asked for, %zu with 3\n", one, three);
+  NV_CHECK(one == 1);
+  NV_CHECK(three >= 2 && three <= 3);
+}
+
+void TestNestedAndConcurrent()
+{
+  nv::WithThreads(4, [&]() {
+    // A loop inside a loop's chunk runs (on that chunk's thread).
+    std::atomic<std::int64_t> inner{ 0 };
+    nv::ParallelFor(0, 16, 1, [&](std::int64_t, std::int64_t) {
+      nv::ParallelFor(0, 1000, 10, [&](std::int64_t first, std::int64_t last) { inner += last - first; });
+    });
+    NV_CHECK(inner == 16 * 1000);
+  });
+  // Two threads (two reconstructions at once, say) loop at the same time.
+  std::atomic<int> good{ 0 };
+  std::vector<std::thread> callers;
+  for (int c = 0; c < 2; ++c)
+  {
+    callers.emplace_back([&]() {
+      nv::WithThreads(3, [&]() {
+        bool all = true;
+        for (int repeat = 0; repeat < 50; ++repeat)
+        {
+          all = VisitsOnce(0, 20000, 100) && all;
+        }
+        good += all ? 1 : 0;
+      });
+    });
+  }
+  for (std::thread& caller : callers)
+  {
+    caller.join();
+  }
+  NV_CHECK(good == 2);
+}
+
+#ifdef NV_TEST_POOL
+// The std::thread pool hands an exception to the caller (vtkSMPTools'
+// STDThread backend does not: there it would end the process).
+void TestException()
+{
+  bool caught = false;
+  nv::WithThreads(3, [&]() {
+    try
+    {
+      nv::ParallelFor(0, 1000, 10, [&](std::int64_t first, std::int64_t) {
+        if (first == 500)
+        {
+          throw std::runtime_error("chunk 500");
+        }
+      });
+    }
+    catch (const std::runtime_error& error)
+    {
+      caught = std::strcmp(error.what(), "chunk 500") == 0;
+    }
+    NV_CHECK(VisitsOnce(0, 1000, 10)); // the loops still run afterwards
+  });
+  NV_CHECK(caught);
+}
+#endif
+
+void TestReductions()
+{
+  // Values whose sum depends on the order of the additions.
+  const std::int64_t n = 1000003;
+  std::vector<double> values(static_cast<std::size_t>(n));
+  for (std::int64_t i = 0; i < n; ++i)
+  {
+    values[static_cast<std::size_t>(i)] = 1.0 / (1.0 + static_cast<double>((i * 7919) % 1000));
+  }
+  auto sum = [&](std::int64_t begin, std::int64_t end) {
+    double s = 0.0;
+    for (std::int64_t i = begin; i < end; ++i)
+    {
+      s += values[static_cast<std::size_t>(i)];
+    }
+    return s;
+  };
+  double sums[4], maxima[4];
+  const int counts[4] = { 1, 2, 3, 7 };
+  for (int t = 0; t < 4; ++t)
+  {
+    nv::WithThreads(counts[t], [&]() {
+      sums[t] = nv::ParallelSum(n, sum);
+      maxima[t] = nv::ParallelMax(n, sum);
+    });
+  }
+  for (int t = 1; t < 4; ++t)
+  {
+    NV_CHECK(sums[t] == sums[0]);
+    NV_CHECK(maxima[t] == maxima[0]);
+  }
+}
+
+/// The shipped run on a sphere: phi bit-identical for 1, 2 and 5 threads.
+void TestRunThreads()
+{
+  const double center[3] = { 0.3, -0.1, 0.2 };
+  const std::vector<double> points = nvtest::SpherePoints(3000, 0.5, center);
+  std::vector<double> phi[3];
+  const int counts[3] = { 1, 2, 5 };
+  for (int t = 0; t < 3; ++t)
+  {
+    nv::Settings settings;
+    settings.OffsetDistance = 0.1;
+    settings.SampleSpacing = 0.02;
+    settings.NumberOfThreads = counts[t];
+    nv::Reconstruction run(settings, nullptr, nullptr);
+    NV_CHECK(run.Run(points));
+    phi[t] = run.GetPhi();
+  }
+  NV_CHECK(!phi[0].empty());
+  NV_CHECK(phi[1] == phi[0]);
+  NV_CHECK(phi[2] == phi[0]);
+}
+
+#if defined(NV_TEST_POOL) && !defined(_WIN32)
+/// A child made by fork() after the pool started runs parallel loops too
+/// (it has none of its parent's threads).
+void TestFork()
+{
+  nv::WithThreads(3, [&]() { NV_CHECK(VisitsOnce(0, 10000, 10)); });
+  const pid_t child = fork();
+  if (child == 0)
+  {
+    alarm(20); // a hang ends the child
+    bool ok = true;
+    nv::WithThreads(3, [&]() { ok = VisitsOnce(0, 10000, 10); });
+    _exit(ok ? 0 : 1);
+  }
+  int status = 0;
+  NV_CHECK(child > 0 && waitpid(child, &status, 0) == child);
+  NV_CHECK(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+}
+#endif
+
+} // namespace
+
+int main()
+{
+  TestCoverage();
+  TestThreadCount();
+  TestNestedAndConcurrent();
+#ifdef NV_TEST_POOL
+  TestException();
+#endif
+  TestReductions();
+  TestRunThreads();
+#if defined(NV_TEST_POOL) && !defined(_WIN32)
+  TestFork();
+#endif
+  return nvtest::Result(NV_TEST_NAME);
+}

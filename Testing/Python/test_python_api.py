@@ -1,0 +1,579 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+# SPDX-License-Identifier: BSD-3-Clause
+"""The Python API of the package narrowvolume, for both of its flavours.
+
+    pvpython -m pytest test_python_api.py        (the CMake build's package)
+    python -m pytest test_python_api.py          (in a venv with the wheel)
+
+The same tests run against the C++ filter wrapped by VTK and against the
+wheel's Python filter: the property table against the class, reconstruct()
+with every kind of input, progress, errors, warnings and Ctrl-C, the command
+line (every format, progress on a terminal, bad input, Ctrl-C) and pyvista's
+accessor. Tests that only one flavour can run say why they skip.
+
+Environment: NV_EXPECT_FLAVOUR ("vtk-module" or "wheel") guards against
+testing the wrong package; NV_PIP_REFERENCE, a folder written by
+pip_reference.py (the C++ filter's record), turns on the comparisons of the
+wheel with the C++ filter: the same public names, defaults and clamping, and
+bit-identical outputs on the same points; NV_PYTHON runs the command line
+(default: this Python, or pvpython for the CMake build's package).
+"""
+import json
+import os
+import shutil
+import signal
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+import warnings
+
+import numpy as np
+import pytest
+from vtkmodules.util.misc import calldata_type
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.util.vtkConstants import VTK_STRING
+from vtkmodules.vtkCommonCore import vtkCommand
+from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPolyData, vtkUnstructuredGrid
+
+import narrowvolume
+from narrowvolume import _properties
+import nvflavours
+import nvtesting
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+TREFOIL = os.path.join(HERE, "..", "..", "Data", "trefoil.vtp")
+REFERENCE = os.environ.get("NV_PIP_REFERENCE")
+WHEEL = narrowvolume.FLAVOUR == "wheel"
+only_wheel = pytest.mark.skipif(not WHEEL, reason="the wheel's Python filter and binding only")
+needs_reference = pytest.mark.skipif(not (WHEEL and REFERENCE),
+                                     reason="compares the wheel with the C++ filter's record (NV_PIP_REFERENCE)")
+SPHERE = nvtesting.sphere_points(5000, 0.5, (1.0, 2.0, -3.0))
+SETTINGS = dict(OffsetDistance=0.1, SampleSpacing=0.025)
+
+
+@pytest.fixture(autouse=True, scope="module")
+def python_sigint():
+    """Python's own Ctrl-C handler, as in a plain Python (pvpython leaves
+    SIGINT to ParaView's logger, which ends the process)."""
+    previous = signal.getsignal(signal.SIGINT)
+    signal.signal(signal.SIGINT, signal.default_int_handler)
+    yield
+    if previous is not None:
+        signal.signal(signal.SIGINT, previous)
+
+
+def phi_of(volume):
+    return vtk_to_numpy(volume.GetPointData().GetArray("phi"))
+
+
+def test_flavour():
+    """The package under test is the one the test run asked for."""
+    print("narrowvolume %s from %s" % (narrowvolume.FLAVOUR, narrowvolume.__file__))
+    expected = os.environ.get("NV_EXPECT_FLAVOUR")
+    if expected:
+        assert narrowvolume.FLAVOUR == expected
+    assert narrowvolume.FLAVOUR in ("vtk-module", "wheel")
+    assert (narrowvolume.vtkPointCloudTextReader is None) == WHEEL
+
+
+# --- The property table against the filter.
+@pytest.mark.parametrize("prop", _properties.PROPERTIES, ids=lambda p: p.name)
+def test_property_methods(prop):
+    """Every row of the table is a property with the filter's Set/Get methods,
+    clamps as the table says, and has its boolean and enumerated helpers."""
+    f = narrowvolume.vtkNarrowVolumeReconstruction()
+    default = getattr(f, "Get" + prop.name)()
+    assert isinstance(default, prop.kind) or (prop.kind is float and isinstance(default, int))
+    if prop.low is not None:
+        getattr(f, "Set" + prop.name)(prop.low - 1)
+        assert getattr(f, "Get" + prop.name)() == prop.low
+        getattr(f, "Set" + prop.name)(prop.high * 10)
+        assert getattr(f, "Get" + prop.name)() == prop.high
+        assert getattr(f, "Get%sMinValue" % prop.name)() == prop.low
+        assert getattr(f, "Get%sMaxValue" % prop.name)() == prop.high
+    if prop.kind is bool:
+        getattr(f, prop.name + "On")()
+        assert getattr(f, "Get" + prop.name)() is True
+        getattr(f, prop.name + "Off")()
+        assert getattr(f, "Get" + prop.name)() is False
+    for constant, suffix, value in prop.choices:
+        assert getattr(narrowvolume.vtkNarrowVolumeReconstruction, constant) == value
+        getattr(f, "Set%sTo%s" % (prop.name, suffix))()
+        assert getattr(f, "Get" + prop.name)() == value
+
+
+def test_setter_marks_modified():
+    """A setter that changes a value marks the filter modified, one that does not leaves it."""
+    f = narrowvolume.vtkNarrowVolumeReconstruction()
+    before = f.GetMTime()
+    f.SetOffsetDistance(f.GetOffsetDistance())
+    assert f.GetMTime() == before
+    f.SetOffsetDistance(f.GetOffsetDistance() + 1.0)
+    assert f.GetMTime() > before
+
+
+@pytest.mark.skipif(WHEEL, reason="reads the C++ class itself (the wheel is compared with its record instead)")
+def test_table_covers_the_cpp_class():
+    """Every Set/Get pair of the C++ filter is a row of the table (but SetController)."""
+    api = set(nvflavours.public_api(narrowvolume.vtkNarrowVolumeReconstruction))
+    pairs = {n[3:] for n in api if n.startswith("Set") and "Get" + n[3:] in api}
+    assert pairs - {"Controller"} == {p.name for p in _properties.PROPERTIES}
+
+
+@needs_reference
+def test_same_names_defaults_and_clamping_as_cpp():
+    """The wheel's filter has the C++ filter's public names (but SetController),
+    defaults and clamping."""
+    with open(os.path.join(REFERENCE, "reference.json")) as f:
+        record = json.load(f)
+    api = set(nvflavours.public_api(narrowvolume.vtkNarrowVolumeReconstruction))
+    assert set(record["api"]) - nvflavours.CPP_ONLY == api
+    assert nvflavours.property_report(narrowvolume.vtkNarrowVolumeReconstruction,
+                                      _properties.PROPERTIES) == record["properties"]
+
+
+@needs_reference
+@pytest.mark.parametrize("case", sorted(nvflavours.CASES))
+def test_outputs_bit_identical_to_cpp(case):
+    """The same points give the C++ filter's outputs bit for bit: the grid,
+    phi and the optional arrays, every field data array (with its class),
+    and the surface's points, normals and triangles."""
+    with open(os.path.join(REFERENCE, "reference.json")) as f:
+        expected = json.load(f)["cases"][case]
+    cloud = nvtesting.cloud(np.load(os.path.join(REFERENCE, "points.npy")))
+    got = nvflavours.summary(nvflavours.run_case(narrowvolume.vtkNarrowVolumeReconstruction, cloud,
+                                                 nvflavours.CASES[case]))
+    assert sorted(got) == sorted(expected)
+    for key in expected:
+        # dtype, shape and digest: the bytes. (The sums only help to read a
+        # failure: numpy's summation order differs between its versions.)
+        assert got[key][:3] == expected[key][:3], (key, got[key], expected[key])
+
+
+# --- reconstruct()
+def test_reconstruct_inputs():
+    """An (n, 3) array, a vtkPolyData and a vtkUnstructuredGrid of the same
+    points give the same phi, the filter's."""
+    volume, surface = narrowvolume.reconstruct(SPHERE, **SETTINGS)
+    assert isinstance(volume, vtkImageData) and isinstance(surface, vtkPolyData)
+    grid = vtkUnstructuredGrid()
+    grid.SetPoints(nvtesting.cloud(SPHERE).GetPoints())
+    for data in (nvtesting.cloud(SPHERE), grid, SPHERE.tolist()):
+        other, _ = narrowvolume.reconstruct(data, **SETTINGS)
+        assert np.array_equal(phi_of(other), phi_of(volume))
+    f = narrowvolume.vtkNarrowVolumeReconstruction()
+    f.SetInputData(nvtesting.cloud(SPHERE))
+    f.SetOffsetDistance(0.1)
+    f.SetSampleSpacing(0.025)
+    f.Update()
+    assert np.array_equal(phi_of(f.GetOutput(0)), phi_of(volume))
+    assert surface.GetNumberOfPolys() == f.GetOutput(1).GetNumberOfPolys() > 0
+    assert nvtesting.regions(surface) == 2 and nvtesting.boundary_edges(surface) == 0
+    assert volume.GetFieldData().GetArray("NumberOfIterations").GetValue(0) == 3
+
+
+def test_reconstruct_keywords():
+    """Properties by name or in snake_case; an unknown one is a TypeError naming the valid ones."""
+    a, _ = narrowvolume.reconstruct(SPHERE, OffsetDistance=0.1, SampleSpacing=0.025, OutputDistance=True)
+    b, _ = narrowvolume.reconstruct(SPHERE, offset_distance=0.1, sample_spacing=0.025, output_distance=True)
+    assert np.array_equal(phi_of(a), phi_of(b))
+    assert b.GetPointData().GetArray("Distance") is not None
+    with pytest.raises(TypeError, match="OffsetDistance"):
+        narrowvolume.reconstruct(SPHERE, Offset=0.1)
+
+
+def test_reconstruct_errors():
+    """Refused input raises ReconstructionError with the filter's message."""
+    with pytest.raises(narrowvolume.ReconstructionError, match="no points"):
+        narrowvolume.reconstruct(np.zeros((0, 3)))
+    with pytest.raises(narrowvolume.ReconstructionError, match="OffsetDistance"):
+        narrowvolume.reconstruct(SPHERE, OffsetDistance=-1.0)
+    bad = SPHERE.copy()
+    bad[17, 1] = np.nan
+    with pytest.raises(narrowvolume.ReconstructionError, match="point 17"):
+        narrowvolume.reconstruct(bad, **SETTINGS)
+    with pytest.raises(ValueError):
+        narrowvolume.reconstruct(np.zeros((10, 2)))
+    with pytest.raises(TypeError, match="point set"):
+        narrowvolume.reconstruct(vtkImageData())
+
+
+def test_reconstruct_warning():
+    """The filter's warnings come as ReconstructionWarning."""
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        _, surface = narrowvolume.reconstruct(SPHERE[SPHERE[:, 2] > -2.8], OffsetDistance=0.1,
+                                              SampleSpacing=0.025, Sheets=2)
+    assert surface.GetNumberOfCells() == 0
+    messages = [str(w.message) for w in caught if issubclass(w.category, narrowvolume.ReconstructionWarning)]
+    assert any("open" in m for m in messages), messages
+
+
+def test_progress_callback():
+    """The callback sees at least 20 fractions, never going back, ending at 1;
+    an exception it raises stops the run and comes out of reconstruct()."""
+    seen = []
+    narrowvolume.reconstruct(SPHERE, progress=seen.append, **SETTINGS)
+    print("%d progress calls" % len(seen))
+    assert len(seen) >= 20 and seen[-1] == 1.0
+    assert all(b >= a for a, b in zip(seen, seen[1:]))
+
+    class Stop(Exception):
+        pass
+
+    def stop_at_half(fraction):
+        if fraction >= 0.5:
+            raise Stop()
+    with pytest.raises(Stop):
+        narrowvolume.reconstruct(SPHERE, progress=stop_at_half, **SETTINGS)
+
+
+def _timed(**settings):
+    start = time.perf_counter()
+    narrowvolume.reconstruct(SPHERE, **settings)
+    return time.perf_counter() - start
+
+
+def test_ctrl_c_from_progress():
+    """Ctrl-C (a SIGINT the progress callback sends itself at 20 %) stops the
+    run soon and raises KeyboardInterrupt."""
+    settings = dict(OffsetDistance=0.1, SampleSpacing=0.01)
+    full = _timed(**settings)
+    sent = []
+
+    def interrupt(fraction):
+        if fraction >= 0.2 and not sent:
+            sent.append(time.perf_counter())
+            os.kill(os.getpid(), signal.SIGINT)
+    with pytest.raises(KeyboardInterrupt):
+        narrowvolume.reconstruct(SPHERE, progress=interrupt, **settings)
+    after = time.perf_counter() - sent[0]
+    print("interrupted %.3f s after Ctrl-C (a full run: %.2f s)" % (after, full))
+    assert after < 0.3 * full
+    assert signal.getsignal(signal.SIGINT) is signal.default_int_handler  # restored
+
+
+@only_wheel
+def test_ctrl_c_while_the_core_runs():
+    """Ctrl-C from outside while the core computes (the GIL released), with
+    no Python callback at all: the binding's monitor polls Python's signals
+    between the core's steps, the run stops, Run raises KeyboardInterrupt."""
+    from narrowvolume import _core
+    settings = _core.Settings()
+    settings.OffsetDistance, settings.SampleSpacing = 0.1, 0.01
+    settings.MaximumNumberOfIterations = 5000  # minutes: the signal comes long before the end
+    run = _core.Reconstruction(settings, _core.Monitor())
+    sent = []
+
+    def interrupt():
+        sent.append(time.perf_counter())
+        os.kill(os.getpid(), signal.SIGINT)
+    timer = threading.Timer(0.5, interrupt)
+    start = time.perf_counter()
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        run.Run(np.ascontiguousarray(SPHERE))
+    end = time.perf_counter()
+    timer.join()
+    print("interrupted %.3f s after Ctrl-C, %.2f s into the run" % (end - sent[0], end - start))
+    assert run.Aborted() and end - sent[0] < 0.5
+
+
+@only_wheel
+def test_ctrl_c_during_update():
+    """Ctrl-C during the filter's Update(): the run stops, the outputs are
+    empty, an error says so, and Update() returns."""
+    f = narrowvolume.vtkNarrowVolumeReconstruction()
+    f.SetInputData(nvtesting.cloud(SPHERE))
+    f.SetOffsetDistance(0.1)
+    f.SetSampleSpacing(0.01)
+    f.SetMaximumNumberOfIterations(5000)
+    errors = []
+    f.AddObserver(vtkCommand.ErrorEvent, calldata_type(VTK_STRING)(lambda c, e, text: errors.append(text)))
+    timer = threading.Timer(0.5, lambda: os.kill(os.getpid(), signal.SIGINT))
+    timer.start()
+    f.Update()
+    timer.join()
+    assert f.GetOutput(1).GetNumberOfPoints() == 0 and f.GetOutput(0).GetNumberOfPoints() == 0
+    assert any("Interrupted" in e for e in errors), errors
+
+
+@only_wheel
+def test_gil_released():
+    """Another Python thread runs while the core computes: the GIL is released."""
+    def rate(seconds, busy=None):
+        count = [0]
+        stop = threading.Event()
+
+        def counter():
+            while not stop.is_set():
+                count[0] += 1
+        thread = threading.Thread(target=counter)
+        start = time.perf_counter()
+        thread.start()
+        if busy:
+            busy()
+        else:
+            time.sleep(seconds)
+        stop.set()
+        thread.join()
+        return count[0] / (time.perf_counter() - start)
+    free = rate(0.5)
+    during = rate(None, lambda: narrowvolume.reconstruct(SPHERE, OffsetDistance=0.1, SampleSpacing=0.008,
+                                                          NumberOfThreads=1))
+    print("another thread counts %.3g/s alone, %.3g/s while the core runs" % (free, during))
+    assert during > 0.3 * free
+
+
+# --- pyvista
+def _pyvista():
+    return pytest.importorskip("pyvista")
+
+
+def test_pyvista_input():
+    """A pyvista point set in, pyvista objects out."""
+    pv = _pyvista()
+    volume, surface = narrowvolume.reconstruct(pv.PolyData(SPHERE), **SETTINGS)
+    assert isinstance(volume, pv.ImageData) and isinstance(surface, pv.PolyData)
+    assert surface.n_cells > 0 and "phi" in volume.point_data
+
+
+def test_pyvista_accessor():
+    """cloud.narrowvolume.reconstruct() on pyvista's point sets (pyvista 0.48 and later)."""
+    pv = _pyvista()
+    if not hasattr(pv, "register_dataset_accessor"):
+        pytest.skip("pyvista %s has no dataset accessors (0.48 and later)" % pv.__version__)
+    from narrowvolume import _pyvista as accessor
+    assert accessor.REGISTERED
+    cloud = pv.PolyData(SPHERE)
+    volume, surface = cloud.narrowvolume.reconstruct(**SETTINGS)
+    expected, _ = narrowvolume.reconstruct(SPHERE, **SETTINGS)
+    assert np.array_equal(volume.point_data["phi"], phi_of(expected))
+    for kind in (pv.PointSet, pv.UnstructuredGrid):
+        assert hasattr(kind, "narrowvolume")
+
+
+@only_wheel
+def test_pyvista_entry_point():
+    """With the wheel installed, pyvista finds the accessor by itself: no import of narrowvolume."""
+    pv = _pyvista()
+    if not hasattr(pv, "register_dataset_accessor"):
+        pytest.skip("pyvista %s has no dataset accessors" % pv.__version__)
+    code = ("import sys, numpy as np, pyvista as pv\n"
+            "assert 'narrowvolume' not in sys.modules\n"
+            "v, s = pv.PolyData(np.load(sys.argv[1])).narrowvolume.reconstruct(OffsetDistance=0.1, SampleSpacing=0.025)\n"
+            "print(type(v).__name__, type(s).__name__, s.n_cells)\n")
+    with tempfile.TemporaryDirectory() as folder:
+        np.save(os.path.join(folder, "p.npy"), SPHERE)
+        result = subprocess.run([sys.executable, "-c", code, os.path.join(folder, "p.npy")],
+                                capture_output=True, text=True)
+    assert result.returncode == 0, nvtesting.explain(result)
+    assert result.stdout.startswith("ImageData PolyData ")
+
+
+# --- The command line
+def cli(*args, **kwargs):
+    return subprocess.run(nvtesting.python_command() + ["-m", "narrowvolume"] + [str(a) for a in args],
+                          capture_output=True, text=True, **kwargs)
+
+
+def _read(path):
+    from vtkmodules.vtkIOGeometry import vtkSTLReader
+    from vtkmodules.vtkIOPLY import vtkPLYReader
+    from vtkmodules.vtkIOXML import vtkXMLImageDataReader, vtkXMLPolyDataReader
+    reader = {".stl": vtkSTLReader, ".ply": vtkPLYReader, ".vtp": vtkXMLPolyDataReader,
+              ".vti": vtkXMLImageDataReader}[os.path.splitext(path)[1]]()
+    reader.SetFileName(path)
+    reader.Update()
+    return reader.GetOutput()
+
+
+def test_cli_writes_every_format(tmp_path):
+    """STL, PLY and VTP hold the surface, VTI the volume; the XML files are Binary."""
+    outputs = [tmp_path / ("shell" + e) for e in (".stl", ".ply", ".vtp")] + [tmp_path / "phi.vti"]
+    args = [TREFOIL, "--maximum-dimension", 60]
+    for path in outputs:
+        args += ["-o", path]
+    result = cli(*args)
+    assert result.returncode == 0, nvtesting.explain(result)
+    print(result.stdout)
+    expected, surface = narrowvolume.reconstruct(_read(TREFOIL), MaximumDimension=60)
+    for path in outputs[:3]:
+        assert _read(str(path)).GetNumberOfPolys() == surface.GetNumberOfPolys() > 0, path
+    assert _read(str(outputs[2])).GetPointData().GetArray("Normals") is not None
+    volume = _read(str(outputs[3]))
+    assert volume.GetDimensions() == expected.GetDimensions()
+    assert np.array_equal(phi_of(volume), phi_of(expected))
+    for path in outputs[2:]:
+        header = path.read_bytes()[:4000]
+        assert b'format="binary"' in header and b'format="appended"' not in header
+
+
+def test_cli_text_cloud(tmp_path):
+    """A plain-text cloud (x y z, a header line) gives the shell of the same points."""
+    points = vtk_to_numpy(_read(TREFOIL).GetPoints().GetData()).astype(np.float64)
+    text = tmp_path / "cloud.xyz"
+    np.savetxt(str(text), points, header="x y z", comments="", fmt="%.9g")
+    result = cli(text, "-o", tmp_path / "a.vtp", "--maximum-dimension", 50, "-q")
+    assert result.returncode == 0, nvtesting.explain(result)
+    _, surface = narrowvolume.reconstruct(np.loadtxt(str(text), skiprows=1), MaximumDimension=50)
+    assert _read(str(tmp_path / "a.vtp")).GetNumberOfPolys() == surface.GetNumberOfPolys() > 0
+
+
+def test_cli_options_and_defaults():
+    """--help names every property, with the filter's default."""
+    result = cli("--help")
+    assert result.returncode == 0, nvtesting.explain(result)
+    text = " ".join(result.stdout.split())
+    defaults = _properties.defaults_of(narrowvolume.vtkNarrowVolumeReconstruction())
+    for prop in _properties.PROPERTIES:
+        option = "--" + _properties.snake_case(prop.name).replace("_", "-")
+        assert option in text
+        assert "(default: %s)" % defaults[prop.name] in text, prop.name
+
+
+def test_cli_bad_input(tmp_path):
+    """Bad input: a non-zero exit and the error's message."""
+    missing = cli(tmp_path / "none.ply", "-o", tmp_path / "a.stl")
+    assert missing.returncode == 1 and "no such file" in missing.stderr
+    refused = cli(TREFOIL, "--offset-distance", -1, "-o", tmp_path / "a.stl")
+    assert refused.returncode == 1 and "OffsetDistance must be" in refused.stderr, refused.stderr
+    assert not (tmp_path / "a.stl").exists()
+    (tmp_path / "bad.xyz").write_text("1 2 3\n4 5 six\n")
+    malformed = cli(tmp_path / "bad.xyz", "-o", tmp_path / "a.stl")
+    assert malformed.returncode == 1 and "line 2" in malformed.stderr, malformed.stderr
+    unknown = cli(TREFOIL, "-o", tmp_path / "a.doc")
+    assert unknown.returncode == 2 and "unknown output format" in unknown.stderr
+    wrong = cli(TREFOIL, "--sheets", "sideways")
+    assert wrong.returncode == 2
+
+
+def test_cli_progress_on_a_terminal(tmp_path):
+    """A progress bar on a terminal, none when standard error is a file."""
+    import pty
+    main, secondary = pty.openpty()
+    # Both streams on the terminal: pvpython's stderr says it is one only then.
+    process = subprocess.Popen(nvtesting.python_command() + [
+        "-m", "narrowvolume", TREFOIL, "-o", str(tmp_path / "a.stl"), "--maximum-dimension", "60"],
+        stdout=secondary, stderr=secondary)
+    os.close(secondary)
+    shown = b""
+    while True:
+        try:
+            chunk = os.read(main, 65536)
+        except OSError:  # the terminal's other side closed
+            break
+        if not chunk:
+            break
+        shown += chunk
+    os.close(main)
+    assert process.wait() == 0
+    bars = [part for part in shown.decode(errors="replace").split("\r") if "narrowvolume: [" in part]
+    print("%d updates of the bar, the last %r" % (len(bars), bars[-1].strip() if bars else None))
+    assert len(bars) >= 20 and "100 %" in bars[-1]
+    quiet = cli(TREFOIL, "-o", tmp_path / "b.stl", "--maximum-dimension", 60)
+    assert quiet.returncode == 0 and "%" not in quiet.stderr
+
+
+def test_cli_ctrl_c(tmp_path):
+    """Ctrl-C stops the command: exit status 130, a message, no file."""
+    process = subprocess.Popen(nvtesting.python_command() + [
+        "-m", "narrowvolume", TREFOIL, "-o", str(tmp_path / "a.stl"), "--maximum-dimension", "200",
+        "--maximum-number-of-iterations", "400"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    first = process.stdout.readline()  # "... points from ...": the run starts
+    assert "points from" in first, first
+    time.sleep(0.5)
+    sent = time.perf_counter()
+    process.send_signal(signal.SIGINT)
+    out, err = process.communicate(timeout=60)
+    print("exit %d %.2f s after Ctrl-C: %s" % (process.returncode, time.perf_counter() - sent, err.strip()))
+    assert process.returncode == 130 and "interrupted" in err
+    assert time.perf_counter() - sent < 5.0
+    assert not (tmp_path / "a.stl").exists()
+
+
+@only_wheel
+def test_console_script():
+    """pip installs the command narrowvolume beside the interpreter."""
+    script = shutil.which("narrowvolume", path=os.path.dirname(sys.executable))
+    assert script, "no narrowvolume script beside %s" % sys.executable
+    result = subprocess.run([script, "--help"], capture_output=True, text=True)
+    assert result.returncode == 0 and "--offset-distance" in result.stdout
+
+
+# --- The README's pip section
+README = os.path.join(HERE, "..", "..", "README.md")
+
+
+def readme_pip_snippets():
+    """The ```python blocks of the README's "## pip" section."""
+    import re
+    text = open(README).read()
+    section = text.split("\n## pip\n", 1)[1].split("\n## ", 1)[0]
+    return re.findall(r"```python\n(.*?)```", section, re.S)
+
+
+def test_readme_pip_snippets(tmp_path):
+    """Each Python snippet of the README's pip section runs as written, in
+    a folder where scan.xyz and scan.ply hold a sphere of radius 15 sampled
+    about 1.2 apart (so that the snippets' offset of 2 closes it), and the
+    files it writes hold a closed shell."""
+    from vtkmodules.vtkIOPLY import vtkPLYWriter
+    snippets = readme_pip_snippets()
+    assert len(snippets) >= 4, "the pip section's snippets"
+    points = nvtesting.sphere_points(2000, 15.0)
+    np.savetxt(str(tmp_path / "scan.xyz"), points)
+    writer = vtkPLYWriter()
+    writer.SetInputData(nvtesting.cloud(points))
+    writer.SetFileName(str(tmp_path / "scan.ply"))
+    writer.Write()
+    try:
+        import pyvista  # noqa: F401
+        has_pyvista = True
+    except ImportError:
+        has_pyvista = False
+    ran = 0
+    for number, code in enumerate(snippets):
+        if "import pyvista" in code and not (has_pyvista and WHEEL):
+            # pyvista finds the accessor through the wheel's entry point.
+            print("snippet %d skipped: %s" % (number, "not the wheel" if has_pyvista else "no pyvista"))
+            continue
+        stl = tmp_path / "shell.stl"
+        if stl.exists():
+            stl.unlink()
+        result = subprocess.run(nvtesting.python_command() + ["-c", code], cwd=str(tmp_path),
+                                capture_output=True, text=True)
+        assert result.returncode == 0, "snippet %d:\n%s\n%s" % (number, code, nvtesting.explain(result))
+        assert "Traceback" not in result.stderr and "refused" not in result.stdout, result.stdout + result.stderr
+        print("snippet %d: %s" % (number, result.stdout.strip().replace("\n", " | ")[-200:]))
+        if '"shell.stl"' in code:
+            surface = _read(str(stl))
+            triangles, open_edges, _ = nvtesting.merged_surface(surface)
+            assert triangles > 1000 and open_edges == 0, (number, triangles, open_edges)
+        ran += 1
+    assert ran >= 3
+
+
+# --- The project's other Python tests, against the wheel (ctest runs them
+# against the CMake build's package, each on its own).
+SHARED_SCRIPTS = {
+    "test_python_package.py": [],
+    "test_robustness.py": [],
+    "test_reference_scheme.py": [],
+    "test_volume_off.py": [],
+    "test_pipeline_vtk.py": [TREFOIL],
+}
+
+
+@only_wheel
+@pytest.mark.parametrize("script", sorted(SHARED_SCRIPTS))
+def test_shared_script(script):
+    """A test script of the CMake build's package passes with the wheel."""
+    start = time.perf_counter()
+    result = subprocess.run([sys.executable, os.path.join(HERE, script)] + SHARED_SCRIPTS[script],
+                            capture_output=True, text=True, cwd=HERE)
+    print(result.stdout[-3000:])
+    print("%s: %.1f s" % (script, time.perf_counter() - start))
+    assert result.returncode == 0 and "FAILED" not in result.stdout, nvtesting.explain(result)
