@@ -1,11 +1,14 @@
 # SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
 # SPDX-License-Identifier: BSD-3-Clause
 """Helpers shared by the Python tests: point clouds and surface checks."""
+import atexit
 import math
 import os
 import re
 import shlex
+import shutil
 import sys
+import tempfile
 
 import numpy as np
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
@@ -125,6 +128,37 @@ def explain(run, tail=8):
         run.returncode, "\n    ".join(picked) or "(no line names an error)", "\n    ".join(last))
 
 
+_scratch = []
+_keep_scratch = [bool(os.environ.get("NV_KEEP_SCRATCH"))]
+
+
+def scratch_folder(prefix="nv-test-"):
+    """A new temporary folder, removed when the test ends unless it failed
+    (a failed check or an uncaught exception keeps it, and says where) or
+    NV_KEEP_SCRATCH is set."""
+    folder = tempfile.mkdtemp(prefix=prefix)
+    _scratch.append(folder)
+    return folder
+
+
+def _remove_scratch():
+    for folder in _scratch:
+        if _keep_scratch[0]:
+            print("scratch folder kept: %s" % folder)
+        else:
+            shutil.rmtree(folder, ignore_errors=True)
+
+
+def _keep_on_exception(kind, value, traceback):
+    _keep_scratch[0] = True
+    _previous_excepthook(kind, value, traceback)
+
+
+_previous_excepthook = sys.excepthook
+sys.excepthook = _keep_on_exception
+atexit.register(_remove_scratch)
+
+
 class Checker:
     """Counts failed checks and prints each one; exit code via finish()."""
 
@@ -135,6 +169,7 @@ class Checker:
     def check(self, condition, message):
         if not condition:
             self.failures += 1
+            _keep_scratch[0] = True
             print("FAILED:", message)
         return condition
 

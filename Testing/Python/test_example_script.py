@@ -5,7 +5,6 @@ watertight shell (STL), the phi volume and a picture."""
 import os
 import subprocess
 import sys
-import tempfile
 
 from vtkmodules.vtkIOGeometry import vtkSTLReader
 from vtkmodules.vtkIOXML import vtkXMLImageDataReader, vtkXMLPolyDataReader
@@ -18,7 +17,7 @@ t = nvtesting.Checker("test_example_script")
 script = os.path.join(source_dir, "examples", "reconstruct.py")
 
 for program in ("pvpython", "pvbatch"):
-    out = tempfile.mkdtemp(prefix="nv-example-")
+    out = nvtesting.scratch_folder(prefix="nv-example-")
     command = [with_xvfb, program, script, "--plugin", plugin, "--max-dim", "60", "--out", out]
     result = subprocess.run(command, capture_output=True, text=True, timeout=600)
     print(result.stdout)
@@ -53,7 +52,7 @@ for program in ("pvpython", "pvbatch"):
 
 # Without a display, the script writes its data and skips the picture with a
 # message; it never crashes (Debian's ParaView renders through X).
-out = tempfile.mkdtemp(prefix="nv-example-nodisplay-")
+out = nvtesting.scratch_folder(prefix="nv-example-nodisplay-")
 env = {k: v for k, v in os.environ.items() if k != "DISPLAY"}
 result = subprocess.run(["pvpython", script, "--plugin", plugin, "--max-dim", "40", "--out", out],
                         capture_output=True, text=True, timeout=600, env=env)

@@ -11,7 +11,6 @@ readers) shows up here as one failure that names the format.
 """
 import os
 import sys
-import tempfile
 
 import numpy as np
 import paraview.simple as pvs
@@ -26,7 +25,7 @@ import nvtesting
 
 plugin = sys.argv[1]
 t = nvtesting.Checker("test_file_formats")
-folder = tempfile.mkdtemp(prefix="nv-formats-")
+folder = nvtesting.scratch_folder(prefix="nv-formats-")
 pvs.LoadPlugin(plugin, ns=globals())
 
 # A cloud written as Data/make_demo_cloud.py writes the demo cloud.

@@ -13,7 +13,6 @@ import json
 import os
 import subprocess
 import sys
-import tempfile
 
 import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
@@ -23,7 +22,7 @@ import nvtesting
 
 plugin, cloud, with_xvfb = sys.argv[1:4]
 t = nvtesting.Checker("test_gui")
-folder = tempfile.mkdtemp(prefix="nv-gui-")
+folder = nvtesting.scratch_folder(prefix="nv-gui-")
 env = dict(os.environ, NV_PLUGIN=plugin, NV_CLOUD=cloud, NV_SCREENSHOT=os.path.join(folder, "gui.png"),
            NV_GUI_RESULT=os.path.join(folder, "result.json"), NV_FORCE_XVFB="1")
 script = os.path.join(os.path.dirname(os.path.abspath(__file__)), "gui_script.py")

@@ -22,7 +22,6 @@ import json
 import os
 import subprocess
 import sys
-import tempfile
 from xml.sax.saxutils import quoteattr
 
 import numpy as np
@@ -32,7 +31,7 @@ import nvtesting
 
 plugins_xml, with_xvfb = sys.argv[1:3]
 t = nvtesting.Checker("test_gui_open_files")
-folder = tempfile.mkdtemp(prefix="nv-gui-open-")
+folder = nvtesting.scratch_folder(prefix="nv-gui-open-")
 xyz = nvtesting.sphere_points(500, 0.5)
 files = {"xyz": os.path.join(folder, "plain.xyz"), "las": os.path.join(folder, "cloud.las"),
          "pcd": os.path.join(folder, "cloud.pcd"), "laz": os.path.join(folder, "cloud.laz"),

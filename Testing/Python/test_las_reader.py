@@ -7,7 +7,6 @@ UTM-sized coordinates in double precision; then damaged files, each of which
 must give its own error, an empty output, and no large allocation."""
 import os
 import resource
-import tempfile
 
 import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
@@ -18,7 +17,7 @@ import nvpointfiles as pf
 import nvtesting
 
 t = nvtesting.Checker("test_las_reader")
-folder = tempfile.mkdtemp(prefix="nv-las-")
+folder = nvtesting.scratch_folder(prefix="nv-las-")
 # A sphere of radius 50 m in UTM zone coordinates (easting 500 km, northing
 # 4000 km): a float32 holds 4000000 m to 0.25 m only.
 centre = (500123.4567, 4001234.5678, 312.25)

@@ -23,7 +23,6 @@ import os
 import socket
 import subprocess
 import sys
-import tempfile
 
 import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
@@ -70,7 +69,7 @@ declared = re.compile(r"information pass, rank (\d+) of (\d+): whole extent (\(.
                       r"spacing (\(.*?\)), scalar type (\w+), points (\d+)")
 downstream_reference = None
 for ranks, output_volume, preserve in ((1, 1, 0), (2, 1, 0), (3, 1, 0), (4, 1, 0), (4, 0, 0), (3, 1, 1)):
-    out = tempfile.mkdtemp()
+    out = nvtesting.scratch_folder(prefix="nv-mpi-")
     command = ["mpiexec", "--allow-run-as-root", "--oversubscribe", "-np", str(ranks), "pvbatch",
                os.path.join(here, "mpi_script.py"), plugin, out, cloud, str(output_volume), str(preserve)]
     run = subprocess.run(command, capture_output=True, text=True, timeout=600, env=env)
@@ -186,7 +185,7 @@ for line in server.stdout:
         ready = True
         break
 if t.check(ready, "pvserver started"):
-    result_file = tempfile.mktemp(suffix=".json")
+    result_file = os.path.join(nvtesting.scratch_folder(prefix="nv-pvserver-"), "result.json")
     run = subprocess.run(["pvpython",
                           os.path.join(here, "pvserver_client.py"), plugin, cloud, str(port), result_file],
                          capture_output=True, text=True, timeout=300, env=env)
@@ -209,7 +208,7 @@ except subprocess.TimeoutExpired:
 example = os.path.join(here, "..", "..", "examples", "reconstruct.py")
 volumes = {}
 for ranks in (1, 2):
-    out = tempfile.mkdtemp()
+    out = nvtesting.scratch_folder(prefix="nv-mpi-")
     command = ["mpiexec", "--allow-run-as-root", "--oversubscribe", "-np", str(ranks), "pvbatch", example, cloud,
                "--plugin", plugin, "--max-dim", "60", "--no-picture", "--out", out]
     run = subprocess.run(command, capture_output=True, text=True, timeout=600, env=env)

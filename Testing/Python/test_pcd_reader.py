@@ -10,7 +10,6 @@ error, an empty output, and no large allocation."""
 import os
 import resource
 import struct
-import tempfile
 
 import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
@@ -23,7 +22,7 @@ import nvpointfiles as pf
 import nvtesting
 
 t = nvtesting.Checker("test_pcd_reader")
-folder = tempfile.mkdtemp(prefix="nv-pcd-")
+folder = nvtesting.scratch_folder(prefix="nv-pcd-")
 n = 300
 rng = np.random.default_rng(3)
 xyz = nvtesting.sphere_points(n, 0.5, (1.0, -2.0, 3.0)).astype(np.float32)

@@ -54,8 +54,7 @@ t.check(servermanager.Fetch(f, idx=1).GetNumberOfPoints() > 0, "whole domain, eq
 
 # Plain-text clouds open through the plugin's reader and go straight into the filter.
 import os
-import tempfile
-folder = tempfile.mkdtemp(prefix="nv-pv-")
+folder = nvtesting.scratch_folder(prefix="nv-pv-")
 for name in ("ball.pts", "ball.xyz"):
     with open(os.path.join(folder, name), "w") as f:
         f.write("\n".join("%.6f %.6f %.6f" % tuple(p) for p in nvtesting.sphere_points(500, 0.5)))

@@ -15,7 +15,6 @@ coordinates differently: LAS to 0.1 mm, PCD to float).
 """
 import os
 import sys
-import tempfile
 
 import numpy as np
 import paraview.simple as pvs
@@ -27,7 +26,7 @@ import nvpointfiles as pf
 import nvtesting
 
 t = nvtesting.Checker("test_reader_roundtrip")
-folder = tempfile.mkdtemp(prefix="nv-roundtrip-")
+folder = nvtesting.scratch_folder(prefix="nv-roundtrip-")
 pvs.LoadPlugin(sys.argv[1], ns={})
 import NarrowVolumeScanReaders as scan_readers  # noqa: E402  (loaded by the plugin)
 

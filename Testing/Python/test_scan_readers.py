@@ -24,7 +24,6 @@ import os
 import shutil
 import subprocess
 import sys
-import tempfile
 
 import numpy as np
 import paraview.simple as pvs
@@ -38,7 +37,7 @@ import nvtesting
 
 plugin = sys.argv[1]
 t = nvtesting.Checker("test_scan_readers")
-folder = tempfile.mkdtemp(prefix="nv-scan-")
+folder = nvtesting.scratch_folder(prefix="nv-scan-")
 pvs.LoadPlugin(plugin, ns=globals())
 import NarrowVolumeScanReaders as readers  # noqa: E402  (loaded by the plugin)
 

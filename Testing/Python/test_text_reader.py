@@ -4,7 +4,6 @@
 columns users' files carry, straight into the filter; malformed files give
 a clear error naming the line."""
 import os
-import tempfile
 
 import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
@@ -15,7 +14,7 @@ import nvpointfiles
 import nvtesting
 
 t = nvtesting.Checker("test_text_reader")
-folder = tempfile.mkdtemp(prefix="nv-text-")
+folder = nvtesting.scratch_folder(prefix="nv-text-")
 xyz = nvtesting.sphere_points(400, 0.5)
 
 
