@@ -68,6 +68,7 @@ AllenCahnSolver::AllenCahnSolver(const NarrowBand& band, const Parameters& param
       const double c = dt * g / (h * h);
       this->Coupling[s] = c / (1.0 + 6.0 * c);
       this->Decay[s] = std::exp(-2.0 * g * dt / (eps * eps));
+      this->Previous[s] = phi0; // first touch here; each step sets it again
     }
   });
   if (parameters.PreserveOffset)
@@ -107,7 +108,11 @@ double AllenCahnSolver::HalfSweep(std::int64_t begin, std::int64_t end)
 int AllenCahnSolver::Diffuse(double* lastChange)
 {
   const std::int64_t size = this->Band.Size();
-  std::copy(this->Phi.begin(), this->Phi.begin() + size, this->Previous.begin());
+  double* previous = this->Previous.data();
+  const double* phi = this->Phi.data();
+  ParallelFor(0, size, Grain, [&](std::int64_t begin, std::int64_t end) {
+    std::copy(phi + begin, phi + end, previous + begin);
+  });
   // Red nodes only read black neighbours and vice versa, so each half sweep
   // is order-independent and runs in parallel with identical results. In a
   // distributed run each process sweeps its owned nodes and then refreshes
@@ -171,9 +176,9 @@ void AllenCahnSolver::React()
 
 void AllenCahnSolver::ReleaseWorkspace()
 {
-  std::vector<double>().swap(this->Previous);
-  std::vector<double>().swap(this->Coupling);
-  std::vector<double>().swap(this->Decay);
+  SolverValues().swap(this->Previous);
+  SolverValues().swap(this->Coupling);
+  SolverValues().swap(this->Decay);
 }
 
 template <typename Fn>

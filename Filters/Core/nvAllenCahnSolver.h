@@ -11,6 +11,8 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <new>
+#include <utility>
 #include <vector>
 
 namespace nv
@@ -19,6 +21,36 @@ class DriftCorrection;
 class Halo;
 class Monitor;
 struct NarrowBand;
+
+/// std::allocator, but resize() leaves new doubles unset instead of zeroing
+/// them: the solver's arrays are first written by its parallel loops, so each
+/// thread touches (and the kernel places) its own pages, and no single thread
+/// zeroes gigabytes first.
+template <typename T>
+struct UninitializedAllocator : std::allocator<T>
+{
+  template <typename U>
+  struct rebind
+  {
+    using other = UninitializedAllocator<U>;
+  };
+  UninitializedAllocator() = default;
+  template <typename U>
+  UninitializedAllocator(const UninitializedAllocator<U>&) noexcept
+  {
+  }
+  template <typename U>
+  void construct(U* p) noexcept
+  {
+    ::new (static_cast<void*>(p)) U;
+  }
+  template <typename U, typename... Args>
+  void construct(U* p, Args&&... args)
+  {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+};
+using SolverValues = std::vector<double, UninitializedAllocator<double>>;
 
 /// What happened in one time step.
 struct StepReport
@@ -91,9 +123,9 @@ private:
   Halo* Exchange = nullptr;
   Parameters Params;
   std::vector<double> Phi;      ///< L + 2 values
-  std::vector<double> Previous; ///< phi^n, the right-hand side of (10)
-  std::vector<double> Coupling; ///< w_s = c_s / (1 + 6 c_s), c_s = dt g_s / h^2
-  std::vector<double> Decay;    ///< exp(-2 g_s dt / eps^2)
+  SolverValues Previous; ///< phi^n, the right-hand side of (10)
+  SolverValues Coupling; ///< w_s = c_s / (1 + 6 c_s), c_s = dt g_s / h^2
+  SolverValues Decay;    ///< exp(-2 g_s dt / eps^2)
   std::unique_ptr<DriftCorrection> Correction; ///< with PreserveOffset only
 };
 
