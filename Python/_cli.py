@@ -57,13 +57,14 @@ def _vtk_class(module, name):
     return getattr(importlib.import_module("vtkmodules." + module), name)
 
 
-def _errors_of(algorithm):
-    """Collects the error messages of a VTK algorithm instead of printing them."""
+def _errors_of(algorithm, event="ErrorEvent"):
+    """Collects the error (or warning) messages of a VTK algorithm instead of
+    printing them."""
     from vtkmodules.util.misc import calldata_type
     from vtkmodules.util.vtkConstants import VTK_STRING
 
     errors = []
-    algorithm.AddObserver("ErrorEvent", calldata_type(VTK_STRING)(lambda caller, event, text: errors.append(text)))
+    algorithm.AddObserver(event, calldata_type(VTK_STRING)(lambda caller, event, text: errors.append(text)))
     return errors
 
 
@@ -98,21 +99,33 @@ def read_cloud(path):
     extension = os.path.splitext(path)[1].lower()
     import narrowvolume
 
+    # The CMake build's package has the project's readers (None in the wheel).
+    ours = {".las": narrowvolume.vtkLASPointCloudReader, ".pcd": narrowvolume.vtkPCDPointCloudReader}
     if extension in TEXT or (extension == ".pts" and narrowvolume.vtkPointCloudTextReader is not None):
         if narrowvolume.vtkPointCloudTextReader is None:
             return _read_text(path)
         reader = narrowvolume.vtkPointCloudTextReader()
+    elif ours.get(extension) is not None:
+        reader = ours[extension]()
+    elif extension in ours:
+        raise Failure("%s: %s files need the CMake build's package (pvpython -m narrowvolume), whose readers "
+                      "are C++ VTK modules" % (path, extension))
     elif extension in READERS:
         reader = _vtk_class(*READERS[extension])()
     else:
         raise Failure("%s: unknown cloud format %r; known: %s" % (
             path, extension, " ".join(sorted(set(READERS) | set(TEXT)))))
     reader.SetFileName(path)
+    from ._reconstruct import _message_of
+
     errors = _errors_of(reader)
+    warnings = _errors_of(reader, "WarningEvent")  # vtkPLYReader reports an unreadable file as a warning
     reader.Update()
     data = reader.GetOutputDataObject(0)
     if errors:
-        raise Failure("%s: %s" % (path, errors[-1].strip()))
+        raise Failure("%s: %s" % (path, _message_of(errors[-1])))
+    if warnings and (data is None or data.GetNumberOfPoints() == 0):
+        raise Failure("%s: %s" % (path, _message_of(warnings[-1])))
     from vtkmodules.vtkCommonDataModel import vtkPointSet
     if not isinstance(data, vtkPointSet):
         raise Failure("%s: holds a %s, not a point set" % (path, data.GetClassName() if data else "nothing"))

@@ -181,7 +181,13 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
         bounds = (1.0, 0.0, 1.0, 0.0, 1.0, 0.0)
         if data is not None and data.GetNumberOfPoints() > 0:
             bounds = data.GetBounds()
-        sampling = self._measure_sampling(data)
+        try:
+            sampling = self._measure_sampling(data)
+        except (KeyboardInterrupt, Exception) as error:  # RequestData reports the run's own errors
+            self._sampled = None
+            volume_info.Set(sddp.WHOLE_EXTENT(), (0, -1, 0, -1, 0, -1), 6)
+            self._error("%s while measuring the points' spacing: %s" % (type(error).__name__, error))
+            return 0
         plan = _core.MakePlan(self._settings, list(bounds), sampling.Statistics())
         if not plan.Valid():
             volume_info.Set(sddp.WHOLE_EXTENT(), (0, -1, 0, -1, 0, -1), 6)  # RequestData says why
@@ -227,6 +233,9 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
         except KeyboardInterrupt:
             self._error("Interrupted (Ctrl-C): the outputs are empty.")
             summary = None
+        except Exception as error:  # e.g. MemoryError: reported as the C++ filter reports its errors
+            self._error("%s: %s; the outputs are empty." % (type(error).__name__, error))
+            summary = None
         if summary is None:
             volume.Initialize()
             surface.Initialize()
@@ -242,7 +251,10 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
         monitor = _core.Monitor(report=self.UpdateProgress, poll=lambda: bool(self.GetAbortExecute()))
         run = _core.Reconstruction(settings, monitor)
         if _core.NeedsDenseVolume(settings):
-            run.RequestVolume(settings.OutputInitialPhi, settings.OutputDistance, settings.OutputNarrowBand)
+            # The optional arrays belong to the volume output: none without it.
+            volume_on = bool(settings.OutputVolume)
+            run.RequestVolume(volume_on and settings.OutputInitialPhi, volume_on and settings.OutputDistance,
+                              volume_on and settings.OutputNarrowBand)
         if not run.Run(_points_of(data), self._measure_sampling(data)):
             if run.Error():
                 self._error(run.Error())
@@ -363,12 +375,12 @@ def _add_field_data(volume, summary):
 # --- The properties, made from the table (_properties.py).
 def _convert(prop, value):
     """A value as the C++ setter takes it: clamped like vtkSetClampMacro."""
+    if prop.kind is bool:
+        return bool(value)  # as VTK's wrapping takes any truth value (numpy bools too)
     if prop.kind is float:
         value = float(value)
     else:
         value = operator.index(value)
-        if prop.kind is bool:
-            return bool(value)
     if prop.low is not None and value < prop.low:
         value = prop.low
     elif prop.high is not None and value > prop.high:

@@ -1,6 +1,7 @@
 # SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
 # SPDX-License-Identifier: BSD-3-Clause
 """reconstruct(): the filter in one call, for arrays, VTK and pyvista point sets."""
+import re
 import signal
 import threading
 import warnings
@@ -139,6 +140,11 @@ def reconstruct(points, progress=None, **properties):
     return volume, surface
 
 
+_HEADER = re.compile(r"^\s*(ERROR|Warning|Generic Warning): In .*, line \d+\s*$", re.MULTILINE)
+_SENDER = re.compile(r"^\w+ \(0x[0-9a-fA-F]+\): ", re.MULTILINE)
+
+
 def _message_of(text):
-    """The message of a VTK error or warning text, without a file-and-line header."""
-    return text.strip()
+    """The message of a VTK error or warning text, without VTK's header (the
+    source file and line, the sender's class and address)."""
+    return _SENDER.sub("", _HEADER.sub("", text)).strip()
