@@ -27,8 +27,11 @@ folder = tempfile.mkdtemp(prefix="nv-gui-")
 env = dict(os.environ, NV_PLUGIN=plugin, NV_CLOUD=cloud, NV_SCREENSHOT=os.path.join(folder, "gui.png"),
            NV_GUI_RESULT=os.path.join(folder, "result.json"), NV_FORCE_XVFB="1")
 script = os.path.join(os.path.dirname(os.path.abspath(__file__)), "gui_script.py")
-run = subprocess.run([with_xvfb, "paraview", "--script=" + script], env=env, capture_output=True, text=True,
-                     timeout=300)
+# --dr: the default settings, not the user's. It also keeps the welcome dialog
+# away, which ParaView 6 opens (modal, waiting for a click) while the script's
+# filter reports progress.
+run = subprocess.run([with_xvfb, "paraview", "--dr", "--script=" + script], env=env, capture_output=True,
+                     text=True, timeout=300)
 t.check(os.path.exists(env["NV_GUI_RESULT"]), "the client ran the script: %s" % nvtesting.explain(run))
 if os.path.exists(env["NV_GUI_RESULT"]):
     result = json.load(open(env["NV_GUI_RESULT"]))
