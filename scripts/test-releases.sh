@@ -193,10 +193,10 @@ test_flavour() {
   fi
   local build_time=$((SECONDS - start))
   local cache="$root/nv/$build/CMakeCache.txt" paraview="" vtk_dir vtk
-  vtk_dir="$(sed -n 's/^VTK_DIR:PATH=//p' "$cache")"
+  vtk_dir="$(sed -n 's/^VTK_DIR:[A-Z]*=//p' "$cache")"
   vtk="VTK $(version_of "$root$vtk_dir/vtk-config-version.cmake")"
   if grep -q '^NARROWVOLUME_BUILD_PLUGIN:BOOL=ON' "$cache"; then
-    paraview="ParaView $(version_of "$root$(sed -n 's/^ParaView_DIR:PATH=//p' "$cache")/paraview-config-version.cmake"), "
+    paraview="ParaView $(version_of "$root$(sed -n 's/^ParaView_DIR:[A-Z]*=//p' "$cache")/paraview-config-version.cmake"), "
   fi
   log "$name: ctest (log: $prefix-ctest.log)"
   start=$SECONDS
