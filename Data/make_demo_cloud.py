@@ -13,7 +13,7 @@ import sys
 import numpy as np
 from vtkmodules.util.numpy_support import numpy_to_vtk
 from vtkmodules.vtkCommonCore import vtkPoints
-from vtkmodules.vtkCommonDataModel import vtkPolyData
+from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
 from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
 
 
@@ -40,6 +40,11 @@ def main(path):
     points.SetData(numpy_to_vtk(xyz, deep=1))
     cloud = vtkPolyData()
     cloud.SetPoints(points)
+    # One vertex cell per point, so that ParaView draws the cloud as it opens.
+    vertices = vtkCellArray()
+    vertices.SetData(numpy_to_vtk(np.arange(len(xyz) + 1, dtype=np.int64), deep=1),
+                     numpy_to_vtk(np.arange(len(xyz), dtype=np.int64), deep=1))
+    cloud.SetVerts(vertices)
     writer = vtkXMLPolyDataWriter()
     writer.SetFileName(path)
     writer.SetInputData(cloud)

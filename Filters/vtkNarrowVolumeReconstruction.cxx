@@ -3,9 +3,14 @@
 #include "vtkNarrowVolumeReconstruction.h"
 
 #include "nvParallel.h"
+#include "nvPieces.h"
 #include "nvReconstruction.h"
+#include "nvSampling.h"
 #include "nvSheets.h"
+#include "nvSurface.h"
+#include "nvSurfaceField.h"
 #include "vtkNarrowVolumeCommunicator.h"
+#include "vtkNarrowVolumePieces.h"
 #include "vtkNarrowVolumeSurface.h"
 
 #include "vtkAlgorithmOutput.h"
@@ -25,6 +30,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
+#include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -102,6 +108,19 @@ std::vector<double> PointsOf(vtkPointSet* input)
   return xyz;
 }
 
+/// Runs fn with NumberOfThreads threads, and all cores when the process-wide
+/// backend is Sequential (the default of Debian's ParaView).
+template <class Function>
+void WithThreads(int threads, Function fn)
+{
+  std::string backend = vtkSMPTools::GetBackend() ? vtkSMPTools::GetBackend() : "Sequential";
+  if (backend == "Sequential")
+  {
+    backend = "STDThread";
+  }
+  vtkSMPTools::LocalScope(vtkSMPTools::Config{ threads, backend, false }, fn);
+}
+
 /// MemoryLimit (MiB; 0: half the physical memory) in bytes.
 double MemoryLimitBytes(double limitMiB)
 {
@@ -114,18 +133,26 @@ double MemoryLimitBytes(double limitMiB)
   return limitMiB * 1048576.0;
 }
 
-/// An array of `nodes` values named `name`, attached to the volume; its values.
+/// An array of `nodes` values named `name`.
 template <class ArrayType>
-auto* AddArray(vtkImageData* volume, const char* name, vtkIdType nodes)
+vtkSmartPointer<ArrayType> NewArray(const char* name, vtkIdType nodes)
 {
-  vtkNew<ArrayType> array;
+  auto array = vtkSmartPointer<ArrayType>::New();
   array->SetName(name);
   array->SetNumberOfTuples(nodes);
-  volume->GetPointData()->AddArray(array);
-  return array->GetPointer(0);
+  return array;
 }
 
 } // namespace
+
+/// The dense arrays of the volume piece (null: not asked for).
+struct vtkNarrowVolumeReconstruction::DenseArrays
+{
+  vtkSmartPointer<vtkFloatArray> Phi;
+  vtkSmartPointer<vtkFloatArray> InitialPhi;
+  vtkSmartPointer<vtkFloatArray> Distance;
+  vtkSmartPointer<vtkUnsignedCharArray> Band;
+};
 
 //------------------------------------------------------------------------------
 vtkNarrowVolumeReconstruction::vtkNarrowVolumeReconstruction()
@@ -227,6 +254,8 @@ nv::Settings vtkNarrowVolumeReconstruction::GetSettings() const
   settings.GaussSeidelTolerance = this->GaussSeidelTolerance;
   settings.Mode = this->Domain == WHOLE_DOMAIN ? nv::Domain::WholeDomain : nv::Domain::NarrowBand;
   settings.EdgeFunction = this->EdgeStoppingFunction == EQUATION_3 ? nv::EdgeStopping::Eq3 : nv::EdgeStopping::Eq4;
+  settings.RemoveSmallPieces = this->RemoveSmallPieces;
+  settings.PreserveOffset = this->PreserveOffset;
   // phi, the optional arrays, and the isosurfacer's working memory.
   settings.OutputBytesPerNode = this->OutputVolume ? 4.0 + (this->OutputInitialPhi ? 4.0 : 0.0) +
       (this->OutputDistance ? 4.0 : 0.0) + (this->OutputNarrowBand ? 1.0 : 0.0) + 2.0
@@ -258,18 +287,21 @@ int vtkNarrowVolumeReconstruction::RequestInformation(
       several ? this->Controller->GetNumberOfProcesses() : 1);
     request->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
     connection->GetProducer()->Update(connection->GetIndex(), requests);
-    vtkPointSet* input = vtkPointSet::GetData(inputVector[0], 0);
-    if (input && input->GetNumberOfPoints() > 0)
-    {
-      input->GetBounds(bounds);
-    }
   }
+  vtkPointSet* input = vtkPointSet::GetData(inputVector[0], 0);
+  if (input && input->GetNumberOfPoints() > 0)
+  {
+    input->GetBounds(bounds);
+  }
+  std::unique_ptr<vtkNarrowVolumeCommunicator> communicator;
   if (several)
   {
-    vtkNarrowVolumeCommunicator communicator(this->Controller);
-    nv::GlobalBounds(communicator, bounds);
+    communicator.reset(new vtkNarrowVolumeCommunicator(this->Controller));
+    nv::GlobalBounds(*communicator, bounds);
   }
-  const nv::Plan plan = nv::MakePlan(this->GetSettings(), bounds);
+  std::shared_ptr<const nv::Sampling> sampling;
+  WithThreads(this->NumberOfThreads, [&]() { sampling = this->MeasureSampling(input, communicator.get()); });
+  const nv::Plan plan = nv::MakePlan(this->GetSettings(), bounds, sampling->Statistics());
   if (!plan.Valid())
   {
     // No grid: RequestData says why.
@@ -315,6 +347,8 @@ int vtkNarrowVolumeReconstruction::RequestData(
   volume->Initialize();
   surface->Initialize();
   this->RelativeChanges.clear();
+  this->OffsetDistanceUsed = this->SampleSpacingUsed = this->MedianPointSpacing = this->LargestGap = 0.0;
+  this->Gaps = this->RemovedPieces = this->RemovedVoids = 0;
   this->NumberOfBandNodes = 0;
   this->NumberOfGridNodes = 0;
   this->SetupTime = this->EvolutionTime = this->OutputTime = 0.0;
@@ -334,19 +368,37 @@ int vtkNarrowVolumeReconstruction::RequestData(
     communicator.reset(new vtkNarrowVolumeCommunicator(this->Controller));
   }
 
-  // Run, with all cores when the process-wide backend is Sequential.
-  std::string backend = vtkSMPTools::GetBackend() ? vtkSMPTools::GetBackend() : "Sequential";
-  if (backend == "Sequential")
-  {
-    backend = "STDThread";
-  }
   bool ok = false;
-  vtkSMPTools::LocalScope(vtkSMPTools::Config{ this->NumberOfThreads, backend, false }, [&]() {
+  WithThreads(this->NumberOfThreads, [&]() {
     FilterMonitor monitor(this);
     nv::Settings settings = this->GetSettings();
     settings.MemoryLimitBytes = MemoryLimitBytes(this->MemoryLimit);
     nv::Reconstruction run(settings, communicator.get(), &monitor);
-    if (!run.Run(PointsOf(vtkPointSet::GetData(inputVector[0], 0))))
+    // The dense arrays, filled by the run: for output 0, or for keeping one
+    // sheet (KeepSheets works on the whole grid, so not when distributed).
+    DenseArrays dense;
+    if (this->OutputVolume || (this->Sheets != BOTH_SHEETS && !distributed))
+    {
+      const std::int64_t ghosts = distributed && this->OutputVolume
+        ? outputVector->GetInformationObject(0)->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS())
+        : 0;
+      run.RequestVolume(ghosts, [&](std::int64_t kBegin, std::int64_t kEnd) {
+        const vtkIdType nodes = static_cast<vtkIdType>(run.GetGrid().Dims[0] * run.GetGrid().Dims[1] * (kEnd - kBegin));
+        const bool volume = this->OutputVolume;
+        dense.Phi = NewArray<vtkFloatArray>("phi", nodes);
+        dense.InitialPhi = volume && this->OutputInitialPhi ? NewArray<vtkFloatArray>("InitialPhi", nodes) : nullptr;
+        dense.Distance = volume && this->OutputDistance ? NewArray<vtkFloatArray>("Distance", nodes) : nullptr;
+        dense.Band = volume && this->OutputNarrowBand ? NewArray<vtkUnsignedCharArray>("NarrowBand", nodes) : nullptr;
+        nv::VolumeArrays arrays;
+        arrays.Phi = dense.Phi->GetPointer(0);
+        arrays.InitialPhi = dense.InitialPhi ? dense.InitialPhi->GetPointer(0) : nullptr;
+        arrays.Distance = dense.Distance ? dense.Distance->GetPointer(0) : nullptr;
+        arrays.Band = dense.Band ? dense.Band->GetPointer(0) : nullptr;
+        return arrays;
+      });
+    }
+    vtkPointSet* input = vtkPointSet::GetData(inputVector[0], 0);
+    if (!run.Run(PointsOf(input), this->MeasureSampling(input, communicator.get())))
     {
       if (!run.Error().empty())
       {
@@ -359,17 +411,26 @@ int vtkNarrowVolumeReconstruction::RequestData(
     this->RelativeChanges = run.RelativeChanges();
     this->SetupTime = run.SetupSeconds();
     this->EvolutionTime = run.EvolutionSeconds();
+    this->OffsetDistanceUsed = run.GetParameters().OffsetDistance;
+    this->SampleSpacingUsed = run.GetGrid().Spacing;
+    this->MedianPointSpacing = run.GetSampling().MedianSpacing;
+    this->Gaps = run.GetGaps().Gaps;
+    this->LargestGap = run.GetGaps().LargestGap;
+    std::copy(run.GetGaps().LargestGapCenter.begin(), run.GetGaps().LargestGapCenter.end(), this->LargestGapCenter);
     const auto start = std::chrono::steady_clock::now();
     bool explained = false;
-    ok = this->ProduceOutputs(
-      run, monitor, outputVector->GetInformationObject(0), volume, surface, distributed, explained);
+    ok = this->ProduceOutputs(run, monitor, dense, volume, surface, distributed, explained);
     this->OutputTime = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     ok = !run.Anywhere(!ok); // every process, whatever stage it stopped in
     const double surfacePoints = run.SumAll(static_cast<double>(surface->GetNumberOfPoints()));
+    if (ok)
+    {
+      this->WarnAboutGaps(!communicator || communicator->Rank() == 0);
+    }
     if (ok && surfacePoints == 0 && !explained && (!communicator || communicator->Rank() == 0))
     {
       vtkWarningMacro("The surface is empty: the shell did not survive the evolution. The offset distance ("
-        << this->OffsetDistance << ") is probably small against the gaps between points or the grid spacing ("
+        << this->OffsetDistanceUsed << ") is probably small against the gaps between points or the grid spacing ("
         << run.GetGrid().Spacing << "): increase OffsetDistance or XiCells, or refine the grid.");
     }
   });
@@ -386,7 +447,7 @@ int vtkNarrowVolumeReconstruction::RequestData(
 
 //------------------------------------------------------------------------------
 bool vtkNarrowVolumeReconstruction::ProduceOutputs(nv::Reconstruction& run, nv::Monitor& monitor,
-  vtkInformation* volumeInfo, vtkImageData* volume, vtkPolyData* surface, bool distributed, bool& explained)
+  const DenseArrays& dense, vtkImageData* volume, vtkPolyData* surface, bool distributed, bool& explained)
 {
   const nv::Grid& grid = run.GetGrid();
   if (run.EmptyPiece())
@@ -394,98 +455,84 @@ bool vtkNarrowVolumeReconstruction::ProduceOutputs(nv::Reconstruction& run, nv::
     return true;
   }
   // Output 0: the volume, this process's piece of it (its geometry always,
-  // its arrays on request), with ghost layers if the pipeline asks.
-  const std::int64_t ghosts = distributed && this->OutputVolume
-    ? volumeInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS())
-    : 0;
-  const std::int64_t volumeBegin = std::max(run.ComputedBegin(), run.PieceBegin() - ghosts);
-  const std::int64_t volumeEnd = std::min(run.ComputedEnd(), run.PieceEnd() + ghosts);
+  // its arrays on request), with ghost layers if the pipeline asked.
+  const std::int64_t volumeBegin = dense.Phi ? run.VolumeBegin() : run.PieceBegin();
+  const std::int64_t volumeEnd = dense.Phi ? run.VolumeEnd() : run.PieceEnd();
   volume->SetOrigin(grid.Origin[0], grid.Origin[1], grid.Origin[2]);
   volume->SetSpacing(grid.Spacing, grid.Spacing, grid.Spacing);
   volume->SetExtent(0, static_cast<int>(grid.Dims[0] - 1), 0, static_cast<int>(grid.Dims[1] - 1),
     static_cast<int>(volumeBegin), static_cast<int>(volumeEnd - 1));
-  if (!this->OutputVolume && (this->Sheets == BOTH_SHEETS || distributed))
-  {
-    // Output 1 without a dense volume: slab by slab.
-    monitor.Stage(0.65, 0.35);
-    surface->ShallowCopy(nv::ExtractSurfaceBySlabs(run.GetDistance(), run.GetBand(), run.GetPhi(),
-      run.GetParameters(), &monitor, run.PieceBegin(), run.PieceEnd()));
-    return !monitor.Aborted(); // the slabs stop early: a partial surface is no result
-  }
-  const vtkIdType layerNodes = static_cast<vtkIdType>(grid.Dims[0] * grid.Dims[1]);
-  const vtkIdType nodes = layerNodes * (volumeEnd - volumeBegin);
-  vtkNew<vtkFloatArray> phi;
-  phi->SetName("phi");
-  phi->SetNumberOfTuples(nodes);
-  nv::VolumeArrays arrays;
-  arrays.Phi = phi->GetPointer(0);
   if (this->OutputVolume)
   {
-    volume->GetPointData()->SetScalars(phi);
-    if (this->OutputInitialPhi)
+    volume->GetPointData()->SetScalars(dense.Phi);
+    for (vtkDataArray* array : { static_cast<vtkDataArray*>(dense.InitialPhi), static_cast<vtkDataArray*>(dense.Distance),
+           static_cast<vtkDataArray*>(dense.Band) })
     {
-      arrays.InitialPhi = AddArray<vtkFloatArray>(volume, "InitialPhi", nodes);
+      if (array)
+      {
+        volume->GetPointData()->AddArray(array);
+      }
     }
-    if (this->OutputDistance)
+    if (volumeBegin < run.PieceBegin() || volumeEnd > run.PieceEnd())
     {
-      arrays.Distance = AddArray<vtkFloatArray>(volume, "Distance", nodes);
+      // The piece without its ghost layers; the last node layer is shared
+      // with the next piece, which owns the cells above it.
+      int piece[6] = { 0, static_cast<int>(grid.Dims[0] - 1), 0, static_cast<int>(grid.Dims[1] - 1),
+        static_cast<int>(run.PieceBegin()), static_cast<int>(run.PieceEnd() - 1) };
+      volume->GenerateGhostArray(piece);
     }
-    if (this->OutputNarrowBand)
-    {
-      arrays.Band = AddArray<vtkUnsignedCharArray>(volume, "NarrowBand", nodes);
-    }
-  }
-  else
-  {
-    vtkWarningMacro("Keeping one sheet needs the dense grid: memory follows the box although "
-                    "OutputVolume is off.");
-  }
-  monitor.Stage(0.65, 0.15);
-  run.FillVolume(arrays, volumeBegin, volumeEnd);
-  if (monitor.Aborted())
-  {
-    return false;
-  }
-  if (volumeBegin < run.PieceBegin() || volumeEnd > run.PieceEnd())
-  {
-    // The piece without its ghost layers; the last node layer is shared with
-    // the next piece, which owns the cells above it.
-    int piece[6] = { 0, static_cast<int>(grid.Dims[0] - 1), 0, static_cast<int>(grid.Dims[1] - 1),
-      static_cast<int>(run.PieceBegin()), static_cast<int>(run.PieceEnd() - 1) };
-    volume->GenerateGhostArray(piece);
   }
 
-  // Output 1: the phi = 0 surfaces of the piece (without its ghost layers),
-  // all or some of them. Choosing sheets works on a copy: phi stays phi.
-  monitor.Stage(0.8, 0.2);
-  vtkNew<vtkFloatArray> contoured;
-  contoured->SetArray(arrays.Phi + layerNodes * (run.PieceBegin() - volumeBegin),
-    layerNodes * (run.PieceEnd() - run.PieceBegin()), 1); // borrowed
-  if (this->Sheets != BOTH_SHEETS)
+  // Output 1: the phi = 0 surfaces of the piece, from the band; or, to keep
+  // some of them, from a copy of the dense phi (phi stays phi).
+  monitor.Stage(0.65, 0.35);
+  nv::PolyDataSink sink;
+  bool done = true;
+  if (this->Sheets == BOTH_SHEETS || distributed)
   {
-    if (distributed)
+    if (this->Sheets != BOTH_SHEETS)
     {
       vtkWarningMacro("Keeping one sheet needs the whole grid on one process: both sheets are "
                       "output in a distributed run.");
     }
-    else
+    done = run.ExtractSurface(sink);
+  }
+  else
+  {
+    if (!this->OutputVolume)
     {
-      vtkNew<vtkFloatArray> copy;
-      copy->DeepCopy(phi);
-      contoured->ShallowCopy(copy);
-      const std::int64_t cavities = nv::KeepSheets(
-        grid, contoured->GetPointer(0), this->Sheets == OUTER_SHEET ? nv::Sheets::Outer : nv::Sheets::Inner);
-      explained = this->Sheets == INNER_SHEETS && cavities == 0;
-      if (explained)
-      {
-        vtkWarningMacro("There is no inner sheet: the shell encloses no cavity, so its two sheets join "
-                        "into one. The input's surface is open (a one-sided scan, or holes wider than "
-                        "twice the offset distance); its shell has only an outer sheet.");
-      }
+      vtkWarningMacro("Keeping one sheet needs the dense grid: memory follows the box although "
+                      "OutputVolume is off.");
+    }
+    std::vector<float> phi(dense.Phi->GetPointer(0), dense.Phi->GetPointer(0) + dense.Phi->GetNumberOfValues());
+    const std::int64_t cavities =
+      nv::KeepSheets(grid, phi.data(), this->Sheets == OUTER_SHEET ? nv::Sheets::Outer : nv::Sheets::Inner);
+    explained = this->Sheets == INNER_SHEETS && cavities == 0;
+    if (explained)
+    {
+      vtkWarningMacro("There is no inner sheet: the shell encloses no cavity, so its two sheets join "
+                      "into one. The input's surface is open (a one-sided scan, or holes wider than "
+                      "twice the offset distance); its shell has only an outer sheet.");
+    }
+    const nv::DenseField field(grid, phi.data(), 0, grid.Dims[2], run.GetParameters());
+    done = nv::ContourBricks(grid, field, sink, 0, -1, &monitor);
+  }
+  surface->ShallowCopy(sink.Finish());
+  if (done && this->RemoveSmallPieces && !distributed && !monitor.Aborted())
+  {
+    // The surface's small parts go, and phi follows in the same regions.
+    const double offset = run.GetParameters().OffsetDistance;
+    std::vector<nv::DroppedPart> dropped;
+    const nv::RemovedPieces removed = nv::RemoveSmallSurfacePieces(surface, offset, dense.Phi ? &dropped : nullptr);
+    this->RemovedPieces = removed.Pieces;
+    this->RemovedVoids = removed.Voids;
+    for (const nv::DroppedPart& part : dropped)
+    {
+      nv::FlipRegion(grid, dense.Phi->GetPointer(0), volumeBegin, volumeEnd - volumeBegin, part.Vertex.data(),
+        part.Piece, 2.0 * (part.Piece ? nv::SmallPieceVolume(offset) : nv::SmallVoidVolume(offset)));
     }
   }
-  surface->ShallowCopy(nv::ExtractSurface(grid, contoured, run.PieceBegin(), run.PieceEnd(), &monitor));
-  return !monitor.Aborted();
+  return done && !monitor.Aborted();
 }
 
 //------------------------------------------------------------------------------
@@ -507,13 +554,73 @@ void vtkNarrowVolumeReconstruction::AddRunSummary(vtkImageData* volume)
   volume->GetFieldData()->AddArray(iterations);
   volume->GetFieldData()->AddArray(bandNodes);
   volume->GetFieldData()->AddArray(changes);
+  auto addValues = [volume](const char* name, std::initializer_list<double> values) {
+    vtkNew<vtkDoubleArray> array;
+    array->SetName(name);
+    array->SetNumberOfComponents(static_cast<int>(values.size()));
+    array->InsertNextTuple(values.begin());
+    volume->GetFieldData()->AddArray(array);
+  };
+  addValues("OffsetDistance", { this->OffsetDistanceUsed });
+  addValues("SampleSpacing", { this->SampleSpacingUsed });
+  addValues("MedianPointSpacing", { this->MedianPointSpacing });
+  addValues("NumberOfGaps", { static_cast<double>(this->Gaps) });
+  addValues("LargestGap", { this->LargestGap });
+  addValues("LargestGapCenter", { this->LargestGapCenter[0], this->LargestGapCenter[1], this->LargestGapCenter[2] });
+  addValues("RemovedPieces", { static_cast<double>(this->RemovedPieces) });
+  addValues("RemovedVoids", { static_cast<double>(this->RemovedVoids) });
+}
+
+//------------------------------------------------------------------------------
+std::shared_ptr<const nv::Sampling> vtkNarrowVolumeReconstruction::MeasureSampling(
+  vtkPointSet* input, nv::Communicator* communicator)
+{
+  // The same points (object, modification time, count) are measured once:
+  // the information pass and the data pass, and runs that only change
+  // properties, share one measurement.
+  vtkPoints* points = input ? input->GetPoints() : nullptr;
+  const vtkMTimeType time = points ? points->GetMTime() : 0;
+  const vtkIdType count = points ? points->GetNumberOfPoints() : 0;
+  bool stale = !this->Sampled || time != this->SampledTime || count != this->SampledPoints ||
+    (communicator != nullptr) != this->SampledShared;
+  if (communicator)
+  {
+    stale = communicator->MaxAll(stale ? 1.0 : 0.0) > 0.0; // all measure, or none
+  }
+  if (stale)
+  {
+    auto sampling = std::make_shared<nv::Sampling>();
+    sampling->Measure(PointsOf(input), communicator);
+    this->Sampled = sampling;
+    this->SampledTime = time;
+    this->SampledPoints = count;
+    this->SampledShared = communicator != nullptr;
+  }
+  return this->Sampled;
+}
+
+void vtkNarrowVolumeReconstruction::WarnAboutGaps(bool firstProcess)
+{
+  if (this->Gaps == 0 || !firstProcess)
+  {
+    return;
+  }
+  vtkWarningMacro("The cloud has " << this->Gaps << (this->Gaps == 1 ? " gap" : " gaps")
+    << " wider than the offset distance " << this->OffsetDistanceUsed
+    << ": there, points have no neighbour within the offset, so the shell may open (a tunnel through "
+       "its wall, or a loose piece around a point farther than twice the offset from all others). The largest gap is "
+    << this->LargestGap << " wide, at (" << this->LargestGapCenter[0] << ", " << this->LargestGapCenter[1] << ", "
+    << this->LargestGapCenter[2] << "). To bridge the gaps, set OffsetDistance to at least " << this->LargestGap
+    << ", or fill them with points; loose pieces are dropped by RemoveSmallPieces. Field data NumberOfGaps, "
+       "LargestGap and LargestGapCenter hold these figures.");
 }
 
 //------------------------------------------------------------------------------
 void vtkNarrowVolumeReconstruction::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "OffsetDistance: " << this->OffsetDistance << "\n";
+  os << indent << "OffsetDistance: " << this->OffsetDistance << (this->OffsetDistance == 0.0 ? " (automatic)" : "")
+     << "\n";
   os << indent << "SampleSpacing: " << this->SampleSpacing << "\n";
   os << indent << "MaximumDimension: " << this->MaximumDimension << "\n";
   os << indent << "XiCells: " << this->XiCells << "\n";
@@ -524,7 +631,9 @@ void vtkNarrowVolumeReconstruction::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "GaussSeidelTolerance: " << this->GaussSeidelTolerance << "\n";
   os << indent << "Domain: " << (this->Domain == WHOLE_DOMAIN ? "Whole Domain" : "Narrow Band") << "\n";
   os << indent << "EdgeStoppingFunction: eq. (" << this->EdgeStoppingFunction << ")\n";
+  os << indent << "PreserveOffset: " << this->PreserveOffset << "\n";
   os << indent << "Sheets: " << this->Sheets << "\n";
+  os << indent << "RemoveSmallPieces: " << this->RemoveSmallPieces << "\n";
   os << indent << "OutputVolume: " << this->OutputVolume << "\n";
   os << indent << "OutputInitialPhi: " << this->OutputInitialPhi << "\n";
   os << indent << "OutputDistance: " << this->OutputDistance << "\n";

@@ -17,12 +17,23 @@
  * at distance l on either side of the points.
  *
  * Input: any vtkPointSet (only its points are used).
+ *
+ * With only the input set, the offset and the grid follow the cloud's
+ * sampling: l from the distances between neighbouring points, so that the
+ * shell closes where the sampling allows and keeps detail near the sampling
+ * scale, and h = l / 4 (see OffsetDistance and SampleSpacing). A warning
+ * names the gaps wider than l, where the shell may open.
  * Output port 0 (vtkImageData): point array "phi" (float, in [-1, 1]), and on
  * request "InitialPhi" (eq. 2), "Distance" (eq. 6) and "NarrowBand" (1 on
- * band nodes). Its field data holds "NumberOfIterations", "NarrowBandNodes"
- * and "RelativeChange" (one value per time step).
- * Output port 1 (vtkPolyData): the phi = 0 surfaces, by vtkFlyingEdges3D,
- * with point normals.
+ * band nodes). Its field data holds "NumberOfIterations", "NarrowBandNodes",
+ * "RelativeChange" (one value per time step), the "OffsetDistance" and
+ * "SampleSpacing" used, the cloud's "MedianPointSpacing", the gaps
+ * ("NumberOfGaps", "LargestGap", "LargestGapCenter") and the small pieces
+ * removed ("RemovedPieces", "RemovedVoids").
+ * Output port 1 (vtkPolyData): the phi = 0 surfaces, with point normals out
+ * of the shell, contoured by marching cubes in the band's bricks from the
+ * signed distance that phi implies, sqrt(2) xi atanh(phi) (same zero set,
+ * not saturated: smooth surfaces come out smooth); closed and manifold.
  *
  * @warning
  * The work runs in parallel with vtkSMPTools. When the process-wide backend is
@@ -46,12 +57,16 @@
 #include "NarrowVolumeFiltersModule.h" // for export macro
 #include "vtkAlgorithm.h"
 
+#include <cstdint> // for the counts
+#include <memory> // for the cached sampling
 #include <vector> // for the per-step history
 
 namespace nv
 {
+class Communicator;
 class Monitor;
 class Reconstruction;
+class Sampling;
 struct Settings;
 }
 
@@ -83,7 +98,11 @@ public:
   ///@{
   /**
    * Offset distance l in world units: the half-thickness of the shell, the
-   * distance of both phi = 0 sheets from the points. Must be > 0. Default 0.1.
+   * distance of both phi = 0 sheets from the points. 0 (the default) chooses
+   * it from the cloud: l = max(1.5 m, q), where m is the median and q the
+   * 99.9th percentile of the distances from each point to its nearest
+   * neighbour (at least 4 h when the grid is capped, see SampleSpacing).
+   * GetOffsetDistanceUsed() tells the value of the last run.
    */
   vtkSetMacro(OffsetDistance, double);
   vtkGetMacro(OffsetDistance, double);
@@ -91,8 +110,10 @@ public:
 
   ///@{
   /**
-   * Grid spacing h in world units. When <= 0 (the default), h is chosen so
-   * that the longest side of the padded box has MaximumDimension cells.
+   * Grid spacing h in world units. When <= 0 (the default), h comes from
+   * MaximumDimension, or, when that is 0 too, h = l / 4 (the paper's ratio)
+   * with at most 320 cells along the longest side of the padded box.
+   * GetSampleSpacingUsed() tells the value of the last run.
    */
   vtkSetMacro(SampleSpacing, double);
   vtkGetMacro(SampleSpacing, double);
@@ -101,9 +122,10 @@ public:
   ///@{
   /**
    * Number of cells along the longest side of the padded box when
-   * SampleSpacing <= 0. Default 100.
+   * SampleSpacing <= 0 (at least 16); 0 (the default): h follows l, see
+   * SampleSpacing.
    */
-  vtkSetClampMacro(MaximumDimension, int, 16, 100000);
+  vtkSetClampMacro(MaximumDimension, int, 0, 100000);
   vtkGetMacro(MaximumDimension, int);
   ///@}
 
@@ -186,6 +208,19 @@ public:
   void SetEdgeStoppingFunctionToEquation4() { this->SetEdgeStoppingFunction(EQUATION_4); }
   ///@}
 
+  ///@{
+  /**
+   * Keep the sheets at the offset distance while they are smoothed: after
+   * each step, the local mean translation of the sheets (their drift by
+   * mean-curvature motion) is cancelled, so that 10 to 20 steps smooth noise
+   * and sampling wrinkles without shrinking curved parts. Off (default):
+   * exactly the paper's scheme. Costs about a third of a step more.
+   */
+  vtkSetMacro(PreserveOffset, bool);
+  vtkGetMacro(PreserveOffset, bool);
+  vtkBooleanMacro(PreserveOffset, bool);
+  ///@}
+
   enum SheetsType
   {
     BOTH_SHEETS = 0,
@@ -218,6 +253,19 @@ public:
   vtkSetMacro(OutputVolume, bool);
   vtkGetMacro(OutputVolume, bool);
   vtkBooleanMacro(OutputVolume, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Whether to remove the small pieces of the shell: loose pieces smaller than
+   * a ball of radius 2 l (the balls around lone points) and voids inside the
+   * wall smaller than a ball of radius l. Field data "RemovedPieces" and
+   * "RemovedVoids" count them. Not applied in a distributed run (a piece may
+   * span processes). Default on.
+   */
+  vtkSetMacro(RemoveSmallPieces, bool);
+  vtkGetMacro(RemoveSmallPieces, bool);
+  vtkBooleanMacro(RemoveSmallPieces, bool);
   ///@}
 
   ///@{
@@ -269,7 +317,8 @@ public:
   ///@{
   /**
    * Results of the last run: time steps taken, band nodes and all grid nodes
-   * (over all processes in a distributed run),
+   * (over all processes in a distributed run), the offset l and spacing h
+   * used (the automatic ones, or those set),
    * the relative change of each step, and wall-clock seconds of the set-up
    * (distance and band), the evolution and the output (volume and surface)
    * on this process.
@@ -278,6 +327,8 @@ public:
   vtkGetMacro(NumberOfBandNodes, vtkIdType);
   vtkGetMacro(NumberOfGridNodes, vtkIdType);
   const std::vector<double>& GetRelativeChanges() const { return this->RelativeChanges; }
+  vtkGetMacro(OffsetDistanceUsed, double);
+  vtkGetMacro(SampleSpacingUsed, double);
   vtkGetMacro(SetupTime, double);
   vtkGetMacro(EvolutionTime, double);
   vtkGetMacro(OutputTime, double);
@@ -322,14 +373,20 @@ protected:
   nv::Settings GetSettings() const;
   /// The volume piece and the surface of a finished run; false if aborted.
   /// explained: a warning already said why the surface is empty.
-  bool ProduceOutputs(nv::Reconstruction& run, nv::Monitor& monitor, vtkInformation* volumeInfo,
+  struct DenseArrays;
+  bool ProduceOutputs(nv::Reconstruction& run, nv::Monitor& monitor, const DenseArrays& dense,
     vtkImageData* volume, vtkPolyData* surface, bool distributed, bool& explained);
-  /// NumberOfIterations, NarrowBandNodes and RelativeChange as field data.
+  /// The run's figures as the volume's field data.
   void AddRunSummary(vtkImageData* volume);
+  /// The sampling of the input's points, measured once per input (collective
+  /// when the processes share the cloud).
+  std::shared_ptr<const nv::Sampling> MeasureSampling(vtkPointSet* input, nv::Communicator* communicator);
+  /// Warns about gaps wider than the offset (on the first process).
+  void WarnAboutGaps(bool firstProcess);
 
-  double OffsetDistance = 0.1;
+  double OffsetDistance = 0.0;
   double SampleSpacing = 0.0;
-  int MaximumDimension = 100;
+  int MaximumDimension = 0;
   double XiCells = 2.0;
   double EpsilonCells = 6.0;
   double TimeStep = 0.0;
@@ -338,7 +395,9 @@ protected:
   double GaussSeidelTolerance = 1e-6;
   int Domain = NARROW_BAND;
   int EdgeStoppingFunction = EQUATION_4;
+  bool PreserveOffset = false;
   int Sheets = BOTH_SHEETS;
+  bool RemoveSmallPieces = true;
   bool OutputVolume = true;
   bool OutputInitialPhi = false;
   bool OutputDistance = false;
@@ -350,6 +409,18 @@ protected:
   vtkIdType NumberOfBandNodes = 0;
   vtkIdType NumberOfGridNodes = 0;
   std::vector<double> RelativeChanges;
+  double OffsetDistanceUsed = 0.0;
+  double SampleSpacingUsed = 0.0;
+  double MedianPointSpacing = 0.0;
+  std::int64_t Gaps = 0;
+  double LargestGap = 0.0;
+  double LargestGapCenter[3] = { 0.0, 0.0, 0.0 };
+  std::int64_t RemovedPieces = 0;
+  std::int64_t RemovedVoids = 0;
+  std::shared_ptr<const nv::Sampling> Sampled; ///< of the input at SampledTime
+  vtkMTimeType SampledTime = 0;
+  vtkIdType SampledPoints = -1;
+  bool SampledShared = false;
   double SetupTime = 0.0;
   double EvolutionTime = 0.0;
   double OutputTime = 0.0;

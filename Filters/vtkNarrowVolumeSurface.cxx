@@ -2,202 +2,79 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkNarrowVolumeSurface.h"
 
-#include "nvNarrowBand.h"
-#include "nvParallel.h"
-#include "nvTruncatedDistance.h"
-#include "nvVolume.h"
-
-#include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
-#include "vtkCommand.h"
-#include "vtkDataArray.h"
-#include "vtkFlyingEdges3D.h"
+#include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkIdTypeArray.h"
-#include "vtkImageData.h"
-#include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 
 #include <algorithm>
-#include <array>
-#include <cstring>
-#include <map>
+#include <type_traits>
 
 namespace nv
 {
 namespace
 {
-using Key = std::array<float, 2>; // (x, y) of a vertex on a shared plane
-
-/// The isosurfacer's progress to the monitor, and the monitor's abort to it.
-void ForwardProgress(vtkObject* caller, unsigned long, void* clientData, void* callData)
+/// Room for n more tuples at the end of the array. The array's own Resize
+/// shrinks to the size asked for, so it is called only when the capacity is
+/// short (it then leaves room for as many again).
+template <class Array>
+auto* Extend(Array* array, vtkIdType n)
 {
-  Monitor* monitor = static_cast<Monitor*>(clientData);
-  monitor->Progress(*static_cast<double*>(callData));
-  if (monitor->Aborted())
+  const vtkIdType components = array->GetNumberOfComponents();
+  const vtkIdType old = array->GetNumberOfTuples();
+  if ((old + n) * components > array->GetSize())
   {
-    vtkAlgorithm::SafeDownCast(caller)->SetAbortExecute(1);
+    array->Resize(old + n);
   }
-}
-
-/// Contours phi (nodes of z layers [kBegin, kEnd)) in the grid's own frame.
-vtkSmartPointer<vtkPolyData> ContourLocal(
-  const Grid& grid, vtkDataArray* phi, std::int64_t kBegin, std::int64_t kEnd, Monitor* monitor = nullptr)
-{
-  vtkNew<vtkImageData> image;
-  image->SetOrigin(0.0, 0.0, 0.0);
-  image->SetSpacing(grid.Spacing, grid.Spacing, grid.Spacing);
-  image->SetExtent(0, static_cast<int>(grid.Dims[0] - 1), 0, static_cast<int>(grid.Dims[1] - 1),
-    static_cast<int>(kBegin), static_cast<int>(kEnd - 1));
-  image->GetPointData()->SetScalars(phi);
-  vtkNew<vtkFlyingEdges3D> contour;
-  contour->SetInputData(image);
-  contour->SetValue(0, 0.0);
-  contour->ComputeNormalsOn();
-  contour->ComputeGradientsOff();
-  contour->ComputeScalarsOff();
-  if (monitor)
-  {
-    vtkNew<vtkCallbackCommand> forward;
-    forward->SetCallback(ForwardProgress);
-    forward->SetClientData(monitor);
-    contour->AddObserver(vtkCommand::ProgressEvent, forward);
-  }
-  contour->Update();
-  return contour->GetOutput();
-}
-
-/// Replaces the surface's float grid-frame points by double world points.
-void MoveToWorld(vtkPolyData* surface, const Grid& grid)
-{
-  vtkPoints* local = surface->GetPoints();
-  if (!local)
-  {
-    return;
-  }
-  vtkNew<vtkPoints> world;
-  world->SetDataTypeToDouble();
-  world->SetNumberOfPoints(local->GetNumberOfPoints());
-  for (vtkIdType p = 0; p < local->GetNumberOfPoints(); ++p)
-  {
-    double x[3];
-    local->GetPoint(p, x);
-    world->SetPoint(p, grid.Origin[0] + x[0], grid.Origin[1] + x[1], grid.Origin[2] + x[2]);
-  }
-  surface->SetPoints(world);
+  array->SetNumberOfTuples(old + n);
+  return array->GetPointer(old * components);
 }
 } // namespace
 
-vtkSmartPointer<vtkPolyData> ExtractSurface(
-  const Grid& grid, vtkDataArray* phi, std::int64_t kBegin, std::int64_t kEnd, Monitor* monitor)
+PolyDataSink::PolyDataSink()
 {
-  auto surface = ContourLocal(grid, phi, kBegin, kEnd < 0 ? grid.Dims[2] : kEnd, monitor);
-  MoveToWorld(surface, grid);
-  return surface;
+  this->Points->SetNumberOfComponents(3);
+  this->Normals->SetNumberOfComponents(3);
+  this->Normals->SetName("Normals");
 }
 
-vtkSmartPointer<vtkPolyData> ExtractSurfaceBySlabs(const TruncatedDistance& distance,
-  const NarrowBand& band, const std::vector<double>& phi, const Parameters& parameters, Monitor* monitor,
-  std::int64_t kFirst, std::int64_t kLast)
+PolyDataSink::~PolyDataSink() = default;
+
+void PolyDataSink::AddPoints(std::int64_t n, double*& xyz, float*& normals)
 {
-  const Grid& grid = distance.GetGrid();
-  const std::int64_t nx = grid.Dims[0], ny = grid.Dims[1];
-  const std::int64_t nz = kLast < 0 ? grid.Dims[2] : kLast;
-  const std::vector<std::int64_t> reached = distance.ReachedBricks();
+  xyz = Extend(this->Points.GetPointer(), n);
+  normals = Extend(this->Normals.GetPointer(), n);
+}
 
-  vtkNew<vtkPoints> points; // float, as vtkFlyingEdges3D makes them
-  vtkNew<vtkFloatArray> normals;
-  normals->SetName("Normals");
-  normals->SetNumberOfComponents(3);
-  vtkNew<vtkCellArray> triangles;
+VertexId* PolyDataSink::AddTriangles(std::int64_t n)
+{
+  static_assert(std::is_same<vtkIdType, VertexId>::value, "VTK's ids are the core's");
+  return Extend(this->Connectivity.GetPointer(), 3 * n);
+}
 
-  // Brick layers that hold band nodes: slabs without any are skipped.
-  const std::int64_t bricksPerLayer = distance.GetBrickDims()[0] * distance.GetBrickDims()[1];
-  std::vector<bool> layerHasBand(static_cast<std::size_t>(distance.GetBrickDims()[2]), false);
-  for (std::size_t b = 0; b < band.Bricks.size(); ++b)
+vtkSmartPointer<vtkPolyData> PolyDataSink::Finish()
+{
+  this->Points->Squeeze();
+  this->Normals->Squeeze();
+  this->Connectivity->Squeeze();
+  const vtkIdType triangles = this->Connectivity->GetNumberOfTuples() / 3;
+  vtkNew<vtkIdTypeArray> offsets;
+  offsets->SetNumberOfTuples(triangles + 1);
+  for (vtkIdType t = 0; t <= triangles; ++t)
   {
-    if (band.RedStart[b + 1] > band.RedStart[b] || band.BlackStart[b + 1] > band.BlackStart[b])
-    {
-      layerHasBand[static_cast<std::size_t>(band.Bricks[b] / bricksPerLayer)] = true;
-    }
+    offsets->SetValue(t, 3 * t);
   }
-
-  std::map<Key, vtkIdType> sharedBelow; // vertices the previous slab made on this slab's first plane
-  std::vector<float> slab;
-  for (std::int64_t kBegin = kFirst; kBegin + 1 < nz; kBegin += SlabCells)
-  {
-    const std::int64_t kEnd = std::min(kBegin + SlabCells + 1, nz); // one shared plane with the next slab
-    std::map<Key, vtkIdType> sharedAbove;
-    bool any = false;
-    for (std::int64_t layer = kBegin >> BrickShift; layer <= (kEnd - 1) >> BrickShift; ++layer)
-    {
-      any = any || layerHasBand[static_cast<std::size_t>(layer)];
-    }
-    if (monitor)
-    {
-      monitor->Progress(static_cast<double>(kBegin - kFirst) / (nz - kFirst));
-    }
-    if (!any || (monitor && monitor->Aborted()))
-    {
-      sharedBelow.clear();
-      continue;
-    }
-
-    slab.resize(static_cast<std::size_t>(nx * ny * (kEnd - kBegin)));
-    VolumeArrays arrays;
-    arrays.Phi = slab.data();
-    FillVolume(distance, band, phi, parameters, reached, arrays, kBegin, kEnd);
-
-    vtkNew<vtkFloatArray> scalars;
-    scalars->SetName("phi");
-    scalars->SetArray(slab.data(), static_cast<vtkIdType>(slab.size()), 1); // borrowed, not copied
-    vtkSmartPointer<vtkPolyData> piece = ContourLocal(grid, scalars, kBegin, kEnd);
-
-    // Append, merging the vertices on the plane shared with the slab below.
-    const float zBelow = static_cast<float>(kBegin * grid.Spacing);
-    const float zAbove = static_cast<float>((kEnd - 1) * grid.Spacing);
-    vtkDataArray* pieceNormals = piece->GetPointData()->GetNormals();
-    std::vector<vtkIdType> id(static_cast<std::size_t>(piece->GetNumberOfPoints()));
-    for (vtkIdType p = 0; p < piece->GetNumberOfPoints(); ++p)
-    {
-      double x[3];
-      piece->GetPoint(p, x);
-      const float z = static_cast<float>(x[2]);
-      const Key key{ { static_cast<float>(x[0]), static_cast<float>(x[1]) } };
-      if (z == zBelow && !sharedBelow.empty())
-      {
-        const auto it = sharedBelow.find(key);
-        if (it != sharedBelow.end())
-        {
-          id[p] = it->second;
-          continue;
-        }
-      }
-      id[p] = points->InsertNextPoint(x);
-      normals->InsertNextTuple(pieceNormals->GetTuple(p));
-      if (z == zAbove)
-      {
-        sharedAbove[key] = id[p];
-      }
-    }
-    vtkCellArray* polys = piece->GetPolys();
-    vtkIdType count;
-    const vtkIdType* cell;
-    for (polys->InitTraversal(); polys->GetNextCell(count, cell);)
-    {
-      vtkIdType mapped[3] = { id[cell[0]], id[cell[1]], id[cell[2]] };
-      triangles->InsertNextCell(3, mapped);
-    }
-    sharedBelow.swap(sharedAbove);
-  }
-
+  vtkNew<vtkCellArray> polys;
+  polys->SetData(offsets, this->Connectivity);
+  vtkNew<vtkPoints> points;
+  points->SetData(this->Points);
   auto surface = vtkSmartPointer<vtkPolyData>::New();
   surface->SetPoints(points);
-  surface->SetPolys(triangles);
-  surface->GetPointData()->SetNormals(normals);
-  MoveToWorld(surface, grid);
+  surface->SetPolys(polys);
+  surface->GetPointData()->SetNormals(this->Normals);
   return surface;
 }
 

@@ -76,10 +76,12 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("cloud", nargs="?", default=os.path.join(HERE, "..", "Data", "trefoil.vtp"))
     parser.add_argument("--offset", type=float, default=0.0,
-                        help="offset distance l (world units); default: 4 grid cells, as in the paper")
-    parser.add_argument("--spacing", type=float, default=0.0, help="grid spacing h (world units)")
-    parser.add_argument("--max-dim", type=int, default=160,
-                        help="cells along the longest side when --spacing is not given (default 160)")
+                        help="offset distance l (world units); default 0: the filter's automatic offset, "
+                             "from the distances between neighbouring points")
+    parser.add_argument("--spacing", type=float, default=0.0,
+                        help="grid spacing h (world units); default 0: the filter's, l / 4")
+    parser.add_argument("--max-dim", type=int, default=0,
+                        help="cells along the longest side when --spacing is not given (default 0: the filter's)")
     parser.add_argument("--iterations", type=int, default=3, help="time steps (default 3)")
     parser.add_argument("--out", default="out", help="output folder (default out/)")
     parser.add_argument("--plugin", default="", help="path of NarrowVolume.so")
@@ -98,20 +100,13 @@ def main():
     bounds = reader.GetDataInformation().GetBounds()
     longest = max(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4])
 
+    # The filter's own defaults (the same in the GUI, pvpython and VTK); only
+    # what was given on the command line is set.
     shell = NarrowVolumeReconstruction(Input=reader)  # noqa: F821 (defined by LoadPlugin)
     shell.MaximumNumberOfIterations = args.iterations
-    if args.spacing > 0:
-        shell.SampleSpacing = args.spacing
-    else:
-        shell.MaximumDimension = args.max_dim
-    # Default offset: 4 cells (the paper's l = 4h), from the spacing the filter will use.
-    h = args.spacing if args.spacing > 0 else None
-    if args.offset > 0:
-        shell.OffsetDistance = args.offset
-    else:
-        # With l = 4h, m = 2: longest + 2 (4h + 2h + 2h) = N h.
-        h = h or longest / (args.max_dim - 16)
-        shell.OffsetDistance = 4 * h
+    shell.OffsetDistance = args.offset
+    shell.SampleSpacing = args.spacing
+    shell.MaximumDimension = args.max_dim
     start = time.time()
     shell.UpdatePipeline()
     elapsed = time.time() - start
@@ -119,7 +114,13 @@ def main():
     volume_info = shell.GetDataInformation(0)
     surface_info = shell.GetDataInformation(1)
     print("input: %s, %d points" % (args.cloud, reader.GetDataInformation().GetNumberOfPoints()))
-    print("offset distance l = %g, grid %s nodes" % (shell.OffsetDistance, volume_info.GetExtent()))
+    field = volume_info.GetFieldDataInformation()
+    used = {name: field.GetArrayInformation(name).GetComponentRange(0)[0]
+            for name in ("OffsetDistance", "SampleSpacing", "NumberOfGaps", "RemovedPieces")
+            if field.GetArrayInformation(name)}
+    print("offset distance l = %g, spacing h = %g, grid %s nodes" % (
+        used.get("OffsetDistance", shell.OffsetDistance), used.get("SampleSpacing", 0.0), volume_info.GetExtent()))
+    print("gaps wider than l: %d, loose pieces removed: %d" % (used.get("NumberOfGaps", 0), used.get("RemovedPieces", 0)))
     print("surface: %d triangles, %.2f s" % (surface_info.GetNumberOfCells(), elapsed))
 
     # Under MPI, ParaView writes image data as a parallel .pvti (one piece a rank).

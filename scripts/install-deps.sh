@@ -2,7 +2,9 @@
 # SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
 # SPDX-License-Identifier: BSD-3-Clause
 # Installs what NarrowVolume needs on Debian 12 (ParaView 5.11 and its headers,
-# the build tools, Xvfb for the GUI test, Open MPI). Idempotent: packages that
+# the build tools, Xvfb for the GUI test, Open MPI; pip, with which the tests
+# install laspy, lazrs and pye57 for the LAZ and E57 readers, and liblzf, the
+# PCD test's second LZF compressor). Idempotent: packages that
 # are already installed are skipped, so a second run costs a few seconds.
 set -euo pipefail
 
@@ -16,6 +18,7 @@ PACKAGES=(
   python3-dev python3-numpy libeigen3-dev libx11-dev libgl-dev libboost-dev liblzma-dev
   qtbase5-dev qttools5-dev libqt5svg5-dev qttools5-dev-tools qtxmlpatterns5-dev-tools
   xvfb xauth clang libclang-rt-14-dev time
+  python3-pip liblzf1
 )
 # Optional extras asked for by name: NV_EXTRA_PACKAGES="libopenvdb-dev libtbb-dev"
 read -r -a EXTRA <<< "${NV_EXTRA_PACKAGES:-}"

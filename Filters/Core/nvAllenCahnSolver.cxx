@@ -3,6 +3,7 @@
 #include "nvAllenCahnSolver.h"
 
 #include "nvCommunicator.h"
+#include "nvDriftCorrection.h"
 #include "nvHalo.h"
 #include "nvNarrowBand.h"
 #include "nvParallel.h"
@@ -69,7 +70,13 @@ AllenCahnSolver::AllenCahnSolver(const NarrowBand& band, const Parameters& param
       this->Decay[s] = std::exp(-2.0 * g * dt / (eps * eps));
     }
   });
+  if (parameters.PreserveOffset)
+  {
+    this->Correction.reset(new DriftCorrection(band, halo));
+  }
 }
+
+AllenCahnSolver::~AllenCahnSolver() = default;
 
 double AllenCahnSolver::HalfSweep(std::int64_t begin, std::int64_t end)
 {
@@ -162,6 +169,13 @@ void AllenCahnSolver::React()
   });
 }
 
+void AllenCahnSolver::ReleaseWorkspace()
+{
+  std::vector<double>().swap(this->Previous);
+  std::vector<double>().swap(this->Coupling);
+  std::vector<double>().swap(this->Decay);
+}
+
 template <typename Fn>
 double AllenCahnSolver::OwnedSum(Fn&& fn)
 {
@@ -185,8 +199,18 @@ double AllenCahnSolver::OwnedSum(Fn&& fn)
 StepReport AllenCahnSolver::Step()
 {
   StepReport report;
+  if (this->Correction)
+  {
+    // PreserveOffset: the multiplier term of (1'), measured on the last step
+    // (nvDriftCorrection.cxx).
+    this->Correction->Correct(this->Phi.data(), this->Coupling.data());
+  }
   report.Sweeps = this->Diffuse(&report.SweepChange);
   this->React();
+  if (this->Correction)
+  {
+    this->Correction->Measure(this->Phi.data(), this->Previous.data(), this->Coupling.data());
+  }
   // Relative change of section 4; Previous still holds phi^n.
   const double* phi = this->Phi.data();
   const double* previous = this->Previous.data();

@@ -10,10 +10,12 @@
 
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace nv
 {
+class DriftCorrection;
 class Halo;
 class Monitor;
 struct NarrowBand;
@@ -36,6 +38,7 @@ public:
    * global norms); null in a serial run.
    */
   AllenCahnSolver(const NarrowBand& band, const Parameters& parameters, Halo* halo = nullptr);
+  ~AllenCahnSolver();
 
   /// phi0 = tanh((l - d) / (sqrt(2) xi)), eq. (2).
   static double InitialPhi(double distance, double offset, double xi);
@@ -65,6 +68,9 @@ public:
   /// Reaction step (12), in place.
   void React();
 
+  /// Frees the arrays only the time steps need; phi stays.
+  void ReleaseWorkspace();
+
   /// phi at band node s (s < L); slots L and L + 1 hold the Dirichlet values.
   const std::vector<double>& GetPhi() const { return this->Phi; }
   std::vector<double>& GetPhi() { return this->Phi; }
@@ -86,6 +92,7 @@ private:
   std::vector<double> Previous; ///< phi^n, the right-hand side of (10)
   std::vector<double> Coupling; ///< w_s = c_s / (1 + 6 c_s), c_s = dt g_s / h^2
   std::vector<double> Decay;    ///< exp(-2 g_s dt / eps^2)
+  std::unique_ptr<DriftCorrection> Correction; ///< with PreserveOffset only
 };
 
 } // namespace nv

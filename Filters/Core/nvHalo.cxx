@@ -26,6 +26,8 @@ Halo::Halo(const NarrowBand& band, const Subdomain& part, const std::vector<Laye
   auto makeLink = [&](int neighbour, std::int64_t ownLayer, std::int64_t ghostLayer) {
     Link link;
     link.Rank = neighbour;
+    link.SendLayer = ownLayer;
+    link.ReceiveLayer = ghostLayer;
     for (int colour = 0; colour < 2; ++colour)
     {
       band.NodesInLayers(LayerRange{ ownLayer, ownLayer + 1 }, colour == 0, link.SendBegin[colour],
@@ -102,6 +104,15 @@ void Halo::Exchange(double* phi, bool red)
   {
     this->Swap(link, phi + link.SendBegin[colour], link.SendEnd[colour] - link.SendBegin[colour],
       phi + link.ReceiveBegin[colour], link.ReceiveEnd[colour] - link.ReceiveBegin[colour]);
+  }
+}
+
+void Halo::ExchangeLayers(double* values, std::int64_t count, std::int64_t firstLayer)
+{
+  for (const Link& link : this->Links)
+  {
+    this->Swap(link, values + (link.SendLayer - firstLayer) * count, count,
+      values + (link.ReceiveLayer - firstLayer) * count, count);
   }
 }
 

@@ -40,12 +40,21 @@ public:
   /// Sends the owned boundary values of one colour and receives the ghosts'.
   void Exchange(double* phi, bool red);
 
+  /**
+   * The same exchange for values kept per brick layer (count values a layer,
+   * layer L at values + (L - firstLayer) * count): sends those of the owned
+   * boundary layers, receives those of the ghost layers.
+   */
+  void ExchangeLayers(double* values, std::int64_t count, std::int64_t firstLayer);
+
   Communicator& GetCommunicator() { return this->Comm; }
 
 private:
   struct Link
   {
     int Rank = -1;                     ///< the neighbouring process
+    std::int64_t SendLayer = 0;        ///< the owned brick layer it keeps as a ghost
+    std::int64_t ReceiveLayer = 0;     ///< the ghost brick layer it owns
     std::int64_t SendBegin[2] = {};    ///< [colour]: red 0, black 1
     std::int64_t SendEnd[2] = {};
     std::int64_t ReceiveBegin[2] = {};

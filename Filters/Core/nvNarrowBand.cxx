@@ -19,29 +19,29 @@ bool IsRed(std::int64_t i, std::int64_t j, std::int64_t k)
   return ((i + j + k) & 1) == 0;
 }
 
-/// Set bits of x (portable: no popcnt instruction is assumed).
-int Popcount(std::uint64_t x)
-{
-  x = x - ((x >> 1) & 0x5555555555555555ULL);
-  x = (x & 0x3333333333333333ULL) + ((x >> 2) & 0x3333333333333333ULL);
-  x = (x + (x >> 4)) & 0x0F0F0F0F0F0F0F0FULL;
-  return static_cast<int>((x * 0x0101010101010101ULL) >> 56);
-}
-
-/// Visits the band nodes of one brick in ascending grid index: fn(i, j, k, d).
+/// Visits the band nodes of one brick in ascending grid index: fn(i, j, k,
+/// d). Marks the brick's other nodes inside the shell in `inside`, and hands
+/// its distances to `visitor`, if any.
 template <typename Fn>
-void ForEachBandNode(const TruncatedDistance& distance, const Parameters& parameters,
-  std::int64_t brick, double scratch[BrickNodes], Fn&& fn)
+void ForEachBandNode(const TruncatedDistance& distance, const Parameters& parameters, std::int64_t brick,
+  const BrickVisitor& visitor, double scratch[BrickNodes], std::uint64_t inside[BrickNodes / 64], Fn&& fn)
 {
   const Grid& grid = distance.GetGrid();
   const bool whole = parameters.Mode == Domain::WholeDomain;
   const double lower = parameters.OffsetDistance - parameters.HalfBandWidth();
   const double upper = distance.GetReach();
-  if (!whole && distance.BrickWithin(brick, lower))
+  std::fill(inside, inside + BrickNodes / 64, std::uint64_t(0));
+  if (!whole && !visitor && distance.BrickWithin(brick, lower))
   {
-    return; // d <= l - eta/2 on the whole brick (deep inside the shell): no band node
+    // d <= l - eta/2 on the whole brick (deep inside the shell): no band node
+    std::fill(inside, inside + BrickNodes / 64, ~std::uint64_t(0));
+    return;
   }
   distance.ComputeBrick(brick, scratch);
+  if (visitor)
+  {
+    visitor(brick, scratch);
+  }
   std::int64_t first[3];
   distance.BrickFirstNode(brick, first);
   for (int k = 0; k < BrickSize && first[2] + k < grid.Dims[2]; ++k)
@@ -50,10 +50,15 @@ void ForEachBandNode(const TruncatedDistance& distance, const Parameters& parame
     {
       for (int i = 0; i < BrickSize && first[0] + i < grid.Dims[0]; ++i)
       {
-        const double d = scratch[i + BrickSize * (j + BrickSize * k)];
+        const int n = i + BrickSize * (j + BrickSize * k);
+        const double d = scratch[n];
         if (whole || (lower < d && d < upper))
         {
           fn(first[0] + i, first[1] + j, first[2] + k, d);
+        }
+        else if (d <= lower)
+        {
+          inside[n / 64] |= std::uint64_t(1) << (n % 64);
         }
       }
     }
@@ -84,8 +89,8 @@ void NarrowBand::OwnedNodes(bool red, std::int64_t& begin, std::int64_t& end) co
   this->NodesInLayers(this->OwnedLayers, red, begin, end);
 }
 
-NarrowBand BuildNarrowBand(
-  const TruncatedDistance& distance, const Parameters& parameters, Monitor* monitor, const Subdomain* part)
+NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& parameters, Monitor* monitor,
+  const Subdomain* part, const BrickVisitor& visitor)
 {
   NarrowBand band;
   band.GridNodes = distance.GetGrid();
@@ -131,12 +136,13 @@ NarrowBand BuildNarrowBand(
     std::vector<Entry> Red, Black;
   };
   std::vector<BrickBand> perBrick(static_cast<std::size_t>(numberOfBricks));
+  band.Inside.resize(static_cast<std::size_t>(numberOfBricks * BrickNodes / 64));
   const bool done = MonitoredFor(0, numberOfBricks, 16, monitor, [&](std::int64_t begin, std::int64_t end) {
     double scratch[BrickNodes];
     for (std::int64_t a = begin; a < end; ++a)
     {
       BrickBand& out = perBrick[a];
-      ForEachBandNode(distance, parameters, bricks[a], scratch,
+      ForEachBandNode(distance, parameters, bricks[a], visitor, scratch, &band.Inside[a * BrickNodes / 64],
         [&](std::int64_t i, std::int64_t j, std::int64_t k, double d) {
           (IsRed(i, j, k) ? out.Red : out.Black).push_back(Entry{ grid.Index(i, j, k), d });
         });

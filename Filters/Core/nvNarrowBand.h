@@ -9,14 +9,15 @@
 #include "nvGrid.h"
 #include "nvParameters.h"
 #include "nvPartition.h"
+#include "nvTruncatedDistance.h"
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace nv
 {
 class Monitor;
-class TruncatedDistance;
 
 /**
  * Band nodes s = 0 .. L-1. They are ordered for red-black Gauss-Seidel:
@@ -42,6 +43,12 @@ struct NarrowBand
   std::vector<std::int64_t> RedStart;
   std::vector<std::int64_t> BlackStart;
 
+  /// Per brick of Bricks, BrickNodes / 64 words: bit i + 8 (j + 8 k) is set
+  /// for a node off the band inside the shell (d <= l - eta/2, phi0 >= 1 -
+  /// delta); every other node off the band is outside it. The side is all
+  /// that the surface needs of those nodes (nvSurfaceField.h).
+  std::vector<std::uint64_t> Inside;
+
   /// In a distributed run, the band covers this process's computed brick
   /// layers and it updates only the nodes of its owned ones (all of them in
   /// a serial run).
@@ -66,15 +73,20 @@ struct NarrowBand
 /// Largest band the 32-bit neighbour indices can address.
 constexpr std::int64_t MaximumBandSize = 4294967295LL - 2;
 
+/// Called with the distances of each brick computed (possibly from several
+/// threads at once), for outputs that need them (nvVolume.h).
+using BrickVisitor = std::function<void(std::int64_t brick, const double distance[BrickNodes])>;
+
 /**
  * Finds the band nodes: in Domain::NarrowBand mode the nodes with
  * l - eta/2 < d < l + eta/2 (|phi0| < 1 - delta), in Domain::WholeDomain mode
  * every node of the grid. Returns an empty band if the monitor asks to stop.
  * part: in a distributed run, the layers this process computes and owns
- * (nvPartition.h); null for the whole grid.
+ * (nvPartition.h); null for the whole grid. visitor: if set, also called
+ * with the distances of every reached brick (none is skipped then).
  */
-NarrowBand BuildNarrowBand(const TruncatedDistance& distance,
-  const Parameters& parameters, Monitor* monitor = nullptr, const Subdomain* part = nullptr);
+NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& parameters,
+  Monitor* monitor = nullptr, const Subdomain* part = nullptr, const BrickVisitor& visitor = nullptr);
 
 } // namespace nv
 

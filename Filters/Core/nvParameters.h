@@ -61,6 +61,9 @@ struct Parameters
   std::int64_t MaximumBandNodes = -1; ///< refuse a larger band (memory budget); < 0: no limit
   Domain Mode = Domain::NarrowBand;
   EdgeStopping EdgeFunction = EdgeStopping::Eq4;
+  /// After each step, cancel the local mean translation of the sheets
+  /// (nvDriftCorrection.h); false: exactly the paper's scheme.
+  bool PreserveOffset = false;
 
   double Xi() const { return EpsilonFromCells(this->XiCells, this->Spacing); }
   double Epsilon() const { return EpsilonFromCells(this->EpsilonCells, this->Spacing); }

@@ -4,6 +4,8 @@
 
 #include "nvCommunicator.h"
 #include "nvParallel.h"
+#include "nvSurface.h"
+#include "nvSurfaceField.h"
 
 #include <algorithm>
 #include <chrono>
@@ -28,6 +30,55 @@ double Seconds(std::chrono::steady_clock::time_point start)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+/// The settings with the automatic offset (OffsetDistance 0) and spacing
+/// (SampleSpacing <= 0 and MaximumDimension 0) chosen as nvSampling.h says.
+Settings ResolveAutomatic(const Settings& settings, const SamplingStatistics& sampling, const double bounds[6], Plan& plan)
+{
+  Settings values = settings;
+  const bool automaticOffset = settings.OffsetDistance == 0.0;
+  const bool automaticSpacing = !(settings.SampleSpacing > 0.0) && settings.MaximumDimension == 0;
+  plan.AutomaticOffset = automaticOffset;
+  plan.AutomaticSpacing = automaticSpacing;
+  if (!(bounds[0] <= bounds[1]) || (automaticOffset && !sampling.Valid()))
+  {
+    return values; // no points, or no spacing to follow: MakePlan says so
+  }
+  if (automaticOffset)
+  {
+    values.OffsetDistance = std::max(1.5 * sampling.MedianSpacing, sampling.WideSpacing);
+  }
+  if (automaticSpacing && std::isfinite(values.OffsetDistance) && values.OffsetDistance > 0.0)
+  {
+    // The paper's l = 4 h, unless the grid would get too large.
+    double spacing = values.OffsetDistance / 4.0;
+    const double coarsest =
+      SpacingForMaximumDimension(bounds, values.OffsetDistance, values.XiCells, AutomaticMaximumDimension);
+    if (coarsest > spacing)
+    {
+      spacing = coarsest;
+      if (automaticOffset)
+      {
+        values.OffsetDistance = std::max(values.OffsetDistance, 4.0 * spacing);
+      }
+    }
+    values.SampleSpacing = spacing;
+  }
+  else if (automaticOffset && values.OffsetDistance > 0.0)
+  {
+    // A spacing set by the user: the automatic offset spans at least 4 cells
+    // (the paper's l = 4 h), or the shell would not survive on that grid. With
+    // MaximumDimension the spacing grows with l's padding: a few rounds settle it.
+    for (int round = 0; round < 4; ++round)
+    {
+      const double spacing = settings.SampleSpacing > 0.0
+        ? settings.SampleSpacing
+        : SpacingForMaximumDimension(bounds, values.OffsetDistance, values.XiCells, settings.MaximumDimension);
+      values.OffsetDistance = std::max(values.OffsetDistance, 4.0 * spacing);
+    }
+  }
+  return values;
+}
+
 std::string MiB(double bytes)
 {
   std::ostringstream text;
@@ -37,19 +88,22 @@ std::string MiB(double bytes)
 } // namespace
 
 //------------------------------------------------------------------------------
-Plan MakePlan(const Settings& settings, const double bounds[6])
+Plan MakePlan(const Settings& chosen, const double bounds[6], const SamplingStatistics& sampling)
 {
   Plan plan;
   std::ostringstream error;
-  if (!std::isfinite(settings.OffsetDistance) || settings.OffsetDistance <= 0.0)
+  const Settings settings = ResolveAutomatic(chosen, sampling, bounds, plan);
+  if (!std::isfinite(chosen.OffsetDistance) || chosen.OffsetDistance < 0.0)
   {
-    error << "OffsetDistance must be a finite value > 0, not " << settings.OffsetDistance
-          << ". (In ParaView its default follows the input's size: in a script, update the input "
-             "before creating the filter, or set OffsetDistance.)";
+    error << "OffsetDistance must be a finite value > 0 (or 0: automatic), not " << chosen.OffsetDistance << ".";
   }
-  else if (!std::isfinite(settings.SampleSpacing))
+  else if (!std::isfinite(chosen.SampleSpacing))
   {
-    error << "SampleSpacing must be finite, not " << settings.SampleSpacing << ".";
+    error << "SampleSpacing must be finite, not " << chosen.SampleSpacing << ".";
+  }
+  else if (!(settings.OffsetDistance > 0.0) && bounds[0] <= bounds[1])
+  {
+    error << "An automatic OffsetDistance needs at least two distinct points; set OffsetDistance.";
   }
   else if (!std::isfinite(settings.TimeStep))
   {
@@ -83,6 +137,7 @@ Plan MakePlan(const Settings& settings, const double bounds[6])
   parameters.GaussSeidelTolerance = settings.GaussSeidelTolerance;
   parameters.Mode = settings.Mode;
   parameters.EdgeFunction = settings.EdgeFunction;
+  parameters.PreserveOffset = settings.PreserveOffset;
   parameters.Spacing = settings.SampleSpacing > 0.0
     ? settings.SampleSpacing
     : SpacingForMaximumDimension(bounds, settings.OffsetDistance, settings.XiCells, settings.MaximumDimension);
@@ -185,7 +240,7 @@ bool Reconstruction::Fail(const std::string& message)
 }
 
 //------------------------------------------------------------------------------
-bool Reconstruction::Run(std::vector<double> xyz)
+bool Reconstruction::Run(std::vector<double> xyz, std::shared_ptr<const Sampling> measured)
 {
   // 1. The points: counted and checked on every process, errors agreed by all.
   double bounds[6];
@@ -215,12 +270,20 @@ bool Reconstruction::Run(std::vector<double> xyz)
     return this->Fail(error.str());
   }
 
-  // 2. The grid.
-  this->ThePlan = MakePlan(this->TheSettings, bounds);
+  // 2. The points' spacing, and the grid.
+  if (!measured)
+  {
+    auto sampling = std::make_shared<Sampling>();
+    sampling->Measure(xyz, this->Comm);
+    measured = sampling;
+  }
+  this->TheSampling = measured;
+  this->ThePlan = MakePlan(this->TheSettings, bounds, this->TheSampling->Statistics());
   if (!this->ThePlan.Valid())
   {
     return this->Fail(this->ThePlan.Error);
   }
+  this->Gaps = this->TheSampling->Gaps(this->ThePlan.Scheme.OffsetDistance, this->Comm);
   const Grid& grid = this->ThePlan.TheGrid;
   const std::int64_t layers = (grid.Dims[2] + BrickSize - 1) >> BrickShift;
 
@@ -249,16 +312,29 @@ bool Reconstruction::Run(std::vector<double> xyz)
     xyz = ExchangePoints(*this->Comm, xyz, zRanges);
   }
 
-  // 5. Distance (eq. 6, 7) and band (steps 1-3).
+  // 5. Distance (eq. 6, 7) and band (steps 1-3); the dense arrays, if
+  // asked for, take each brick's distances as the band's construction
+  // computes them.
   auto start = std::chrono::steady_clock::now();
   if (this->TheMonitor)
   {
     this->TheMonitor->Stage(0.0, 0.3);
   }
+  std::unique_ptr<VolumeWriter> volume;
+  BrickVisitor writeBrick;
+  if (this->AllocateVolume && !this->EmptyPiece())
+  {
+    this->Volume[0] = std::max(this->Computed[0], this->Piece[0] - this->VolumeGhosts);
+    this->Volume[1] = std::min(this->Computed[1], this->Piece[1] + this->VolumeGhosts);
+    volume.reset(new VolumeWriter(grid, this->ThePlan.Scheme, this->AllocateVolume(this->Volume[0], this->Volume[1]),
+      this->Volume[0], this->Volume[1]));
+    volume->Clear();
+    writeBrick = [&volume](std::int64_t brick, const double* d) { volume->WriteBrick(brick, d); };
+  }
   this->Distance.reset(new TruncatedDistance(
     grid, xyz.data(), static_cast<std::int64_t>(xyz.size() / 3), this->ThePlan.Scheme.Reach()));
   std::vector<double>().swap(xyz);
-  this->Band = BuildNarrowBand(*this->Distance, this->ThePlan.Scheme, this->TheMonitor, &this->Part);
+  this->Band = BuildNarrowBand(*this->Distance, this->ThePlan.Scheme, this->TheMonitor, &this->Part, writeBrick);
   this->SetupTime = Seconds(start);
   double failed[2] = { static_cast<double>(this->Band.RefusedSize),
     this->TheMonitor && this->TheMonitor->Aborted() ? 1.0 : 0.0 };
@@ -312,7 +388,31 @@ bool Reconstruction::Run(std::vector<double> xyz)
     this->Stopped = true;
     return false;
   }
+  // The outputs need the band's nodes and phi only.
+  this->Solver->ReleaseWorkspace();
+  std::vector<double>().swap(this->Band.Distance);
+  std::vector<std::uint32_t>().swap(this->Band.Neighbor);
+  if (volume)
+  {
+    volume->WriteBand(this->Band, this->Solver->GetPhi());
+  }
   return true;
+}
+
+void Reconstruction::RequestVolume(std::int64_t ghostLayers, VolumeAllocator allocate)
+{
+  this->VolumeGhosts = std::max<std::int64_t>(0, ghostLayers);
+  this->AllocateVolume = std::move(allocate);
+}
+
+bool Reconstruction::ExtractSurface(SurfaceSink& sink) const
+{
+  if (this->EmptyPiece())
+  {
+    return true;
+  }
+  const BandField field(this->Band, this->Solver->GetPhi(), this->ThePlan.Scheme);
+  return ContourBricks(this->ThePlan.TheGrid, field, sink, this->Part.Owned.Begin, this->Part.Owned.End, this->TheMonitor);
 }
 
 //------------------------------------------------------------------------------
@@ -373,13 +473,6 @@ bool Reconstruction::CheckMemory(double gridNodes, double points)
     this->ThePlan.Scheme.MaximumBandNodes = static_cast<std::int64_t>((limit - bytes) / BytesPerBandNode);
   }
   return true;
-}
-
-//------------------------------------------------------------------------------
-void Reconstruction::FillVolume(const VolumeArrays& arrays, std::int64_t kBegin, std::int64_t kEnd) const
-{
-  nv::FillVolume(*this->Distance, this->Band, this->Solver->GetPhi(), this->ThePlan.Scheme,
-    this->Distance->ReachedBricks(), arrays, kBegin, kEnd, this->TheMonitor);
 }
 
 } // namespace nv

@@ -4,16 +4,21 @@
 // section 3, for one process or for each process of a distributed run:
 //
 //   1. check the user's settings and the points (a message says what to change);
-//   2. the grid around the points' box (all processes' box), spacing h given
-//      or from the number of cells along the longest side (MakePlan);
+//   2. the points' spacing (nvSampling.h), and the grid around the points'
+//      box (all processes' box): offset l and spacing h given, from the
+//      number of cells along the longest side, or chosen from the spacing
+//      (MakePlan);
 //   3. in a distributed run, the slab of brick layers this process owns
 //      (nvPartition.h), balanced by the points per layer, and the points
 //      within reach of it, moved here from the other processes;
 //   4. the memory budget: the dense output and the per-brick tables before
 //      anything large exists, the band once its size is known;
-//   5. the truncated distance (eq. 6, 7) and the narrow band (steps 1-3);
-//   6. the time steps of the operator-split scheme (eq. 10-12);
-//   7. the dense arrays of the output on request (FillVolume).
+//   5. the truncated distance (eq. 6, 7) and the narrow band (steps 1-3),
+//      and, on request, the dense arrays of the output from the same
+//      distances (nvVolume.h);
+//   6. the time steps of the operator-split scheme (eq. 10-12), then the
+//      band's phi into the dense arrays;
+//   7. the phi = 0 surface, from the band (ExtractSurface, nvSurface.h).
 //
 // The VTK filter (vtkNarrowVolumeReconstruction) only converts: the input's
 // points in, the image and the surface out.
@@ -26,10 +31,12 @@
 #include "nvNarrowBand.h"
 #include "nvParameters.h"
 #include "nvPartition.h"
+#include "nvSampling.h"
 #include "nvTruncatedDistance.h"
 #include "nvVolume.h"
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -38,13 +45,14 @@ namespace nv
 {
 class Communicator;
 class Monitor;
+class SurfaceSink;
 
 /// What the user chooses (the filter's properties), before the grid is known.
 struct Settings
 {
-  double OffsetDistance = 0.1; ///< l, world units
+  double OffsetDistance = 0.0; ///< l, world units; 0: automatic (nvSampling.h)
   double SampleSpacing = 0.0;  ///< h, world units; <= 0: from MaximumDimension
-  int MaximumDimension = 100;  ///< cells along the padded box's longest side
+  int MaximumDimension = 0;    ///< cells along the padded box's longest side; 0: automatic
   double XiCells = 2.0;
   double EpsilonCells = 6.0;
   double TimeStep = 0.0;
@@ -53,25 +61,31 @@ struct Settings
   double GaussSeidelTolerance = 1e-6;
   Domain Mode = Domain::NarrowBand;
   EdgeStopping EdgeFunction = EdgeStopping::Eq4;
+  bool PreserveOffset = false;
   double MemoryLimitBytes = 0.0;  ///< the largest allocation of a run (> 0)
   double OutputBytesPerNode = 0.0; ///< dense output arrays, bytes per node of the piece
+  bool RemoveSmallPieces = true;   ///< drop loose pieces and tiny voids (nvPieces.h)
 };
 
-/// The grid that points with given bounds get, and the scheme's parameters on it.
+/// The grid that points with given bounds get, and the scheme's parameters on
+/// it (with the automatic offset and spacing filled in).
 struct Plan
 {
   Grid TheGrid;
   Parameters Scheme;
+  bool AutomaticOffset = false;
+  bool AutomaticSpacing = false;
   std::string Error; ///< why there is no grid; empty when there is one
   bool Valid() const { return this->Error.empty(); }
 };
 
 /**
  * Checks the settings and derives the grid from the points' bounds (xmin,
- * xmax, ymin, ...): the information a pipeline needs before the run, and
- * the run's own first step. The message of an invalid plan says what to change.
+ * xmax, ymin, ...) and, for the automatic offset and spacing, their sampling:
+ * the information a pipeline needs before the run, and the run's own first
+ * step. The message of an invalid plan says what to change.
  */
-Plan MakePlan(const Settings& settings, const double bounds[6]);
+Plan MakePlan(const Settings& settings, const double bounds[6], const SamplingStatistics& sampling);
 
 /// Bounds of xyz triples (empty: xmin > xmax). Returns the index of the first
 /// point with a non-finite coordinate, or -1.
@@ -88,12 +102,23 @@ public:
   Reconstruction(const Settings& settings, Communicator* communicator, Monitor* monitor);
   ~Reconstruction();
 
+  /// Returns the dense arrays to fill for the node layers [kBegin, kEnd).
+  using VolumeAllocator = std::function<VolumeArrays(std::int64_t kBegin, std::int64_t kEnd)>;
+  /**
+   * Asks Run for the dense arrays of this process's piece and up to
+   * `ghostLayers` node layers on each side (within the computed layers):
+   * `allocate` is called once the piece is known, before the distances, and
+   * the arrays are complete when Run returns true.
+   */
+  void RequestVolume(std::int64_t ghostLayers, VolumeAllocator allocate);
+
   /**
    * Steps 1-6 for this process's points (xyz triples). Returns false when the
    * run stops: Error() says why (the same on every process), or Aborted().
-   * In a distributed run every process must call it.
+   * In a distributed run every process must call it. `measured`: the
+   * sampling of these same points if known already (else it is measured).
    */
-  bool Run(std::vector<double> xyz);
+  bool Run(std::vector<double> xyz, std::shared_ptr<const Sampling> measured = nullptr);
   const std::string& Error() const { return this->Message; }
   bool Aborted() const { return this->Stopped; }
 
@@ -103,6 +128,10 @@ public:
   double SumAll(double value);
 
   const Grid& GetGrid() const { return this->ThePlan.TheGrid; }
+  const Plan& GetPlan() const { return this->ThePlan; }
+  const SamplingStatistics& GetSampling() const { return this->TheSampling->Statistics(); }
+  /// The gaps wider than the offset distance (nvSampling.h).
+  const GapReport& GetGaps() const { return this->Gaps; }
   const Parameters& GetParameters() const { return this->ThePlan.Scheme; }
   /// The node layers along z of this process's output piece: its owned brick
   /// layers and the first node layer of the next piece, which both share.
@@ -118,11 +147,15 @@ public:
   double SetupSeconds() const { return this->SetupTime; }
   double EvolutionSeconds() const { return this->EvolutionTime; }
 
-  /// Step 7: the dense arrays of the node layers [kBegin, kEnd) (within the
-  /// computed layers), in parallel; stops early if the monitor aborts.
-  void FillVolume(const VolumeArrays& arrays, std::int64_t kBegin, std::int64_t kEnd) const;
-  /// What the surface extraction needs.
-  const TruncatedDistance& GetDistance() const { return *this->Distance; }
+  /// The node layers of the dense arrays (RequestVolume).
+  std::int64_t VolumeBegin() const { return this->Volume[0]; }
+  std::int64_t VolumeEnd() const { return this->Volume[1]; }
+
+  /// Step 7: the phi = 0 surface of this process's piece, from the band
+  /// (nvSurfaceField.h, nvSurface.h). Returns false if the monitor stopped it.
+  bool ExtractSurface(SurfaceSink& sink) const;
+
+  /// The band (after Run, its nodes only: the solver's other arrays are freed).
   const NarrowBand& GetBand() const { return this->Band; }
   const std::vector<double>& GetPhi() const { return this->Solver->GetPhi(); }
 
@@ -135,10 +168,15 @@ private:
   Communicator* Comm;
   Monitor* TheMonitor;
   Plan ThePlan;
+  std::shared_ptr<const Sampling> TheSampling;
+  GapReport Gaps;
   std::vector<LayerRange> Owners;
   Subdomain Part;
   std::int64_t Piece[2] = { 0, 0 };
   std::int64_t Computed[2] = { 0, 0 };
+  std::int64_t Volume[2] = { 0, 0 };
+  std::int64_t VolumeGhosts = 0;
+  VolumeAllocator AllocateVolume;
   double BytesBeforeBand = 0.0;
   std::unique_ptr<TruncatedDistance> Distance;
   NarrowBand Band;

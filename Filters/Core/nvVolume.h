@@ -1,22 +1,28 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
 // SPDX-License-Identifier: BSD-3-Clause
-// Writes the solution on the grid's nodes (dense arrays) for output and for
-// isosurfacing, for the whole grid or for a slab of z layers. Band nodes take
-// the evolved phi; every other node keeps its initial value phi0 of eq. (2),
-// which the scheme never changes there.
+// Writes the solution on the grid's nodes (dense arrays) for output, for the
+// whole grid or for a slab of z layers. Band nodes take the evolved phi;
+// every other node keeps its initial value phi0 of eq. (2), which the scheme
+// never changes there.
+//
+// The distances are computed once per run, by the band's construction: the
+// writer takes each brick's distances from there (WriteBrick), so it runs in
+// three steps: every node as if no point reached it (Clear), the reached
+// bricks during the band's construction, and the band's phi after the
+// evolution (WriteBand).
 #ifndef nvVolume_h
 #define nvVolume_h
 
+#include "nvGrid.h"
 #include "nvParameters.h"
+#include "nvTruncatedDistance.h"
 
 #include <cstdint>
 #include <vector>
 
 namespace nv
 {
-class Monitor;
 struct NarrowBand;
-class TruncatedDistance;
 
 /// Dense arrays to fill, each of Nx Ny (kEnd - kBegin) values; null ones are skipped.
 struct VolumeArrays
@@ -27,16 +33,26 @@ struct VolumeArrays
   unsigned char* Band = nullptr; ///< 1 on band nodes
 };
 
-/**
- * Fills the arrays for the nodes with kBegin <= k < kEnd (the whole grid by
- * default). phi: the solver's values at band nodes (at least band.Size()).
- * reachedBricks: distance.ReachedBricks(), passed in so that slab after slab
- * need not recompute it. monitor: progress, and a request to stop, after
- * which the arrays are left incomplete.
- */
-void FillVolume(const TruncatedDistance& distance, const NarrowBand& band,
-  const std::vector<double>& phi, const Parameters& parameters, const std::vector<std::int64_t>& reachedBricks,
-  const VolumeArrays& arrays, std::int64_t kBegin = 0, std::int64_t kEnd = -1, Monitor* monitor = nullptr);
+class VolumeWriter
+{
+public:
+  /// The arrays of the node layers [kBegin, kEnd).
+  VolumeWriter(const Grid& grid, const Parameters& parameters, const VolumeArrays& arrays, std::int64_t kBegin,
+    std::int64_t kEnd);
+
+  /// Every node beyond reach: d truncated (eq. 6), phi0 = tanh(-inf) = -1. In parallel.
+  void Clear() const;
+  /// The nodes of one brick from their distances (eq. 2, 6); thread-safe for distinct bricks.
+  void WriteBrick(std::int64_t brick, const double distance[BrickNodes]) const;
+  /// The band nodes: the evolved phi. In parallel.
+  void WriteBand(const NarrowBand& band, const std::vector<double>& phi) const;
+
+private:
+  Grid TheGrid;
+  Parameters Scheme;
+  VolumeArrays Arrays;
+  std::int64_t Begin, End;
+};
 
 } // namespace nv
 

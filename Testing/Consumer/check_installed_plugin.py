@@ -2,9 +2,11 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """Run by run_consumer_test.cmake in pvpython, with PV_PLUGIN_CONFIG_FILE set
 to the installed narrowvolume.plugins.xml and no LoadPlugin call: ParaView
-loaded the installed plugin at start-up, its filter runs, and the plugin (and,
-with a second argument, the narrowvolume package) use the installed
-libNarrowVolumeFilters, not the build tree's.
+loaded the installed plugin at start-up, and with it the installed Python
+readers (NarrowVolumeScanReaders.py); its filter and readers run, and the
+plugin (and, with a second argument, the narrowvolume package) use the
+installed libNarrowVolumeFilters and libNarrowVolumeReaders, not the build
+tree's.
 
     pvpython check_installed_plugin.py PREFIX [PYTHONPATH_DIR]
 """
@@ -38,12 +40,30 @@ filename, loaded = plugins.get("NarrowVolume", ("", False))
 check(loaded, "the plugin was loaded at start-up")
 check(inside_prefix(filename), "the plugin %s is the installed one (under %s)" % (filename, prefix))
 
+# The Python readers it loads, from beside the installed plugin.
+filename, loaded = plugins.get("NarrowVolumeScanReaders", ("", False))
+check(loaded and inside_prefix(filename), "the plugin loaded the installed Python readers (%s)" % filename)
+for reader in ("PointCloudTextReader", "LASPointCloudReader", "PCDPointCloudReader", "LAZPointCloudReader",
+               "E57PointCloudReader"):
+    check(hasattr(pvs, reader), "paraview.simple.%s exists" % reader)
+filename = plugins.get("NarrowVolume", ("", False))[0]
+
 # Its filter, without LoadPlugin.
 check(hasattr(pvs, "NarrowVolumeReconstruction"), "paraview.simple.NarrowVolumeReconstruction exists")
 if hasattr(pvs, "NarrowVolumeReconstruction"):
+    import tempfile
+    cloud_file = os.path.join(tempfile.mkdtemp(prefix="nv-installed-"), "sphere.pcd")
     sphere = pvs.Sphere(Radius=0.5, ThetaResolution=24, PhiResolution=24)
-    sphere.UpdatePipeline()  # as Apply does: the filter's defaults follow the input's size
-    shell = pvs.NarrowVolumeReconstruction(Input=sphere)
+    sphere.UpdatePipeline()
+    xyz = [servermanager.Fetch(sphere).GetPoint(i) for i in range(servermanager.Fetch(sphere).GetNumberOfPoints())]
+    with open(cloud_file, "w") as f:
+        f.write("FIELDS x y z\nSIZE 8 8 8\nTYPE F F F\nPOINTS %d\nDATA ascii\n" % len(xyz))
+        f.writelines("%.17g %.17g %.17g\n" % p for p in xyz)
+    cloud = pvs.OpenDataFile(cloud_file)
+    check(cloud is not None and cloud.GetXMLName() == "PCDPointCloudReader", "a .pcd opens with the PCD reader")
+    cloud.UpdatePipeline()  # as Apply does: the filter's defaults follow the input's size
+    check(cloud.GetDataInformation().GetNumberOfPoints() == len(xyz), "the PCD reader reads the sphere's points")
+    shell = pvs.NarrowVolumeReconstruction(Input=cloud)
     shell.OffsetDistance = 0.1
     shell.MaximumDimension = 40
     shell.UpdatePipeline()
@@ -57,13 +77,15 @@ if len(sys.argv) > 2:
     import narrowvolume
     check(inside_prefix(narrowvolume.__file__), "narrowvolume %s is the installed one" % narrowvolume.__file__)
     check(narrowvolume.vtkNarrowVolumeReconstruction().GetNumberOfOutputPorts() == 2, "narrowvolume's filter")
+    check(narrowvolume.vtkLASPointCloudReader().GetNumberOfInputPorts() == 0, "narrowvolume's readers")
 
-# Every libNarrowVolumeFilters this process mapped is the installed one.
+# Every libNarrowVolumeFilters and libNarrowVolumeReaders this process mapped is the installed one.
 with open("/proc/self/maps") as maps:
-    libraries = {line.split()[-1] for line in maps if "libNarrowVolumeFilters" in line}
-check(libraries, "libNarrowVolumeFilters is loaded")
+    libraries = {line.split()[-1] for line in maps if "libNarrowVolume" in line}
+for name in ("libNarrowVolumeFilters", "libNarrowVolumeReaders"):
+    check(any(name in library for library in libraries), "%s is loaded" % name)
 for library in sorted(libraries):
-    check(inside_prefix(library), "%s is the installed libNarrowVolumeFilters" % library)
+    check(inside_prefix(library), "%s is the installed library" % library)
 
 print("check_installed_plugin: %s (plugin %s; libraries %s)"
       % ("FAILED" if failures else "ok", filename, " ".join(sorted(libraries))))

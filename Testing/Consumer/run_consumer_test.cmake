@@ -5,13 +5,16 @@
 #   1. cmake --install BUILD_DIR --prefix WORK_DIR/prefix; the config, version,
 #      targets files are there and name no build or source path; the version
 #      file accepts this major.minor and refuses the next one;
-#   2. with the plugin: the plugin and narrowvolume.plugins.xml sit under
-#      LIBDIR/PLUGIN_SUBDIR, and ldd resolves libNarrowVolumeFilters of the
-#      installed plugin (and Python module) to the installed library;
+#   2. with the plugin: the plugin, the Python readers it loads
+#      (NarrowVolumeScanReaders.py) and narrowvolume.plugins.xml sit under
+#      LIBDIR/PLUGIN_SUBDIR, and ldd resolves libNarrowVolumeFilters and
+#      libNarrowVolumeReaders of the installed plugin (and Python modules) to
+#      the installed libraries;
 #   3. configures the consumer project (this folder) with only
 #      CMAKE_PREFIX_PATH=prefix (VTK_DIR, ParaView_DIR, CMAKE_PREFIX_PATH
 #      removed from the environment: the config's own VTK hint must work),
-#      builds it and runs it;
+#      builds it and runs it (a PCD file through the installed reader, then
+#      the installed filter);
 #   4. with the plugin: pvpython with PV_PLUGIN_CONFIG_FILE=<installed xml>
 #      autoloads the installed plugin (check_installed_plugin.py).
 # Variables (-D): BUILD_DIR SOURCE_DIR WORK_DIR GENERATOR CXX_COMPILER
@@ -116,6 +119,9 @@ if (WITH_PLUGIN)
   else ()
     list(APPEND installed_binaries "${plugin}")
   endif ()
+  if (NOT EXISTS "${prefix}/${LIBDIR}/${PLUGIN_SUBDIR}/NarrowVolume/NarrowVolumeScanReaders.py")
+    fail("the Python readers are not installed beside the plugin")
+  endif ()
   if (NOT EXISTS "${plugins_xml}")
     fail("the plugins XML is not installed at ${plugins_xml}")
   else ()
@@ -129,28 +135,44 @@ if (WITH_PLUGIN)
 endif ()
 if (WITH_PYTHON)
   set(python_dir "${prefix}/${PYTHON_DESTINATION}")
-  file(GLOB python_module "${python_dir}/narrowvolume/NarrowVolumeFilters*.so")
-  if (NOT python_module OR NOT EXISTS "${python_dir}/narrowvolume/__init__.py")
+  file(GLOB python_module "${python_dir}/narrowvolume/NarrowVolumeFilters*.so"
+    "${python_dir}/narrowvolume/NarrowVolumeReaders*.so")
+  list(LENGTH python_module python_modules)
+  if (NOT python_modules EQUAL 2 OR NOT EXISTS "${python_dir}/narrowvolume/__init__.py")
     fail("the narrowvolume package is not installed in ${python_dir}")
   endif ()
   list(APPEND installed_binaries ${python_module})
 endif ()
 
-# ldd: libNarrowVolumeFilters found, and in the prefix (the RPATH's $ORIGIN).
+# ldd: each of our libraries the binary needs (libNarrowVolumeFilters,
+# libNarrowVolumeReaders; at least one) found, and in the prefix (the RPATH's
+# $ORIGIN).
 function (check_libraries binary)
   execute_process(COMMAND "${LDD}" "${binary}" RESULT_VARIABLE result OUTPUT_VARIABLE out ERROR_VARIABLE out)
-  string(REGEX MATCH "libNarrowVolumeFilters[^ ]* => ([^ ]*)" _ "${out}")
-  set(found "${CMAKE_MATCH_1}")
-  if (found)
-    get_filename_component(found "${found}" REALPATH)
-    get_filename_component(expected_dir "${library_dir}" REALPATH)
-    get_filename_component(found_dir "${found}" DIRECTORY)
-  endif ()
-  if (NOT result EQUAL 0 OR out MATCHES "not found" OR NOT found OR NOT found_dir STREQUAL expected_dir)
+  set(checked 0)
+  foreach (library IN ITEMS libNarrowVolumeFilters libNarrowVolumeReaders)
+    if (NOT out MATCHES "${library}")
+      continue ()
+    endif ()
+    math(EXPR checked "${checked} + 1")
+    string(REGEX MATCH "${library}[^ ]* => ([^ ]*)" _ "${out}")
+    set(found "${CMAKE_MATCH_1}")
+    set(found_dir "")
+    if (found)
+      get_filename_component(found "${found}" REALPATH)
+      get_filename_component(expected_dir "${library_dir}" REALPATH)
+      get_filename_component(found_dir "${found}" DIRECTORY)
+    endif ()
+    if (NOT result EQUAL 0 OR NOT found OR NOT found_dir STREQUAL expected_dir)
+      message("${out}")
+      fail("${binary}: ${library} resolves to '${found}', not to ${library_dir}")
+    endif ()
+  endforeach ()
+  if (checked EQUAL 0 OR out MATCHES "not found")
     message("${out}")
-    fail("${binary}: libNarrowVolumeFilters resolves to '${found}', not to ${library_dir}")
-    set(failures "${failures}" PARENT_SCOPE)
+    fail("${binary}: none of our libraries, or one not found")
   endif ()
+  set(failures "${failures}" PARENT_SCOPE)
 endfunction ()
 find_program(LDD ldd)
 if (LDD)
@@ -219,7 +241,7 @@ file(GLOB consumer "${consumer_build}/nv_consumer" "${consumer_build}/*/nv_consu
 if (LDD AND consumer)
   check_libraries("${consumer}")
 endif ()
-run(run ${clean_env} "${consumer_build}/nv_consumer")
+run(run ${clean_env} "${consumer_build}/nv_consumer" "${consumer_build}")
 if (NOT step_ok OR NOT step_output MATCHES "nv_consumer: .*: ok")
   if (step_ok)
     message("${step_output}")

@@ -3,7 +3,9 @@
 // The distributed scheme without MPI: the slabs of nvPartition, and ranks
 // simulated by threads that talk through an in-memory Communicator. Each
 // rank builds the band on its slab and runs the solver with the ghost-layer
-// exchange of nvHalo; its owned nodes must end with exactly the serial phi.
+// exchange of nvHalo; its owned nodes must end with exactly the serial phi,
+// and the pieces of the surface the ranks make must be the serial surface,
+// also with PreserveOffset (whose brick sums cross the slabs' boundaries).
 #include "nvAllenCahnSolver.h"
 #include "nvCommunicator.h"
 #include "nvGrid.h"
@@ -11,10 +13,14 @@
 #include "nvNarrowBand.h"
 #include "nvPartition.h"
 #include "nvReconstruction.h"
+#include "nvSurface.h"
 #include "nvTestUtilities.h"
 #include "nvTruncatedDistance.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdio>
 #include <condition_variable>
 #include <deque>
 #include <map>
@@ -151,19 +157,36 @@ std::unordered_map<std::int64_t, double> SerialPhi(
   return phi;
 }
 
-void TestDistributedSolve(nv::Domain mode, int ranks, std::vector<double> weights)
+/// With preserve, PreserveOffset on (6 steps): its multiplier sums bricks
+/// across the slabs' boundaries (the ghost layers' sums come from their owners).
+void TestDistributedSolve(nv::Domain mode, int ranks, std::vector<double> weights, bool preserve = false)
 {
   const double center[3] = { 0.0, 0.1, -0.05 };
   const std::vector<double> points = nvtest::SpherePoints(600, 0.5, center);
   nv::Parameters parameters;
   parameters.OffsetDistance = 0.08;
   parameters.Spacing = 0.02;
-  parameters.MaximumNumberOfIterations = 3;
+  parameters.MaximumNumberOfIterations = preserve ? 6 : 3;
   parameters.Mode = mode;
+  parameters.PreserveOffset = preserve;
   const double bounds[6] = { -0.5, 0.5, -0.4, 0.6, -0.55, 0.45 };
   const nv::Grid grid = nv::MakeGrid(bounds, parameters.Spacing, nv::GridPadding(parameters.Reach(), parameters.Spacing));
   const nv::TruncatedDistance distance(grid, points.data(), 600, parameters.Reach());
   const std::unordered_map<std::int64_t, double> serial = SerialPhi(distance, parameters);
+  if (preserve)
+  {
+    // The correction acts: phi is not the paper's scheme's.
+    nv::Parameters paper = parameters;
+    paper.PreserveOffset = false;
+    const std::unordered_map<std::int64_t, double> plain = SerialPhi(distance, paper);
+    int changed = 0;
+    for (const auto& node : serial)
+    {
+      changed += plain.at(node.first) != node.second ? 1 : 0;
+    }
+    // (In the whole domain, the nodes far from the sheets have g = 0 and stay.)
+    NV_CHECK(changed > static_cast<int>(serial.size()) / (mode == nv::Domain::WholeDomain ? 4 : 2));
+  }
 
   const std::int64_t layers = distance.GetBrickDims()[2];
   weights.resize(static_cast<std::size_t>(layers), 1.0);
@@ -211,21 +234,76 @@ void TestDistributedSolve(nv::Domain mode, int ranks, std::vector<double> weight
   NV_CHECK(total == static_cast<std::int64_t>(serial.size()));
 }
 
+/// A surface as its triangles, each the coordinates of its three vertices
+/// (rotated to start at the smallest, which keeps the orientation), sorted;
+/// and its vertices' normals by coordinates.
+struct SurfaceByCoordinates
+{
+  std::vector<std::array<double, 9>> Triangles;
+  std::map<std::array<double, 3>, std::array<float, 3>> Normals;
+  void Add(const nv::SurfaceMesh& mesh)
+  {
+    auto vertex = [&mesh](nv::VertexId v) {
+      return std::array<double, 3>{ { mesh.Points[3 * v], mesh.Points[3 * v + 1], mesh.Points[3 * v + 2] } };
+    };
+    for (std::size_t t = 0; t < mesh.Triangles.size(); t += 3)
+    {
+      std::array<std::array<double, 3>, 3> corners = { { vertex(mesh.Triangles[t]), vertex(mesh.Triangles[t + 1]),
+        vertex(mesh.Triangles[t + 2]) } };
+      std::rotate(corners.begin(), std::min_element(corners.begin(), corners.end()), corners.end());
+      std::array<double, 9> triangle;
+      for (int c = 0; c < 9; ++c)
+      {
+        triangle[c] = corners[c / 3][c % 3];
+      }
+      this->Triangles.push_back(triangle);
+    }
+    for (std::size_t v = 0; v < mesh.Points.size() / 3; ++v)
+    {
+      this->Normals[vertex(static_cast<nv::VertexId>(v))] = { { mesh.Normals[3 * v], mesh.Normals[3 * v + 1],
+        mesh.Normals[3 * v + 2] } };
+    }
+  }
+  /// Whether `part` holds only triangles and normals of this surface.
+  bool Holds(const SurfaceByCoordinates& part) const
+  {
+    for (const auto& normal : part.Normals)
+    {
+      const auto it = this->Normals.find(normal.first);
+      if (it == this->Normals.end() || it->second != normal.second)
+      {
+        return false;
+      }
+    }
+    return true;
+  }
+};
+
 /// The shipped run (nv::Reconstruction): each rank holds an uneven share of
 /// the points, spread over the whole shape (one rank holds none); the run
 /// weights the brick layers by the points, splits them, moves the points to
 /// the ranks that need them and evolves the band. Every rank agrees on the
-/// grid, and its owned nodes have exactly the serial phi.
-void TestDistributedRun(int ranks)
+/// grid, and its owned nodes have exactly the serial phi. The ranks' pieces
+/// of the surface together are the serial surface: the same triangles, with
+/// the same vertices and normals to the bit (the shared planes' vertices made
+/// on both sides from the same values).
+void TestDistributedRun(int ranks, bool preserve = false)
 {
   const double center[3] = { 0.1, -0.2, 0.3 };
   const std::vector<double> points = nvtest::SpherePoints(800, 0.5, center);
   nv::Settings settings;
+  settings.PreserveOffset = preserve;
+  settings.MaximumNumberOfIterations = preserve ? 10 : settings.MaximumNumberOfIterations;
   settings.OffsetDistance = 0.08;
   settings.MaximumDimension = 60;
   settings.MemoryLimitBytes = 1e9;
   nv::Reconstruction serial(settings, nullptr, nullptr);
   NV_CHECK(serial.Run(points));
+  nv::SurfaceMesh serialMesh;
+  NV_CHECK(serial.ExtractSurface(serialMesh));
+  SurfaceByCoordinates serialSurface;
+  serialSurface.Add(serialMesh);
+  std::sort(serialSurface.Triangles.begin(), serialSurface.Triangles.end());
   std::unordered_map<std::int64_t, double> serialPhi;
   for (std::int64_t s = 0; s < serial.GetBand().Size(); ++s)
   {
@@ -236,6 +314,7 @@ void TestDistributedRun(int ranks)
   std::vector<std::int64_t> owned(static_cast<std::size_t>(ranks), 0);
   std::vector<int> mismatches(static_cast<std::size_t>(ranks), 0);
   std::vector<int> sameGrid(static_cast<std::size_t>(ranks), 0);
+  std::vector<SurfaceByCoordinates> surfaces(static_cast<std::size_t>(ranks));
   std::vector<std::thread> threads;
   for (int rank = 0; rank < ranks; ++rank)
   {
@@ -263,6 +342,9 @@ void TestDistributedRun(int ranks)
         mismatches[rank] = -1;
         return;
       }
+      nv::SurfaceMesh mesh;
+      NV_CHECK(run.ExtractSurface(mesh));
+      surfaces[rank].Add(mesh);
       sameGrid[rank] = run.GetGrid().Dims == serial.GetGrid().Dims &&
         run.GetGrid().Origin == serial.GetGrid().Origin && run.GetGrid().Spacing == serial.GetGrid().Spacing &&
         run.NumberOfBandNodes() == serial.NumberOfBandNodes();
@@ -291,6 +373,17 @@ void TestDistributedRun(int ranks)
     total += owned[rank];
   }
   NV_CHECK(total == static_cast<std::int64_t>(serialPhi.size()));
+  SurfaceByCoordinates pieces;
+  for (const SurfaceByCoordinates& surface : surfaces)
+  {
+    NV_CHECK(serialSurface.Holds(surface));
+    pieces.Triangles.insert(pieces.Triangles.end(), surface.Triangles.begin(), surface.Triangles.end());
+  }
+  std::sort(pieces.Triangles.begin(), pieces.Triangles.end());
+  std::printf("%d ranks: %zu triangles in the pieces, %zu in the serial surface\n", ranks, pieces.Triangles.size(),
+    serialSurface.Triangles.size());
+  NV_CHECK(serialSurface.Triangles.size() > 1000);
+  NV_CHECK(pieces.Triangles == serialSurface.Triangles);
 }
 
 /// Errors are every rank's: no points anywhere, or a NaN on one rank.
@@ -345,6 +438,15 @@ int main()
   {
     TestDistributedRun(ranks);
   }
+  // PreserveOffset: the same, serial phi on every rank.
+  for (int ranks : { 2, 3, 5 })
+  {
+    TestDistributedSolve(nv::Domain::NarrowBand, ranks, {}, true);
+    TestDistributedRun(ranks, true);
+  }
+  TestDistributedSolve(nv::Domain::NarrowBand, 4, { 0.0, 0.0, 9.0, 1.0, 0.0 }, true);
+  TestDistributedSolve(nv::Domain::NarrowBand, 12, {}, true);
+  TestDistributedSolve(nv::Domain::WholeDomain, 3, {}, true);
   TestDistributedErrors();
   return nvtest::Result("TestCorePartition");
 }

@@ -91,11 +91,18 @@ int main()
   withInf[3 * 5 + 2] = -inf;
   ExpectError(filter, Cloud(withInf), "Input point 5 has a non-finite coordinate");
 
-  for (double offset : { 0.0, -0.1, nan, inf })
+  for (double offset : { -0.1, nan, inf })
   {
     auto f = Filter();
     f->SetOffsetDistance(offset);
     ExpectError(f, Cloud(good), "OffsetDistance must be a finite value > 0");
+  }
+  {
+    // OffsetDistance 0 follows the points' spacing, which one point (or
+    // copies of one point) does not have.
+    auto f = Filter();
+    f->SetOffsetDistance(0.0);
+    ExpectError(f, Cloud({ 0.5, 0.5, 0.5, 0.5, 0.5, 0.5 }), "An automatic OffsetDistance needs at least two distinct points");
   }
   for (double spacing : { nan, inf, -inf })
   {

@@ -44,6 +44,27 @@ try:
     result["cloud_visible"] = bool(pvs.GetDisplayProperties(cloud, view).Visibility)
     result["volume_extent"] = list(shell.GetDataInformation(0).GetExtent())
     SaveScreenshot(os.environ["NV_SCREENSHOT"], view, ImageResolution=[800, 600])
+    # The offset the run chose, and the slider's range (the offset property's bounds domain).
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    field = algorithm.GetOutputDataObject(0).GetFieldData()
+    result["offset_used"] = float(field.GetArray("OffsetDistance").GetValue(0))
+    result["offset_slider"] = [shell.GetProperty("OffsetDistance").SMProperty.GetDomain("bounds").GetMinimum(0),
+                               shell.GetProperty("OffsetDistance").SMProperty.GetDomain("bounds").GetMaximum(0)]
+    result["cloud_extent"] = max(b - a for a, b in zip(cloud.GetDataInformation().GetBounds()[::2],
+                                                         cloud.GetDataInformation().GetBounds()[1::2]))
+    # The points alone, as they show after Apply: drawn pixels differ from the background.
+    pvs.Hide(OutputPort(shell, 1), view)
+    pvs.Hide(OutputPort(shell, 0), view)
+    cloud_png = os.environ["NV_SCREENSHOT"].replace(".png", "_points.png")
+    SaveScreenshot(cloud_png, view, ImageResolution=[400, 300])
+    from vtkmodules.vtkIOImage import vtkPNGReader
+    png = vtkPNGReader()
+    png.SetFileName(cloud_png)
+    png.Update()
+    pixels = vtk_to_numpy(png.GetOutput().GetPointData().GetScalars())[:, :3].astype(int)
+    result["cloud_pixels"] = int((abs(pixels - pixels[0]).sum(axis=1) > 30).sum())
+    pvs.Show(OutputPort(shell, 1), view)
+    pvs.Show(OutputPort(shell, 0), view)
     # ParaView's filters on the Volume port, as a user applies them (and
     # Apply shows them), with their defaults except for what the test needs:
     # Slice and Clip through the centre of the bounds, Threshold phi in

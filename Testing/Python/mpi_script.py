@@ -10,7 +10,9 @@ OUT/surface.pvtp. With the volume on, ParaView's Slice, Clip, Threshold,
 Contour, ResampleToImage and PlotOverLine run on the Volume output and what
 they give goes to OUT/downstream.json.
 
-    mpi_script.py PLUGIN OUT CLOUD OUTPUT_VOLUME(0|1)
+    mpi_script.py PLUGIN OUT CLOUD OUTPUT_VOLUME(0|1) [PRESERVE_OFFSET(0|1)]
+
+With PRESERVE_OFFSET 1 the filter runs 10 steps with PreserveOffset on.
 """
 import json
 import sys
@@ -20,6 +22,7 @@ import paraview.simple as pvs
 import nvtesting
 
 plugin, out, cloud, output_volume = sys.argv[1], sys.argv[2], sys.argv[3], int(sys.argv[4])
+preserve = len(sys.argv) > 5 and int(sys.argv[5])
 pvs.LoadPlugin(plugin, ns=globals())
 
 # Runs on every rank: piece p of n gets an uneven share of the points.
@@ -28,6 +31,9 @@ split.Script = nvtesting.split_cloud_script(cloud)
 
 shell = NarrowVolumeReconstruction(Input=split, OffsetDistance=0.08, MaximumDimension=90,  # noqa: F821
                                    OutputVolume=output_volume)
+if preserve:
+    shell.PreserveOffset = 1
+    shell.MaximumNumberOfIterations = 10
 
 # The information pass on every rank (this script runs on rank 0 only; a
 # ProgrammableFilter's information script runs on each): the grid port 0

@@ -131,6 +131,42 @@ class Checker:
         sys.exit(1 if self.failures else 0)
 
 
+def _vertices_by_edge(surface, origin, h):
+    """{(i, j, k, axis) of the grid edge: fraction of h along it} for the
+    surface's vertices, and the number within 1e-4 h of a node (which cannot
+    tell their edge)."""
+    u = (points_of(surface).astype(float) - np.asarray(origin)) / h
+    off = np.abs(u - np.round(u))
+    axis = off.argmax(axis=1)
+    at_node = off.max(axis=1) <= 1e-4
+    rows = np.arange(len(u))[~at_node]
+    edges = {}
+    for r in rows:
+        a = axis[r]
+        key = tuple(int(np.floor(u[r, b])) if b == a else int(round(u[r, b])) for b in range(3)) + (int(a),)
+        edges[key] = u[r, a] - np.floor(u[r, a])
+    return edges, int(at_node.sum())
+
+
+def cut_edge_shift(surface, reference, origin, h, margin=1e-3):
+    """Whether the surface's vertices lie on the reference's cut edges of the
+    grid, one each; then the largest move along an edge (in h) from the
+    reference's vertex, itself first moved `margin` h off the nodes (the
+    filter keeps its vertices that far from them). -1 if the edges differ."""
+    ours, ours_at_nodes = _vertices_by_edge(surface, origin, h)
+    theirs, theirs_at_nodes = _vertices_by_edge(reference, origin, h)
+    shift, unmatched = 0.0, 0
+    for key, t in ours.items():
+        if key in theirs:
+            shift = max(shift, abs(t - min(1.0 - margin, max(margin, theirs[key]))))
+        elif abs(t - margin) < 1e-6 or abs(t - 1.0 + margin) < 1e-6:
+            unmatched += 1  # the reference's vertex sits on the node
+        else:
+            return -1.0
+    same = ours_at_nodes == 0 and unmatched == theirs_at_nodes and len(ours) - unmatched == len(theirs)
+    return shift if same else -1.0
+
+
 def face_normal_roughness(surface):
     """Mean angle (degrees) between the normals of triangles that share an
     edge: 0 for a plane, small for a smooth surface, larger for a wrinkled one."""

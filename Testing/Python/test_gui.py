@@ -38,7 +38,15 @@ if os.path.exists(env["NV_GUI_RESULT"]):
     print(json.dumps(result, indent=1))
     t.check(result.get("ok"), "script ran through: %s" % result.get("error"))
     t.check(result.get("label") == "Narrow Volume Reconstruction", "filter label")
-    t.check(result.get("offset_default", 0) > 0, "offset default from the input's size")
+    t.check(result.get("offset_default") == 0.0, "offset default 0: automatic (%s)" % result.get("offset_default"))
+    extent = result.get("cloud_extent", 0.0)
+    print("GUI: offset used %s, slider %s, cloud's largest side %s, cloud pixels %s" % (
+        result.get("offset_used"), result.get("offset_slider"), extent, result.get("cloud_pixels")))
+    t.check(0.0 < result.get("offset_used", 0.0) < 0.05 * extent, "the automatic offset follows the sampling")
+    slider = result.get("offset_slider") or [1.0, 0.0]
+    t.check(slider[0] == 0.0 and slider[1] > 5.0 * result.get("offset_used", 1e9),
+            "the offset slider reaches well beyond the automatic offset: %s" % slider)
+    t.check(result.get("cloud_pixels", 0) > 500, "the input points are drawn after Apply (%s pixels)" % result.get("cloud_pixels"))
     t.check(result.get("surface_cells", 0) > 10000, "surface computed with the panel's defaults")
     t.check(result.get("volume_points", 0) > 100000, "volume computed")
     t.check(result.get("cloud_visible"), "the input points stay visible")

@@ -76,8 +76,10 @@ def scalars_of(data):
     return vtk_to_numpy(array).astype(float) if array is not None else np.zeros(0)
 
 
-# --- vtkFlyingEdges3D at phi = 0 drives the run: the filter's own surface
-# (flying edges on the same phi), so the same triangle count exactly.
+# --- vtkFlyingEdges3D at phi = 0 drives the run: the filter's own surface is
+# the same zero level (contoured from the distance phi implies), so the same
+# cut edges and triangle count exactly, each vertex moved along its edge by
+# at most 0.022 h (issue 13).
 (iso, iso_copy) = connected(vtkFlyingEdges3D, lambda a: a.SetValue(0, 0.0))
 volume, surface = f.GetOutput(0), f.GetOutput(1)
 print("the run: extent %s, origin %s, spacing %s" % (volume.GetExtent(), volume.GetOrigin(), volume.GetSpacing()))
@@ -89,13 +91,12 @@ t.check(volume.GetPointData().GetScalars() is not None and volume.GetPointData()
 phi = scalars_of(volume)
 nx, ny, nz = volume.GetDimensions()
 h = spacing[0]
-gap = (float(np.max(np.abs(nvtesting.points_of(iso) - nvtesting.points_of(surface))))
-       if iso.GetNumberOfPoints() == surface.GetNumberOfPoints() else -1.0)
-print("vtkFlyingEdges3D: %d triangles, %d points; port 1: %d triangles, %d points; farthest point pair %.2g (h = %.3g)"
+shift = nvtesting.cut_edge_shift(surface, iso, origin, h)
+print("vtkFlyingEdges3D: %d triangles, %d points; port 1: %d triangles, %d points; vertices moved by %.3g h at most"
       % (iso.GetNumberOfPolys(), iso.GetNumberOfPoints(), surface.GetNumberOfPolys(), surface.GetNumberOfPoints(),
-         gap, h))
+         shift))
 t.check(iso.GetNumberOfPolys() == surface.GetNumberOfPolys() > 1000, "flying edges: the surface's triangles")
-t.check(0 <= gap < 1e-4 * h, "flying edges: the surface's points")
+t.check(0 <= shift < 0.025, "flying edges: the surface's points on the same cut edges")
 t.check(iso.GetNumberOfPolys() == iso_copy.GetNumberOfPolys() and
         np.array_equal(nvtesting.points_of(iso), nvtesting.points_of(iso_copy)), "flying edges: as on a copy")
 

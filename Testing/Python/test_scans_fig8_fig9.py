@@ -45,6 +45,7 @@ def shell(xyz, cells, offset_cells, **settings):
     f.SetInputData(nvtesting.cloud(xyz))
     f.SetSampleSpacing(h)
     f.SetOffsetDistance(offset_cells * h)
+    f.SetRemoveSmallPieces(False)  # the paper's figures show every piece
     for key, value in settings.items():
         getattr(f, "Set" + key)(value)
     f.Update()

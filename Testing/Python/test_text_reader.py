@@ -11,6 +11,7 @@ from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkCommand
 
 from narrowvolume import vtkNarrowVolumeReconstruction, vtkPointCloudTextReader
+import nvpointfiles
 import nvtesting
 
 t = nvtesting.Checker("test_text_reader")
@@ -78,4 +79,11 @@ t.check(len(errors) > 0, "malformed file: an error")
 ragged = write("ragged.xyz", "0 0 0\n1 1 1 5\n")
 _, cloud, errors = read(ragged)
 t.check(cloud.GetNumberOfPoints() == 0 and errors, "ragged columns: an error and an empty output")
+# A molecular XYZ file (ParaView's XYZ Reader's format, which shares the
+# extension): the error says which reader to pick instead.
+molecule = write("water.xyz", "3\nwater\nO 0.0 0.0 0.117\nH 0.0 0.757 -0.467\nH 0.0 -0.757 -0.467\n")
+_, cloud, errors = nvpointfiles.read(vtkPointCloudTextReader, molecule)
+t.check(cloud.GetNumberOfPoints() == 0 and any("ParaView's XYZ Reader" in str(e) and "line 3" in str(e)
+                                               for e in errors),
+        "molecular XYZ: an empty output and an error naming line 3 and the XYZ Reader (%s)" % errors)
 t.finish()

@@ -1,7 +1,8 @@
 # SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
 # SPDX-License-Identifier: BSD-3-Clause
 """OutputVolume off: the same surface, without the dense volume, and a peak
-memory that follows the band rather than the box.
+memory that follows the band rather than the box (the volume costs its
+dense phi and nothing more).
 
 Each memory figure is the peak resident set of a fresh child process that
 runs the filter once on a sphere (500 cells across: 125 million grid nodes,
@@ -34,8 +35,10 @@ for volume in (True, False):
     t.check(image.GetPointData().GetArray("phi") is not None if volume else image.GetPointData().GetNumberOfArrays() == 0,
             "volume arrays only when asked (OutputVolume %s)" % volume)
     t.check(image.GetDimensions()[0] > 1, "the grid's geometry is there either way")
-on, off = (np.sort(nvtesting.points_of(surfaces[v]).view("f4,f4,f4").ravel()) for v in (True, False))
-t.check(len(on) == len(off) and bool((on == off).all()), "same vertices with and without the volume")
+# Rows sorted (the points are doubles: compare them as such).
+on, off = (nvtesting.points_of(surfaces[v]) for v in (True, False))
+on, off = (x[np.lexsort(x.T[::-1])] for x in (on, off))
+t.check(on.shape == off.shape and bool((on == off).all()), "same vertices with and without the volume")
 t.check(surfaces[True].GetNumberOfPolys() == surfaces[False].GetNumberOfPolys(), "same triangles")
 t.check(nvtesting.boundary_edges(surfaces[False]) == 0, "closed without the volume")
 t.check(nvtesting.regions(surfaces[False]) == 2, "two sheets without the volume")
@@ -50,8 +53,9 @@ f.SetInputData(nvtesting.cloud(nvshapes.sphere_points(0.004)))
 f.SetOffsetDistance(0.008)
 f.SetMaximumDimension(500)
 f.SetOutputVolume(%s)
+before = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
 f.Update()
-print(json.dumps(dict(rss=resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0,
+print(json.dumps(dict(rss=resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0, before=before,
                       nodes=f.GetNumberOfGridNodes(), band=f.GetNumberOfBandNodes(),
                       triangles=f.GetOutput(1).GetNumberOfPolys())))
 """
@@ -67,6 +71,15 @@ if len(peaks) == 2:
     print("grid %d nodes, band %d: peak %.0f MB with the volume, %.0f MB without" % (
         on["nodes"], on["band"], on["rss"], off["rss"]))
     t.check(on["triangles"] == off["triangles"], "same surface in both children")
-    # The dense phi alone is 4 bytes a node; without it, the peak must drop by at least that.
-    t.check(on["rss"] - off["rss"] > 4.0 * on["nodes"] / 2 ** 20, "memory follows the band without the volume")
+    # The volume costs its dense phi, 4 bytes a node, and nothing more: the
+    # surface is made from the band (no dense isosurfacer memory), and without
+    # the volume nothing follows the box. Each child's peak is taken above its
+    # own memory before the run (Python's varies by a few MiB). The
+    # allocator's reuse of freed pages moves the difference by up to 2 %
+    # either way (measured: 471.8 to 485.1 MiB for a phi of 479.7 MiB); a
+    # dense array of the box without the volume would make it about 0.
+    phi = 4.0 * on["nodes"] / 2 ** 20
+    cost = (on["rss"] - on["before"]) - (off["rss"] - off["before"])
+    print("the volume costs %.1f MiB, its phi %.1f MiB" % (cost, phi))
+    t.check(0.95 * phi < cost < 1.05 * phi, "memory follows the band without the volume")
 t.finish()

@@ -14,19 +14,22 @@
  *   same way);
  * - any other count: "Column4", "Column5", ... as scalars.
  * A first line of column names (CSV), a first line holding a single integer
- * (the point count of .pts files) and lines starting with # or // are skipped. The output has one vertex cell
- * per point, so ParaView shows the cloud at once. A malformed line is a clear
- * error naming the line, with an empty output.
+ * (the point count of .pts files) and lines starting with # or // are
+ * skipped. The output has one vertex cell per point, so ParaView shows the
+ * cloud at once. A malformed line is a clear error naming the line, with an
+ * empty output.
+ *
+ * @sa vtkLASPointCloudReader vtkPCDPointCloudReader
  */
 #ifndef vtkPointCloudTextReader_h
 #define vtkPointCloudTextReader_h
 
-#include "NarrowVolumeFiltersModule.h" // for export macro
+#include "NarrowVolumeReadersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
 #include <string> // for the file name
 
-class NARROWVOLUMEFILTERS_EXPORT vtkPointCloudTextReader : public vtkPolyDataAlgorithm
+class NARROWVOLUMEREADERS_EXPORT vtkPointCloudTextReader : public vtkPolyDataAlgorithm
 {
 public:
   static vtkPointCloudTextReader* New();

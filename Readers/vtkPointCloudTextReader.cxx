@@ -4,16 +4,17 @@
 
 #include "vtkCellArray.h"
 #include "vtkFloatArray.h"
-#include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
+#include "vtkPointCloudVertices.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -43,6 +44,22 @@ bool ParseLine(const std::string& line, std::vector<double>& values)
     p = end;
   }
   return true;
+}
+
+/// "C 0.1 2.3 4.5": an element symbol, then x y z, as in molecular XYZ files
+/// (ParaView's XYZ Reader also claims the .xyz extension).
+bool LooksLikeAtom(const std::string& line)
+{
+  std::size_t at = line.find_first_not_of(" \t");
+  std::size_t letters = 0;
+  while (at < line.size() && std::isalpha(static_cast<unsigned char>(line[at])))
+  {
+    ++at;
+    ++letters;
+  }
+  std::vector<double> values;
+  return letters >= 1 && letters <= 3 && at < line.size() && ParseLine(line.substr(at), values) &&
+    values.size() >= 3;
 }
 
 bool IsComment(const std::string& line)
@@ -167,7 +184,11 @@ int vtkPointCloudTextReader::RequestData(
     }
     if (!ParseLine(line, v))
     {
-      vtkErrorMacro(<< this->FileName << ", line " << lineNumber << ": not a list of numbers: \"" << line << "\".");
+      vtkErrorMacro(<< this->FileName << ", line " << lineNumber << ": not a list of numbers: \"" << line << "\"."
+                    << (LooksLikeAtom(line)
+                           ? " This looks like a molecular XYZ file (an element, then x y z): open it with "
+                             "ParaView's XYZ Reader (File > Open, file type \"XMol Molecule Files\")."
+                           : ""));
       output->Initialize();
       return 0;
     }
@@ -215,18 +236,8 @@ int vtkPointCloudTextReader::RequestData(
       others[o]->InsertNextValue(static_cast<float>(v[layout.Others[o]]));
   }
 
-  const vtkIdType n = points->GetNumberOfPoints();
-  vtkNew<vtkCellArray> vertices;
-  vtkNew<vtkIdTypeArray> offsets, connectivity;
-  offsets->SetNumberOfValues(n + 1);
-  connectivity->SetNumberOfValues(n);
-  for (vtkIdType i = 0; i <= n; ++i)
-    offsets->SetValue(i, i);
-  for (vtkIdType i = 0; i < n; ++i)
-    connectivity->SetValue(i, i);
-  vertices->SetData(offsets, connectivity);
   output->SetPoints(points);
-  output->SetVerts(vertices);
+  output->SetVerts(nv::VertexCells(points->GetNumberOfPoints()));
   if (layout.IntensityColumn >= 0)
     output->GetPointData()->AddArray(intensity);
   if (layout.NormalColumn >= 0)

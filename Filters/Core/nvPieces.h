@@ -1,0 +1,53 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+// SPDX-License-Identifier: BSD-3-Clause
+// Small pieces of the shell: loose balls around lone points or small clumps
+// of points (a point farther than 2 l from every other one gets a ball of its
+// own, eq. 2), and tiny voids left inside a wall where the sampling is uneven.
+// Neither is part of the narrow volume a user wants to print or measure, so by
+// default both are removed:
+//
+// - a piece (a closed part of the phi = 0 surface around a region of phi > 0)
+//   smaller than a ball of radius 2 l, that is, than about eight loose balls
+//   together, becomes outside;
+// - a void (a closed part around a region of phi < 0 enclosed by the shell)
+//   smaller than a ball of radius l becomes inside.
+//
+// Larger regions stay: the shell itself, the cavity it encloses, and parts of
+// the model that are separate but not small. The surface decides (its parts
+// are what a user sees and prints); the volume's phi is then flipped in the
+// same regions (FlipRegion), so that contouring it gives the same surface.
+#ifndef nvPieces_h
+#define nvPieces_h
+
+#include "nvGrid.h"
+
+#include <cstdint>
+
+namespace nv
+{
+
+struct RemovedPieces
+{
+  std::int64_t Pieces = 0; ///< loose pieces made outside
+  std::int64_t Voids = 0;  ///< tiny voids made inside
+};
+
+/// The volume below which a piece is removed: a ball of radius 2 l.
+double SmallPieceVolume(double offset);
+/// The volume below which a void is removed: a ball of radius l.
+double SmallVoidVolume(double offset);
+
+/**
+ * Flips the sign of phi over the 6-connected region of nodes of one sign
+ * (inside: phi > 0, else phi <= 0) next to `point`, a vertex of the region's
+ * surface, so that no phi = 0 surface is left around it. phi holds the node
+ * layers [kBegin, kBegin + layers) of the grid. A region larger than
+ * maximumVolume (it joins a large one through a node the surface does not
+ * see) is left as it is; returns whether the region was flipped.
+ */
+bool FlipRegion(const Grid& grid, float* phi, std::int64_t kBegin, std::int64_t layers, const double point[3],
+  bool inside, double maximumVolume);
+
+} // namespace nv
+
+#endif

@@ -1,0 +1,76 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+// SPDX-License-Identifier: BSD-3-Clause
+// How densely the cloud is sampled, and the automatic offset and spacing that
+// follow from it.
+//
+// The shell is the set of nodes closer than l to some point (eq. 2, 6): the
+// union of balls of radius l around the points. Where two neighbouring points
+// are farther apart than l, the wall between them thins (its thickness at the
+// midpoint of two points d apart is 2 sqrt(l^2 - d^2 / 4), and less between
+// three or more) until the evolution opens it: a tunnel through the wall, or,
+// beyond 2 l, a loose ball around a lone point. So the spacing statistic that
+// matters is each point's distance to its nearest neighbour, d1:
+//
+// - the automatic offset is l = max(1.5 median(d1), the 99.9th percentile of
+//   d1): the walls close wherever 999 in 1000 points have a neighbour within
+//   l, and l stays near the sampling scale, so that detail survives;
+// - the automatic spacing is the paper's h = l / 4 (section 4), unless the
+//   grid's longest side would then exceed AutomaticMaximumDimension cells:
+//   then h is that side over AutomaticMaximumDimension and l at least 4 h;
+// - a gap is a group of points whose nearest neighbour is farther than l: the
+//   run reports how many there are and where the widest is.
+#ifndef nvSampling_h
+#define nvSampling_h
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace nv
+{
+class Communicator;
+
+/// The longest side, in cells, of a grid whose spacing is chosen automatically.
+constexpr int AutomaticMaximumDimension = 320;
+
+struct SamplingStatistics
+{
+  std::int64_t Points = 0;     ///< all points (all processes)
+  double MedianSpacing = 0.0;  ///< median distance to the nearest other point
+  double WideSpacing = 0.0;    ///< its 99.9th percentile
+  bool Valid() const { return this->MedianSpacing > 0.0; }
+};
+
+struct GapReport
+{
+  std::int64_t Gaps = 0;      ///< groups of gap points (closer than 2 l to each other)
+  std::int64_t GapPoints = 0; ///< points whose nearest neighbour is farther than l
+  double LargestGap = 0.0;    ///< the largest such distance
+  std::array<double, 3> LargestGapCenter{ { 0.0, 0.0, 0.0 } }; ///< midpoint of that pair
+};
+
+/**
+ * Nearest-neighbour distances of a cloud. In a distributed run the points are
+ * gathered on process 0, which measures them and shares the results: every
+ * process gets the same figures, equal to a serial run's.
+ */
+class Sampling
+{
+public:
+  /// Collective. Measures the distance from each point to its nearest other
+  /// point (duplicates of a point do not count as neighbours).
+  void Measure(const std::vector<double>& xyz, Communicator* communicator);
+  const SamplingStatistics& Statistics() const { return this->Stats; }
+  /// Collective. The gaps the shell of offset l may not bridge.
+  GapReport Gaps(double offset, Communicator* communicator) const;
+
+private:
+  std::vector<double> Points;        ///< all points (process 0 of a distributed run)
+  std::vector<double> Nearest;       ///< distance to the nearest other point
+  std::vector<std::int64_t> Partner; ///< that point
+  SamplingStatistics Stats;
+};
+
+} // namespace nv
+
+#endif

@@ -1,0 +1,159 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+// SPDX-License-Identifier: BSD-3-Clause
+#include "nvSurfaceField.h"
+
+#include "nvNarrowBand.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace nv
+{
+
+ImpliedDistance::ImpliedDistance(const Parameters& parameters)
+  : Scale(std::sqrt(2.0) * parameters.Xi())
+  , Cap(parameters.HalfBandWidth())
+{
+}
+
+float ImpliedDistance::operator()(double phi) const
+{
+  // atanh(phi) = log((1 + phi) / (1 - phi)) / 2, the faster form.
+  double psi = std::fabs(phi) < 1.0 ? 0.5 * this->Scale * std::log((1.0 + phi) / (1.0 - phi))
+                                    : std::copysign(this->Cap, phi);
+  return static_cast<float>(std::min(this->Cap, std::max(-this->Cap, psi)));
+}
+
+std::array<std::int64_t, 3> BrickDimensions(const Grid& grid)
+{
+  std::array<std::int64_t, 3> dims;
+  for (int a = 0; a < 3; ++a)
+  {
+    dims[a] = (grid.Dims[a] + BrickSize - 1) >> BrickShift;
+  }
+  return dims;
+}
+
+BrickField::~BrickField() = default;
+
+//------------------------------------------------------------------------------
+BandField::BandField(const NarrowBand& band, const std::vector<double>& phi, const Parameters& parameters)
+  : Band(band)
+  , Phi(phi)
+  , Psi(parameters)
+  , BrickDims(BrickDimensions(band.GridNodes))
+{
+}
+
+void BandField::Layer(std::int64_t layer, std::vector<float>& uniform, std::vector<std::int64_t>& varying) const
+{
+  // Bricks no point reaches are outside the shell; a reached brick without
+  // band nodes lies on one side of it (inside and outside nodes are never
+  // neighbours: their distances differ by eta > h).
+  const std::int64_t perLayer = this->BrickDims[0] * this->BrickDims[1];
+  uniform.assign(static_cast<std::size_t>(perLayer), this->Psi.Outside());
+  varying.clear();
+  std::int64_t first, last;
+  BricksInLayers(this->Band.Bricks, perLayer, layer, layer + 1, first, last);
+  for (std::int64_t a = first; a < last; ++a)
+  {
+    const std::uint64_t* inside = &this->Band.Inside[8 * a];
+    const bool allInside = std::all_of(inside, inside + 8, [](std::uint64_t w) { return w == ~std::uint64_t(0); });
+    const bool allOutside = std::all_of(inside, inside + 8, [](std::uint64_t w) { return w == 0; });
+    const bool banded =
+      this->Band.RedStart[a + 1] > this->Band.RedStart[a] || this->Band.BlackStart[a + 1] > this->Band.BlackStart[a];
+    if (banded || !(allInside || allOutside))
+    {
+      varying.push_back(this->Band.Bricks[a]);
+    }
+    else
+    {
+      uniform[this->Band.Bricks[a] - layer * perLayer] = allInside ? this->Psi.Inside() : this->Psi.Outside();
+    }
+  }
+}
+
+void BandField::Values(std::int64_t brick, float values[BrickNodes]) const
+{
+  const NarrowBand& band = this->Band;
+  const Grid& grid = band.GridNodes;
+  const std::int64_t a = std::lower_bound(band.Bricks.begin(), band.Bricks.end(), brick) - band.Bricks.begin();
+  // Nodes off the band: their side of the shell.
+  const std::uint64_t* inside = &band.Inside[8 * a];
+  for (int n = 0; n < BrickNodes; ++n)
+  {
+    values[n] = ((inside[n / 64] >> (n % 64)) & 1) ? this->Psi.Inside() : this->Psi.Outside();
+  }
+  // Band nodes: each colour's list, in ascending grid index, row by row of the brick.
+  const std::int64_t first[3] = { (brick % this->BrickDims[0]) << BrickShift,
+    ((brick / this->BrickDims[0]) % this->BrickDims[1]) << BrickShift,
+    (brick / (this->BrickDims[0] * this->BrickDims[1])) << BrickShift };
+  for (const auto* start : { &band.RedStart, &band.BlackStart })
+  {
+    std::int64_t s = (*start)[a];
+    const std::int64_t end = (*start)[a + 1];
+    for (int row = 0; row < BrickSize * BrickSize && s < end; ++row)
+    {
+      const int j = row % BrickSize, k = row / BrickSize;
+      if (first[1] + j >= grid.Dims[1] || first[2] + k >= grid.Dims[2])
+      {
+        continue;
+      }
+      const std::int64_t rowStart = grid.Index(first[0], first[1] + j, first[2] + k);
+      for (; s < end && band.Node[s] < rowStart + BrickSize; ++s)
+      {
+        values[BrickSize * row + (band.Node[s] - rowStart)] = this->Psi(this->Phi[s]);
+      }
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+DenseField::DenseField(
+  const Grid& grid, const float* phi, std::int64_t kBegin, std::int64_t kEnd, const Parameters& parameters)
+  : TheGrid(grid)
+  , Phi(phi)
+  , Begin(kBegin)
+  , End(kEnd)
+  , Psi(parameters)
+  , BrickDims(BrickDimensions(grid))
+{
+}
+
+void DenseField::Layer(std::int64_t layer, std::vector<float>& uniform, std::vector<std::int64_t>& varying) const
+{
+  const std::int64_t perLayer = this->BrickDims[0] * this->BrickDims[1];
+  uniform.assign(static_cast<std::size_t>(perLayer), this->Psi.Outside());
+  varying.clear();
+  if ((layer + 1) * BrickSize > this->Begin && layer * BrickSize < this->End)
+  {
+    for (std::int64_t b = 0; b < perLayer; ++b)
+    {
+      varying.push_back(layer * perLayer + b);
+    }
+  }
+}
+
+void DenseField::Values(std::int64_t brick, float values[BrickNodes]) const
+{
+  const Grid& grid = this->TheGrid;
+  const std::int64_t first[3] = { (brick % this->BrickDims[0]) << BrickShift,
+    ((brick / this->BrickDims[0]) % this->BrickDims[1]) << BrickShift,
+    (brick / (this->BrickDims[0] * this->BrickDims[1])) << BrickShift };
+  for (int k = 0; k < BrickSize; ++k)
+  {
+    for (int j = 0; j < BrickSize; ++j)
+    {
+      for (int i = 0; i < BrickSize; ++i)
+      {
+        const std::int64_t x = first[0] + i, y = first[1] + j, z = first[2] + k;
+        const bool present = x < grid.Dims[0] && y < grid.Dims[1] && z >= this->Begin && z < this->End;
+        values[i + BrickSize * (j + BrickSize * k)] = present
+          ? this->Psi(this->Phi[grid.Index(x, y, z) - this->Begin * grid.Dims[0] * grid.Dims[1]])
+          : this->Psi.Outside();
+      }
+    }
+  }
+}
+
+} // namespace nv

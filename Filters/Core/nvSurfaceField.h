@@ -1,0 +1,102 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+// SPDX-License-Identifier: BSD-3-Clause
+// The field whose zero level is the output surface, read brick by brick.
+//
+// phi = 0 is the surface, but phi itself is a poor field to contour: the
+// tanh profile of eq. (2) is saturated (|phi| > 0.99 on most nodes near the
+// surface), so gradients, hence normals, and the linear interpolation of
+// vertices along edges follow the grid rather than the surface. The profile's
+// inverse, the signed distance it implies,
+//
+//     psi = sqrt(2) xi atanh(phi)      (phi = tanh(psi / (sqrt(2) xi)), eq. 2),
+//
+// has the same sign, hence the same zero set and the same cut cells, and is
+// close to a distance: smooth surfaces come out smooth. Outside the band phi
+// is the Dirichlet value +-(1 - delta) of eq. (5) (its node's phi0 rounds to
+// it), whose psi is +-eta/2: psi is clamped there, and only the side of the
+// shell a node is on is needed, not its distance.
+#ifndef nvSurfaceField_h
+#define nvSurfaceField_h
+
+#include "nvGrid.h"
+#include "nvParameters.h"
+#include "nvTruncatedDistance.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace nv
+{
+struct NarrowBand;
+
+/// psi of phi, clamped to [-eta/2, eta/2]; its sign is phi's.
+class ImpliedDistance
+{
+public:
+  explicit ImpliedDistance(const Parameters& parameters);
+  float operator()(double phi) const;
+  /// The value at nodes outside the band: inside the shell +eta/2, outside -eta/2.
+  float Inside() const { return static_cast<float>(this->Cap); }
+  float Outside() const { return static_cast<float>(-this->Cap); }
+
+private:
+  double Scale; ///< sqrt(2) xi
+  double Cap;   ///< eta/2
+};
+
+/// A field on the grid's nodes, read by bricks (nvTruncatedDistance.h).
+class BrickField
+{
+public:
+  virtual ~BrickField();
+  /**
+   * Brick layer `layer` (0 <= layer < number of brick layers): `varying`,
+   * the bricks (ascending) where the field takes more than one value, and
+   * `uniform[bx + BrickDims[0] by]`, the value on each other brick (sized here).
+   */
+  virtual void Layer(std::int64_t layer, std::vector<float>& uniform, std::vector<std::int64_t>& varying) const = 0;
+  /// The values at a brick's nodes, index i + 8 (j + 8 k); nodes past the grid's end: any value.
+  virtual void Values(std::int64_t brick, float values[BrickNodes]) const = 0;
+};
+
+/**
+ * psi from the band: its nodes' phi, and +-eta/2 elsewhere by the side of
+ * the shell the node is on (NarrowBand::Inside). The band's ghost layers
+ * count: a distributed run contours its piece with the serial values.
+ */
+class BandField : public BrickField
+{
+public:
+  BandField(const NarrowBand& band, const std::vector<double>& phi, const Parameters& parameters);
+  void Layer(std::int64_t layer, std::vector<float>& uniform, std::vector<std::int64_t>& varying) const override;
+  void Values(std::int64_t brick, float values[BrickNodes]) const override;
+
+private:
+  const NarrowBand& Band;
+  const std::vector<double>& Phi;
+  ImpliedDistance Psi;
+  std::array<std::int64_t, 3> BrickDims;
+};
+
+/// psi from a dense phi on the node layers [kBegin, kEnd) (any value elsewhere).
+class DenseField : public BrickField
+{
+public:
+  DenseField(const Grid& grid, const float* phi, std::int64_t kBegin, std::int64_t kEnd, const Parameters& parameters);
+  void Layer(std::int64_t layer, std::vector<float>& uniform, std::vector<std::int64_t>& varying) const override;
+  void Values(std::int64_t brick, float values[BrickNodes]) const override;
+
+private:
+  Grid TheGrid;
+  const float* Phi;
+  std::int64_t Begin, End;
+  ImpliedDistance Psi;
+  std::array<std::int64_t, 3> BrickDims;
+};
+
+/// Bricks per axis of a grid.
+std::array<std::int64_t, 3> BrickDimensions(const Grid& grid);
+
+} // namespace nv
+
+#endif

@@ -1,0 +1,136 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+# SPDX-License-Identifier: BSD-3-Clause
+"""File > Open in the real ParaView client (under Xvfb, driven by a Qt test
+script of recorded GUI events, as ParaView's own GUI tests are): with the
+plugin auto-loaded, a plain x y z file named .xyz opens with the Point Cloud
+Text Reader at once, although ParaView's PLOT3D and molecular XYZ readers
+claim .xyz too (without the plugin's default a dialog asks which of the
+three to use), also after the Settings dialog was applied (which writes the
+settings proxies' values over the user's settings); .las, .pcd, .laz and
+.e57 files open with the plugin's readers, the last two Python readers
+loaded with the plugin.
+
+Two runs: the plugin auto-loaded at start-up, and loaded from the client's
+Python shell once it runs (as Tools > Manage Plugins loads it). The client
+runs with --dr (no user settings), so a user's own default readers cannot
+change the outcome. A dialog left open fails the test: the event that
+follows the Open finds no reader.
+
+    pvpython test_gui_open_files.py PLUGINS_XML WITH_XVFB
+"""
+import json
+import os
+import subprocess
+import sys
+import tempfile
+from xml.sax.saxutils import quoteattr
+
+import numpy as np
+
+import nvpointfiles as pf
+import nvtesting
+
+plugins_xml, with_xvfb = sys.argv[1:3]
+t = nvtesting.Checker("test_gui_open_files")
+folder = tempfile.mkdtemp(prefix="nv-gui-open-")
+xyz = nvtesting.sphere_points(500, 0.5)
+files = {"xyz": os.path.join(folder, "plain.xyz"), "las": os.path.join(folder, "cloud.las"),
+         "pcd": os.path.join(folder, "cloud.pcd"), "laz": os.path.join(folder, "cloud.laz"),
+         "e57": os.path.join(folder, "cloud.e57")}
+np.savetxt(files["xyz"], xyz, fmt="%.6f")
+pf.write_las(files["las"], 2, 3, xyz)
+pf.write_pcd(files["pcd"], [("x", "F", 4, 1), ("y", "F", 4, 1), ("z", "F", 4, 1)],
+             {"x": xyz[:, 0], "y": xyz[:, 1], "z": xyz[:, 2]}, "binary")
+for name in ("laz", "e57"):  # only opened, never read: the reader's choice is what is tested
+    with open(files[name], "wb") as f:
+        f.write(b"not read")
+PLUGIN_DIR = os.path.dirname(os.path.abspath(plugins_xml))
+plugin = os.path.join(PLUGIN_DIR, "NarrowVolume", "NarrowVolume.so")
+
+RECORD = """import json, os, traceback
+result = {}
+try:
+    from paraview import servermanager
+    from paraview.simple import GetSources
+    settings = servermanager.vtkSMSettings.GetInstance()
+    name = ".settings.RepresentedArrayListSettings.ReaderDetails"
+    result["settings"] = {"file": "", "reader": [settings.GetSettingAsString(name, k, "")
+                                                 for k in range(settings.GetSettingNumberOfElements(name))]}
+    for (name, _), proxy in GetSources().items():
+        filename = proxy.FileName if isinstance(proxy.FileName, str) else proxy.FileName[0]
+        entry = {"reader": proxy.GetXMLName(), "file": os.path.basename(filename)}
+        if entry["file"].endswith((".xyz", ".las", ".pcd")):
+            proxy.UpdatePipeline()
+            entry["points"] = proxy.GetDataInformation().GetNumberOfPoints()
+        result[name] = entry
+except Exception:
+    result["error"] = {"file": "", "reader": traceback.format_exc()}
+json.dump(result, open(%r, "w"))
+os._exit(0)
+"""
+
+
+def console(code, name):
+    """An event that runs `code` in the client's Python shell. The shell takes
+    one line at a time, as typed: the code runs from a file."""
+    path = os.path.join(folder, name + ".py")
+    with open(path, "w") as f:
+        f.write(code)
+    return ('  <pqevent object="pqClientMainWindow/pythonShellDock/pythonShell/consoleWidget" '
+            'command="executeCommand" arguments=%s />' % quoteattr("exec(open(%r).read())" % path))
+
+
+def scenario(label, autoload):
+    """Runs the client: the plugin auto-loaded at start-up (its settings
+    proxies are created after it), or loaded from the Python shell once the
+    client runs (as Tools > Manage Plugins does: the proxies exist already);
+    then Edit > Settings and OK, which writes every settings proxy's values
+    over the user's settings, and File > Open of each file."""
+    result_path = os.path.join(folder, label + ".json")
+    events = ['<?xml version="1.0" ?>', "<pqevents>"]
+    if not autoload:
+        events.append(console("from paraview.simple import LoadPlugin\nLoadPlugin(%r)\n" % plugin, label + "-load"))
+    events.append('  <pqevent object="pqClientMainWindow/menubar" command="activate" arguments="menu_Edit" />')
+    events.append('  <pqevent object="pqClientMainWindow/menubar/menu_Edit" command="activate" '
+                  'arguments="actionEditSettings" />')
+    events.append('  <pqevent object="pqClientMainWindow/ApplicationSettings/buttonBox/1QPushButton0" '
+                  'command="activate" arguments="" />')
+    for name in ("las", "pcd", "laz", "e57", "xyz"):  # xyz last: a dialog there blocks what follows
+        events.append('  <pqevent object="pqClientMainWindow/MainControlsToolbar/actionOpenData" '
+                      'command="activate" arguments="" />')
+        events.append('  <pqevent object="pqClientMainWindow/FileOpenDialog" command="filesSelected" '
+                      'arguments=%s />' % quoteattr(files[name]))
+    events.append(console(RECORD % result_path, label + "-record"))
+    events.append("</pqevents>")
+    script = os.path.join(folder, label + ".xml")
+    with open(script, "w") as f:
+        f.write("\n".join(events) + "\n")
+    env = dict(os.environ, NV_FORCE_XVFB="1")
+    env.pop("PV_PLUGIN_CONFIG_FILE", None)
+    if autoload:
+        env["PV_PLUGIN_CONFIG_FILE"] = plugins_xml
+    try:
+        run = subprocess.run([with_xvfb, "paraview", "--dr", "--test-script=" + script, "--exit"], env=env,
+                             capture_output=True, text=True, timeout=240)
+        explanation = nvtesting.explain(run)
+    except subprocess.TimeoutExpired:
+        explanation = "the client did not finish within 240 s (a dialog waiting for an answer?)"
+    if not t.check(os.path.exists(result_path), "%s: the client opened the files and ran the check: %s"
+                   % (label, explanation)):
+        return
+    opened = json.load(open(result_path))
+    print("%s: %s" % (label, json.dumps(opened)))
+    by_file = {entry["file"]: entry for entry in opened.values()}
+    expected = {"plain.xyz": "PointCloudTextReader", "cloud.las": "LASPointCloudReader",
+                "cloud.pcd": "PCDPointCloudReader", "cloud.laz": "LAZPointCloudReader",
+                "cloud.e57": "E57PointCloudReader"}
+    for name, reader in expected.items():
+        got = by_file.get(name, {}).get("reader")
+        t.check(got == reader, "%s: File > Open %s: %s, without a dialog (got %s)" % (label, name, reader, got))
+    for name in ("plain.xyz", "cloud.las", "cloud.pcd"):
+        t.check(by_file.get(name, {}).get("points") == 500, "%s: %s: 500 points in the GUI" % (label, name))
+
+
+scenario("auto-loaded", autoload=True)
+scenario("loaded-from-python", autoload=False)
+t.finish()
