@@ -49,8 +49,10 @@ done
 # themselves (--no-install-recommends). ParaView's CMake config also asks for
 # double-conversion in 5.13; ParaView 6.1's is on the external VTK, whose CMake
 # files and headers are in libvtk9-dev, and it builds the plugin's help with
-# xsltproc and Qt 6's help tools (5.13 skips that step with Qt 6).
-common_packages=(cmake ninja-build g++ python3-dev python3-numpy libopenmpi-dev openmpi-bin xvfb git)
+# xsltproc and Qt 6's help tools (5.13 skips that step with Qt 6). The tests
+# want numpy, pip (laspy, lazrs, pye57 for the LAZ and E57 readers), liblzf
+# (PCD's binary_compressed files), Open MPI's mpiexec, Xvfb and git.
+common_packages=(cmake ninja-build g++ python3-dev python3-numpy python3-pip liblzf1 libopenmpi-dev openmpi-bin xvfb git)
 packages_trixie=(paraview-dev python3-paraview libdouble-conversion-dev "${common_packages[@]}")
 packages_sid=(paraview-dev python3-paraview libvtk9-dev xsltproc qt6-tools-dev "${common_packages[@]}")
 
