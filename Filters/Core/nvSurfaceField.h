@@ -11,10 +11,11 @@
 //     psi = sqrt(2) xi atanh(phi)      (phi = tanh(psi / (sqrt(2) xi)), eq. 2),
 //
 // has the same sign, hence the same zero set and the same cut cells, and is
-// close to a distance: smooth surfaces come out smooth. Outside the band phi
-// is the Dirichlet value +-(1 - delta) of eq. (5) (its node's phi0 rounds to
-// it), whose psi is +-eta/2: psi is clamped there, and only the side of the
-// shell a node is on is needed, not its distance.
+// close to a distance: smooth surfaces come out smooth. psi is clamped to
+// +-eta/2, the psi of the Dirichlet values +-(1 - delta) of eq. (5): off the
+// band |phi0| >= 1 - delta, so there psi is +-eta/2 and only the side of the
+// shell a node is on is needed, not its distance. (With xi >= eps_1 the band
+// is at least 2 h wide, so a cut edge always has a band node at one end.)
 #ifndef nvSurfaceField_h
 #define nvSurfaceField_h
 
@@ -22,6 +23,7 @@
 #include "nvParameters.h"
 #include "nvTruncatedDistance.h"
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
