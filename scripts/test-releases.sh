@@ -52,7 +52,7 @@ done
 # xsltproc and Qt 6's help tools (5.13 skips that step with Qt 6). The tests
 # want numpy, pip (laspy, lazrs, pye57 for the LAZ and E57 readers), liblzf
 # (PCD's binary_compressed files), Open MPI's mpiexec, Xvfb and git.
-common_packages=(cmake ninja-build g++ python3-dev python3-numpy python3-pip liblzf1 libopenmpi-dev openmpi-bin xvfb git)
+common_packages=(ca-certificates cmake ninja-build g++ python3-dev python3-numpy python3-pip liblzf1 libopenmpi-dev openmpi-bin xvfb git)
 packages_trixie=(paraview-dev python3-paraview libdouble-conversion-dev "${common_packages[@]}")
 packages_sid=(paraview-dev python3-paraview libvtk9-dev xsltproc qt6-tools-dev "${common_packages[@]}")
 
@@ -171,6 +171,19 @@ install_packages() {
   echo "$wanted" >"$root/nv/.packages"
 }
 
+# trust_host_certificates ROOT: the CA certificates the host added to its
+# trust store (/usr/local/share/ca-certificates, e.g. a site's TLS proxy) are
+# trusted in the chroot too, so that pip there reaches PyPI as it does on the
+# host (InstallScanModules). Copied on every run; nothing when there are none.
+trust_host_certificates() {
+  local root="$1" dir="$1/usr/local/share/ca-certificates/nv-host"
+  rm -rf "$dir"
+  compgen -G "/usr/local/share/ca-certificates/*.crt" >/dev/null || return 0
+  mkdir -p "$dir"
+  cp /usr/local/share/ca-certificates/*.crt "$dir/"
+  run_in "$root" "update-ca-certificates" >/dev/null
+}
+
 # version_of FILE: PACKAGE_VERSION in a <name>-config-version.cmake.
 version_of() { sed -n 's/^set(PACKAGE_VERSION "\([^"]*\)")$/\1/p' "$1" | head -n 1; }
 
@@ -236,6 +249,12 @@ for release in "${releases[@]}"; do
   if ! install_packages "$root" "${packages[@]}" >"$logs/$release-apt.log" 2>&1; then
     tail -n 20 "$logs/$release-apt.log"
     summary+=("$release: FAILED to install packages, see $logs/$release-apt.log")
+    failed=1
+    release_root "$root"
+    continue
+  fi
+  if ! trust_host_certificates "$root" >>"$logs/$release-apt.log" 2>&1; then
+    summary+=("$release: FAILED to add the host's CA certificates, see $logs/$release-apt.log")
     failed=1
     release_root "$root"
     continue
