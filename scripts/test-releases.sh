@@ -19,7 +19,8 @@
 #   NV_DEBIAN_MIRROR  the Debian mirror (default http://deb.debian.org/debian)
 #
 # Needs root (debootstrap, chroot, mount); uses sudo otherwise. Installs
-# debootstrap on the host if it is missing. One release at a time.
+# debootstrap on the host if it is missing. One release at a time. Trusts the
+# host's own CA certificates in the chroots (pip behind a site proxy).
 set -uo pipefail
 
 if [ "$(id -u)" -ne 0 ]; then
@@ -39,7 +40,7 @@ for arg in "$@"; do
     --rebuild) rebuild=1 ;;
     --fresh) fresh=1 ;;
     trixie | sid) releases+=("$arg") ;;
-    -h | --help) sed -n '4,24p' "$0"; exit 0 ;;
+    -h | --help) sed -n '4,23p' "$0"; exit 0 ;;
     *) echo "test-releases: unknown argument $arg (see --help)" >&2; exit 2 ;;
   esac
 done
