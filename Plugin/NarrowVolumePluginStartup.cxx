@@ -16,6 +16,15 @@
 #define NARROWVOLUME_GETARGSPEC_SHIM 1
 #endif
 
+// The "Default reader details" setting belongs to the settings proxy
+// RepresentedArrayListSettings in ParaView 5.11 and to IOSettings from 5.12
+// on, where ParaView's File > Open looks it up.
+#if PARAVIEW_VERSION_MAJOR < 5 || (PARAVIEW_VERSION_MAJOR == 5 && PARAVIEW_VERSION_MINOR < 12)
+#define NARROWVOLUME_READER_SETTINGS "RepresentedArrayListSettings"
+#else
+#define NARROWVOLUME_READER_SETTINGS "IOSettings"
+#endif
+
 #include <vtksys/SystemTools.hxx>
 
 #include <dlfcn.h>
@@ -32,7 +41,7 @@ constexpr double SettingsPriority = 0.5;
 const char* const XYZEntry[3] = { "*.xyz", "Point Cloud Text Files (x y z)", "PointCloudTextReader" };
 const char* const XYZDefaultReader = R"json({
   "settings": {
-    "RepresentedArrayListSettings": {
+    ")json" NARROWVOLUME_READER_SETTINGS R"json(": {
       "ReaderDetails": ["*.xyz", "Point Cloud Text Files (x y z)", "PointCloudTextReader"]
     }
   }
@@ -47,7 +56,7 @@ vtkSMProxy* ReaderSettingsProxy()
     return nullptr;
   }
   vtkSMSessionProxyManager* proxies = vtkSMProxyManager::GetProxyManager()->GetActiveSessionProxyManager();
-  return proxies ? proxies->GetProxy("settings", "RepresentedArrayListSettings") : nullptr;
+  return proxies ? proxies->GetProxy("settings", NARROWVOLUME_READER_SETTINGS) : nullptr;
 }
 
 /// The folder of the shared library this function is in: the plugin's.

@@ -35,7 +35,11 @@ def main():
     args = [a for a in sys.argv[1:] if a != "--add"]
     add = "--add" in sys.argv[1:]
     top = args[0] if args else os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
-    listing = subprocess.run(["git", "ls-files"], cwd=top, capture_output=True, text=True)
+    try:
+        listing = subprocess.run(["git", "ls-files"], cwd=top, capture_output=True, text=True)
+    except FileNotFoundError:
+        print("license headers: skipped, git is not installed")
+        return 77
     if listing.returncode != 0:
         print("license headers: skipped, %s is not a git checkout" % top)
         return 77

@@ -126,7 +126,9 @@ if (WITH_PLUGIN)
     fail("the plugins XML is not installed at ${plugins_xml}")
   else ()
     file(READ "${plugins_xml}" xml)
-    if (NOT xml MATCHES "<Plugin name=\"NarrowVolume\" auto_load=\"1\"/>")
+    # ParaView 5.13 adds delayed_load="0" (paraview_plugin_build's DELAYED_LOAD),
+    # ParaView 6 the plugin's version and description.
+    if (NOT xml MATCHES "<Plugin name=\"NarrowVolume\" auto_load=\"1\"( delayed_load=\"0\")?( [a-z_]+=\"[^\"]*\")*/>")
       fail("${plugins_xml} does not list NarrowVolume for auto-loading:\n${xml}")
     endif ()
   endif ()

@@ -52,7 +52,10 @@ try:
     from paraview import servermanager
     from paraview.simple import GetSources
     settings = servermanager.vtkSMSettings.GetInstance()
-    name = ".settings.RepresentedArrayListSettings.ReaderDetails"
+    # The setting's group: IOSettings from ParaView 5.12 on.
+    version = (servermanager.vtkSMProxyManager.GetVersionMajor(), servermanager.vtkSMProxyManager.GetVersionMinor())
+    group = "IOSettings" if version >= (5, 12) else "RepresentedArrayListSettings"
+    name = ".settings." + group + ".ReaderDetails"
     result["settings"] = {"file": "", "reader": [settings.GetSettingAsString(name, k, "")
                                                  for k in range(settings.GetSettingNumberOfElements(name))]}
     for (name, _), proxy in GetSources().items():
