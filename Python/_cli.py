@@ -234,6 +234,7 @@ def main(argv=None):
     # File descriptor 2 itself: pvpython's sys.stderr answers isatty() for standard input.
     progress = Progress(sys.stderr, not args.quiet and os.isatty(2))
     start = time.perf_counter()
+    started = []  # output files begun
     try:
         cloud = read_cloud(args.cloud)
         if not args.quiet:
@@ -247,11 +248,18 @@ def main(argv=None):
                 progress.done()
         for warning in caught:
             print("narrowvolume: warning: %s" % warning.message, file=sys.stderr)
-        written = [(path, write(path, volume, surface)) for path in outputs]
+        written = []
+        for path in outputs:
+            started.append(path)
+            written.append((path, write(path, volume, surface)))
     except (Failure, narrowvolume.ReconstructionError) as failure:
         print("narrowvolume: error: %s" % failure, file=sys.stderr)
         return 1
     except KeyboardInterrupt:
+        # Python sees Ctrl-C when a writer returns: no output of an interrupted command stays.
+        for path in started:
+            if os.path.exists(path):
+                os.remove(path)
         print("narrowvolume: interrupted", file=sys.stderr)
         return 130
     if not args.quiet:

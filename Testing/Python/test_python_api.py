@@ -512,19 +512,25 @@ def test_cli_progress_on_a_terminal(tmp_path):
 
 
 def test_cli_ctrl_c(tmp_path):
-    """Ctrl-C stops the command: exit status 130, a message, no file."""
+    """Ctrl-C stops the command: exit status 130, a message, no file. The run
+    asked for (4,000 steps at 200 cells) takes minutes; the command must stop
+    well before (the time it took is printed; no wall-clock bound, which a
+    loaded machine would break)."""
     process = subprocess.Popen(nvtesting.python_command() + [
         "-m", "narrowvolume", TREFOIL, "-o", str(tmp_path / "a.stl"), "--maximum-dimension", "200",
-        "--maximum-number-of-iterations", "400"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        "--maximum-number-of-iterations", "4000"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     first = process.stdout.readline()  # "... points from ...": the run starts
     assert "points from" in first, first
     time.sleep(0.5)
     sent = time.perf_counter()
     process.send_signal(signal.SIGINT)
-    out, err = process.communicate(timeout=60)
+    try:
+        out, err = process.communicate(timeout=60)
+    except subprocess.TimeoutExpired:
+        process.kill()
+        raise AssertionError("the command did not stop within 60 s of Ctrl-C")
     print("exit %d %.2f s after Ctrl-C: %s" % (process.returncode, time.perf_counter() - sent, err.strip()))
     assert process.returncode == 130 and "interrupted" in err
-    assert time.perf_counter() - sent < 5.0
     assert not (tmp_path / "a.stl").exists()
 
 
