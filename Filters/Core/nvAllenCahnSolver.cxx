@@ -34,25 +34,44 @@ double AllenCahnSolver::EdgeStop(double phi0, EdgeStopping function)
   return function == EdgeStopping::Eq4 ? (1.0 - a) * a : 1.0 - phi0 * phi0;
 }
 
+std::vector<double> AllenCahnSolver::InitialField(const NarrowBand& band, const Parameters& parameters)
+{
+  const std::int64_t size = band.Size();
+  std::vector<double> phi(static_cast<std::size_t>(size + 2));
+  // Dirichlet values of eq. (5).
+  phi[band.InsideSlot()] = 1.0 - parameters.Delta;
+  phi[band.OutsideSlot()] = -1.0 + parameters.Delta;
+  const double xi = parameters.Xi();
+  const double l = parameters.OffsetDistance;
+  ParallelFor(0, size, Grain, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t s = begin; s < end; ++s)
+    {
+      phi[s] = InitialPhi(band.Distance[s], l, xi); // eq. (2); d = inf gives -1
+    }
+  });
+  return phi;
+}
+
 AllenCahnSolver::AllenCahnSolver(const NarrowBand& band, const Parameters& parameters, Halo* halo)
+  : AllenCahnSolver(band, parameters, InitialField(band, parameters), halo)
+{
+}
+
+AllenCahnSolver::AllenCahnSolver(
+  const NarrowBand& band, const Parameters& parameters, std::vector<double> phi0, Halo* halo)
   : Band(band)
   , Exchange(halo)
   , Params(parameters)
+  , Phi(std::move(phi0))
 {
   const std::int64_t size = band.Size();
-  this->Phi.resize(static_cast<std::size_t>(size + 2));
   this->Previous.resize(static_cast<std::size_t>(size));
   this->Coupling.resize(static_cast<std::size_t>(size));
   this->Decay.resize(static_cast<std::size_t>(size));
-  // Dirichlet values of eq. (5).
-  this->Phi[band.InsideSlot()] = 1.0 - parameters.Delta;
-  this->Phi[band.OutsideSlot()] = -1.0 + parameters.Delta;
 
   const double h = parameters.Spacing;
   const double dt = parameters.EffectiveTimeStep();
   const double eps = parameters.Epsilon();
-  const double xi = parameters.Xi();
-  const double l = parameters.OffsetDistance;
   const EdgeStopping function = parameters.EdgeFunction;
   // Over-relaxation: a fixed factor if given, else estimated during the
   // first sweeps (see Diffuse).
@@ -62,9 +81,8 @@ AllenCahnSolver::AllenCahnSolver(const NarrowBand& band, const Parameters& param
   ParallelFor(0, size, Grain, [&](std::int64_t begin, std::int64_t end) {
     for (std::int64_t s = begin; s < end; ++s)
     {
-      const double phi0 = InitialPhi(band.Distance[s], l, xi); // eq. (2); d = inf gives -1
-      const double g = EdgeStop(phi0, function);               // eq. (4) or (3)
-      this->Phi[s] = phi0;
+      const double phi0 = this->Phi[s];
+      const double g = EdgeStop(phi0, function); // eq. (4) or (3)
       const double c = dt * g / (h * h);
       this->Coupling[s] = c / (1.0 + 6.0 * c);
       this->Decay[s] = std::exp(-2.0 * g * dt / (eps * eps));

@@ -70,7 +70,17 @@ public:
    * global norms); null in a serial run.
    */
   AllenCahnSolver(const NarrowBand& band, const Parameters& parameters, Halo* halo = nullptr);
+  /**
+   * The same from phi^0 as InitialField returns it: the band's distances are
+   * not read, so a caller short of memory frees them first (the solver's
+   * three other arrays then take their place).
+   */
+  AllenCahnSolver(const NarrowBand& band, const Parameters& parameters, std::vector<double> phi0, Halo* halo = nullptr);
   ~AllenCahnSolver();
+
+  /// phi^0 of eq. (2) at the band nodes and the Dirichlet values of eq. (5)
+  /// in slots L and L + 1: the only use of the band's distances.
+  static std::vector<double> InitialField(const NarrowBand& band, const Parameters& parameters);
 
   /// phi0 = tanh((l - d) / (sqrt(2) xi)), eq. (2).
   static double InitialPhi(double distance, double offset, double xi);

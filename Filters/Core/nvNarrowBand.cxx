@@ -78,6 +78,26 @@ void NarrowBand::NodesInLayers(LayerRange layers, bool red, std::int64_t& begin,
   end = start[last];
 }
 
+void NarrowBand::BrickFirstNode(std::int64_t a, std::int64_t ijk[3]) const
+{
+  const std::int64_t dimX = (this->GridNodes.Dims[0] + BrickSize - 1) >> BrickShift;
+  const std::int64_t dimY = (this->GridNodes.Dims[1] + BrickSize - 1) >> BrickShift;
+  const std::int64_t brick = this->Bricks[a];
+  ijk[0] = (brick % dimX) << BrickShift;
+  ijk[1] = ((brick / dimX) % dimY) << BrickShift;
+  ijk[2] = (brick / (dimX * dimY)) << BrickShift;
+}
+
+std::int64_t NarrowBand::GridIndex(std::int64_t s) const
+{
+  // The last brick whose range of s's colour starts at or before s.
+  const std::vector<std::int64_t>& start = s < this->RedCount ? this->RedStart : this->BlackStart;
+  const std::int64_t a = (std::upper_bound(start.begin(), start.end(), s) - start.begin()) - 1;
+  std::int64_t ijk[3];
+  this->NodeIjk(a, s, ijk);
+  return this->GridNodes.Index(ijk[0], ijk[1], ijk[2]);
+}
+
 void NarrowBand::OwnedNodes(bool red, std::int64_t& begin, std::int64_t& end) const
 {
   if (this->RedStart.empty()) // a band without brick tables: all of it is owned
@@ -128,7 +148,7 @@ NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& 
   // apart, in ascending grid index. This transient list grows with the band.
   struct Entry
   {
-    std::int64_t Node;
+    std::uint16_t Offset; // in the brick
     double Distance;
   };
   struct BrickBand
@@ -144,7 +164,9 @@ NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& 
       BrickBand& out = perBrick[a];
       ForEachBandNode(distance, parameters, bricks[a], visitor, scratch, &band.Inside[a * BrickNodes / 64],
         [&](std::int64_t i, std::int64_t j, std::int64_t k, double d) {
-          (IsRed(i, j, k) ? out.Red : out.Black).push_back(Entry{ grid.Index(i, j, k), d });
+          const auto offset = static_cast<std::uint16_t>(
+            (i & (BrickSize - 1)) + BrickSize * ((j & (BrickSize - 1)) + BrickSize * (k & (BrickSize - 1))));
+          (IsRed(i, j, k) ? out.Red : out.Black).push_back(Entry{ offset, d });
         });
     }
   });
@@ -173,7 +195,7 @@ NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& 
   {
     blackStart[a] += band.RedCount;
   }
-  band.Node.resize(static_cast<std::size_t>(size));
+  band.Offset.resize(static_cast<std::size_t>(size));
   band.Distance.resize(static_cast<std::size_t>(size));
   ParallelFor(0, numberOfBricks, 64, [&](std::int64_t begin, std::int64_t end) {
     for (std::int64_t a = begin; a < end; ++a)
@@ -181,13 +203,13 @@ NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& 
       std::int64_t s = redStart[a];
       for (const Entry& e : perBrick[a].Red)
       {
-        band.Node[s] = e.Node;
+        band.Offset[s] = e.Offset;
         band.Distance[s++] = e.Distance;
       }
       s = blackStart[a];
       for (const Entry& e : perBrick[a].Black)
       {
-        band.Node[s] = e.Node;
+        band.Offset[s] = e.Offset;
         band.Distance[s++] = e.Distance;
       }
       std::vector<Entry>().swap(perBrick[a].Red);
@@ -200,10 +222,11 @@ NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& 
   // 512-bit occupancy mask of its band nodes (64 bytes a brick, nothing per
   // node); a neighbour's position in the band is the start of its brick's
   // colour range plus the number of same-coloured band nodes before it.
+  band.Bricks = std::move(bricks);
   std::vector<std::int32_t> slotOfBrick(static_cast<std::size_t>(distance.GetNumberOfBricks()), -1);
   for (std::int64_t a = 0; a < numberOfBricks; ++a)
   {
-    slotOfBrick[bricks[a]] = static_cast<std::int32_t>(a);
+    slotOfBrick[band.Bricks[a]] = static_cast<std::int32_t>(a);
   }
   constexpr int Words = BrickNodes / 64;
   std::vector<std::uint64_t> occupied(static_cast<std::size_t>(numberOfBricks * Words), 0);
@@ -219,9 +242,7 @@ NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& 
       {
         for (std::int64_t s = (*start)[a]; s < (*start)[a + 1]; ++s)
         {
-          std::int64_t ijk[3];
-          grid.Ijk(band.Node[s], ijk);
-          const int n = localIndex(ijk);
+          const int n = band.Offset[s];
           occupied[a * Words + n / 64] |= std::uint64_t(1) << (n % 64);
         }
       }
@@ -253,40 +274,50 @@ NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& 
   });
   band.Neighbor.resize(static_cast<std::size_t>(6 * size));
   const double offset = parameters.OffsetDistance;
-  ParallelFor(0, size, 1024, [&](std::int64_t begin, std::int64_t end) {
-    for (std::int64_t s = begin; s < end; ++s)
+  // Band node s of the brick in slot a.
+  auto connect = [&](std::int64_t a, std::int64_t s) {
+    std::int64_t ijk[3];
+    band.NodeIjk(a, s, ijk);
+    // phi0 > 0 exactly when d < l (eq. 2).
+    const std::uint32_t dirichlet = band.Distance[s] < offset ? band.InsideSlot() : band.OutsideSlot();
+    const bool neighbourIsRed = !IsRed(ijk[0], ijk[1], ijk[2]);
+    for (int direction = 0; direction < 6; ++direction)
     {
-      std::int64_t ijk[3];
-      grid.Ijk(band.Node[s], ijk);
-      // phi0 > 0 exactly when d < l (eq. 2).
-      const std::uint32_t dirichlet = band.Distance[s] < offset ? band.InsideSlot() : band.OutsideSlot();
-      const bool neighbourIsRed = !IsRed(ijk[0], ijk[1], ijk[2]);
-      for (int direction = 0; direction < 6; ++direction)
+      const int axis = direction / 2;
+      std::int64_t n[3] = { ijk[0], ijk[1], ijk[2] };
+      n[axis] += (direction % 2) ? 1 : -1;
+      std::uint32_t found = dirichlet;
+      if (n[axis] >= 0 && n[axis] < grid.Dims[axis])
       {
-        const int axis = direction / 2;
-        std::int64_t n[3] = { ijk[0], ijk[1], ijk[2] };
-        n[axis] += (direction % 2) ? 1 : -1;
-        std::uint32_t found = dirichlet;
-        if (n[axis] >= 0 && n[axis] < grid.Dims[axis])
+        const std::int32_t b = slotOfBrick[(n[0] >> BrickShift) +
+          brickDims[0] * ((n[1] >> BrickShift) + brickDims[1] * (n[2] >> BrickShift))];
+        const int local = localIndex(n);
+        const std::uint64_t* mask = b >= 0 ? &occupied[static_cast<std::size_t>(b) * Words] : nullptr;
+        if (mask && ((mask[local / 64] >> (local % 64)) & 1))
         {
-          const std::int32_t a = slotOfBrick[(n[0] >> BrickShift) +
-            brickDims[0] * ((n[1] >> BrickShift) + brickDims[1] * (n[2] >> BrickShift))];
-          const int local = localIndex(n);
-          const std::uint64_t* mask = a >= 0 ? &occupied[static_cast<std::size_t>(a) * Words] : nullptr;
-          if (mask && ((mask[local / 64] >> (local % 64)) & 1))
-          {
-            const int w = local / 64;
-            const std::uint64_t below = (std::uint64_t(1) << (local % 64)) - 1;
-            const std::int64_t rank = before[(static_cast<std::size_t>(a) * 2 + (neighbourIsRed ? 0 : 1)) * Words + w] +
-              Popcount(mask[w] & below & sameColourMask(w, neighbourIsRed));
-            found = static_cast<std::uint32_t>((neighbourIsRed ? redStart[a] : blackStart[a]) + rank);
-          }
+          const int w = local / 64;
+          const std::uint64_t below = (std::uint64_t(1) << (local % 64)) - 1;
+          const std::int64_t rank = before[(static_cast<std::size_t>(b) * 2 + (neighbourIsRed ? 0 : 1)) * Words + w] +
+            Popcount(mask[w] & below & sameColourMask(w, neighbourIsRed));
+          found = static_cast<std::uint32_t>((neighbourIsRed ? redStart[b] : blackStart[b]) + rank);
         }
-        band.Neighbor[6 * s + direction] = found;
+      }
+      band.Neighbor[6 * s + direction] = found;
+    }
+  };
+  ParallelFor(0, numberOfBricks, 16, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t a = begin; a < end; ++a)
+    {
+      for (std::int64_t s = redStart[a]; s < redStart[a + 1]; ++s)
+      {
+        connect(a, s);
+      }
+      for (std::int64_t s = blackStart[a]; s < blackStart[a + 1]; ++s)
+      {
+        connect(a, s);
       }
     }
   });
-  band.Bricks = std::move(bricks);
   band.RedStart = std::move(redStart);
   band.BlackStart = std::move(blackStart);
   band.OwnedLayers = part->Owned;

@@ -1,8 +1,8 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
 // SPDX-License-Identifier: BSD-3-Clause
 // The discrete narrow band of section 3 and the paper's data structure box
-// (steps 1-3): the band nodes stored compactly, with their distance and the
-// indices of their six neighbours.
+// (steps 1-3): the band nodes stored compactly, brick by brick, with their
+// place in the brick, their distance and the indices of their six neighbours.
 #ifndef nvNarrowBand_h
 #define nvNarrowBand_h
 
@@ -33,7 +33,9 @@ struct NarrowBand
 {
   Grid GridNodes;
   std::int64_t RedCount = 0;           ///< nodes [0, RedCount) are red
-  std::vector<std::int64_t> Node;      ///< grid index of band node s
+  /// Where band node s sits in its brick: i + 8 (j + 8 k) from the brick's
+  /// first node (2 bytes a node; the brick gives the rest of the position).
+  std::vector<std::uint16_t> Offset;
   std::vector<double> Distance;        ///< d of eq. (6) at band node s (+inf: beyond reach)
   std::vector<std::uint32_t> Neighbor; ///< 6 per node: -x, +x, -y, +y, -z, +z
 
@@ -58,7 +60,7 @@ struct NarrowBand
   /// then left empty, before its arrays are allocated.
   std::int64_t RefusedSize = 0;
 
-  std::int64_t Size() const { return static_cast<std::int64_t>(this->Node.size()); }
+  std::int64_t Size() const { return static_cast<std::int64_t>(this->Offset.size()); }
   std::uint32_t InsideSlot() const { return static_cast<std::uint32_t>(this->Size()); }
   std::uint32_t OutsideSlot() const { return static_cast<std::uint32_t>(this->Size() + 1); }
 
@@ -68,6 +70,21 @@ struct NarrowBand
   /// The owned red nodes [begin, end) (red = true) or black ones (all of
   /// them in a band without brick tables).
   void OwnedNodes(bool red, std::int64_t& begin, std::int64_t& end) const;
+
+  /// The first grid node (i, j, k) of brick Bricks[a].
+  void BrickFirstNode(std::int64_t a, std::int64_t ijk[3]) const;
+  /// The grid node (i, j, k) of band node s of brick Bricks[a].
+  void NodeIjk(std::int64_t a, std::int64_t s, std::int64_t ijk[3]) const
+  {
+    this->BrickFirstNode(a, ijk);
+    const int offset = this->Offset[s];
+    ijk[0] += offset & (BrickSize - 1);
+    ijk[1] += (offset >> BrickShift) & (BrickSize - 1);
+    ijk[2] += offset >> (2 * BrickShift);
+  }
+  /// The grid index of band node s, found by a search over the bricks (for
+  /// checks and tests; passes over the band go brick by brick instead).
+  std::int64_t GridIndex(std::int64_t s) const;
 };
 
 /// Largest band the 32-bit neighbour indices can address.

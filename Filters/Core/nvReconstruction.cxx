@@ -26,9 +26,11 @@ namespace nv
 {
 namespace
 {
-/// Bytes a band node takes: its arrays and the solver's vectors, plus the
-/// transient lists of the band's construction.
-constexpr double BytesPerBandNode = 72.0 + 16.0;
+/// Bytes a band node takes at most, during the evolution: its place in the
+/// brick (2) and six neighbour indices (24), and the solver's four vectors
+/// (32); its distance (8) is freed before those are made. (The band's
+/// construction holds less: 16 bytes of transient lists, then 34.)
+constexpr double BytesPerBandNode = 2.0 + 24.0 + 32.0;
 /// The per-brick tables: 24 bytes for a brick of 512 nodes.
 constexpr double BytesPerGridNode = 24.0 / 512.0;
 /// A point: its coordinates here and in the distance's buckets.
@@ -439,7 +441,14 @@ bool Reconstruction::RunSteps(std::vector<double> xyz, std::shared_ptr<const Sam
       return this->Fail("Internal error: neighbouring processes disagree on their shared band layers.");
     }
   }
-  this->Solver.reset(new AllenCahnSolver(this->Band, this->ThePlan.Scheme, this->TheHalo.get()));
+  {
+    // The distances serve phi^0 only: freed before the solver's other arrays
+    // are made, so that the two never hold memory together.
+    std::vector<double> phi0 = AllenCahnSolver::InitialField(this->Band, this->ThePlan.Scheme);
+    std::vector<double>().swap(this->Band.Distance);
+    ReleaseFreedMemory();
+    this->Solver.reset(new AllenCahnSolver(this->Band, this->ThePlan.Scheme, std::move(phi0), this->TheHalo.get()));
+  }
   for (const StepReport& step : this->Solver->Run(this->TheMonitor))
   {
     this->Changes.push_back(step.RelativeChange);
@@ -452,7 +461,6 @@ bool Reconstruction::RunSteps(std::vector<double> xyz, std::shared_ptr<const Sam
   }
   // The outputs need the band's nodes and phi only.
   this->Solver->ReleaseWorkspace();
-  std::vector<double>().swap(this->Band.Distance);
   std::vector<std::uint32_t>().swap(this->Band.Neighbor);
   if (volume)
   {

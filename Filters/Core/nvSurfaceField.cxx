@@ -76,7 +76,6 @@ void BandField::Layer(std::int64_t layer, std::vector<float>& uniform, std::vect
 void BandField::Values(std::int64_t brick, float values[BrickNodes]) const
 {
   const NarrowBand& band = this->Band;
-  const Grid& grid = band.GridNodes;
   const std::int64_t a = std::lower_bound(band.Bricks.begin(), band.Bricks.end(), brick) - band.Bricks.begin();
   // Nodes off the band: their side of the shell.
   const std::uint64_t* inside = &band.Inside[8 * a];
@@ -84,27 +83,14 @@ void BandField::Values(std::int64_t brick, float values[BrickNodes]) const
   {
     values[n] = ((inside[n / 64] >> (n % 64)) & 1) ? this->Psi.Inside() : this->Psi.Outside();
   }
-  // Band nodes: each colour's list, in ascending grid index, row by row of the brick.
-  const std::int64_t first[3] = { (brick % this->BrickDims[0]) << BrickShift,
-    ((brick / this->BrickDims[0]) % this->BrickDims[1]) << BrickShift,
-    (brick / (this->BrickDims[0] * this->BrickDims[1])) << BrickShift };
-  for (const auto* start : { &band.RedStart, &band.BlackStart })
+  // Band nodes: each at its place in the brick.
+  for (std::int64_t s = band.RedStart[a]; s < band.RedStart[a + 1]; ++s)
   {
-    std::int64_t s = (*start)[a];
-    const std::int64_t end = (*start)[a + 1];
-    for (int row = 0; row < BrickSize * BrickSize && s < end; ++row)
-    {
-      const int j = row % BrickSize, k = row / BrickSize;
-      if (first[1] + j >= grid.Dims[1] || first[2] + k >= grid.Dims[2])
-      {
-        continue;
-      }
-      const std::int64_t rowStart = grid.Index(first[0], first[1] + j, first[2] + k);
-      for (; s < end && band.Node[s] < rowStart + BrickSize; ++s)
-      {
-        values[BrickSize * row + (band.Node[s] - rowStart)] = this->Psi(this->Phi[s]);
-      }
-    }
+    values[band.Offset[s]] = this->Psi(this->Phi[s]);
+  }
+  for (std::int64_t s = band.BlackStart[a]; s < band.BlackStart[a + 1]; ++s)
+  {
+    values[band.Offset[s]] = this->Psi(this->Phi[s]);
   }
 }
 

@@ -79,16 +79,24 @@ void VolumeWriter::WriteBand(const NarrowBand& band, const std::vector<double>& 
   const VolumeArrays& arrays = this->Arrays;
   const std::int64_t layer = this->TheGrid.Dims[0] * this->TheGrid.Dims[1];
   const std::int64_t first = this->Begin * layer, last = this->End * layer;
-  ParallelFor(0, band.Size(), 1 << 14, [&](std::int64_t begin, std::int64_t end) {
-    for (std::int64_t s = begin; s < end; ++s)
+  auto write = [&](std::int64_t a, std::int64_t s) {
+    std::int64_t ijk[3];
+    band.NodeIjk(a, s, ijk);
+    const std::int64_t node = this->TheGrid.Index(ijk[0], ijk[1], ijk[2]);
+    if (node < first || node >= last)
+      return;
+    if (arrays.Phi)
+      arrays.Phi[node - first] = static_cast<float>(phi[s]);
+    if (arrays.Band)
+      arrays.Band[node - first] = 1;
+  };
+  ParallelFor(0, static_cast<std::int64_t>(band.Bricks.size()), 32, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t a = begin; a < end; ++a)
     {
-      const std::int64_t node = band.Node[s];
-      if (node < first || node >= last)
-        continue;
-      if (arrays.Phi)
-        arrays.Phi[node - first] = static_cast<float>(phi[s]);
-      if (arrays.Band)
-        arrays.Band[node - first] = 1;
+      for (std::int64_t s = band.RedStart[a]; s < band.RedStart[a + 1]; ++s)
+        write(a, s);
+      for (std::int64_t s = band.BlackStart[a]; s < band.BlackStart[a + 1]; ++s)
+        write(a, s);
     }
   });
 }

@@ -131,15 +131,15 @@ void TestBand(nv::Domain mode)
   std::map<std::int64_t, std::int64_t> slot;
   for (std::int64_t s = 0; s < band.Size(); ++s)
   {
-    slot[band.Node[s]] = s;
-    const auto it = expected.find(band.Node[s]);
+    slot[band.GridIndex(s)] = s;
+    const auto it = expected.find(band.GridIndex(s));
     NV_CHECK(it != expected.end());
     if (it != expected.end() && it->second < 3.0)
     {
       NV_CHECK_NEAR(band.Distance[s], it->second, 1e-14);
     }
     std::int64_t ijk[3];
-    grid.Ijk(band.Node[s], ijk);
+    grid.Ijk(band.GridIndex(s), ijk);
     // Red nodes (i + j + k even) come first.
     NV_CHECK((s < band.RedCount) == ((ijk[0] + ijk[1] + ijk[2]) % 2 == 0));
   }
@@ -148,7 +148,7 @@ void TestBand(nv::Domain mode)
   for (std::int64_t s = 0; s < band.Size(); ++s)
   {
     std::int64_t ijk[3];
-    grid.Ijk(band.Node[s], ijk);
+    grid.Ijk(band.GridIndex(s), ijk);
     const std::uint32_t dirichlet = band.Distance[s] < 2.0 ? band.InsideSlot() : band.OutsideSlot();
     for (int direction = 0; direction < 6; ++direction)
     {

@@ -152,7 +152,7 @@ std::unordered_map<std::int64_t, double> SerialPhi(
   std::unordered_map<std::int64_t, double> phi;
   for (std::int64_t s = 0; s < band.Size(); ++s)
   {
-    phi[band.Node[s]] = solver.GetPhi()[s];
+    phi[band.GridIndex(s)] = solver.GetPhi()[s];
   }
   return phi;
 }
@@ -213,7 +213,7 @@ void TestDistributedSolve(nv::Domain mode, int ranks, std::vector<double> weight
         owned[rank] += end - begin;
         for (std::int64_t s = begin; s < end; ++s)
         {
-          const auto it = serial.find(band.Node[s]);
+          const auto it = serial.find(band.GridIndex(s));
           mismatches[rank] += (it == serial.end() || it->second != solver.GetPhi()[s]) ? 1 : 0;
         }
       }
@@ -307,7 +307,7 @@ void TestDistributedRun(int ranks, bool preserve = false)
   std::unordered_map<std::int64_t, double> serialPhi;
   for (std::int64_t s = 0; s < serial.GetBand().Size(); ++s)
   {
-    serialPhi[serial.GetBand().Node[s]] = serial.GetPhi()[s];
+    serialPhi[serial.GetBand().GridIndex(s)] = serial.GetPhi()[s];
   }
 
   Hub hub(ranks);
@@ -355,7 +355,7 @@ void TestDistributedRun(int ranks, bool preserve = false)
         owned[rank] += end - begin;
         for (std::int64_t s = begin; s < end; ++s)
         {
-          const auto it = serialPhi.find(run.GetBand().Node[s]);
+          const auto it = serialPhi.find(run.GetBand().GridIndex(s));
           mismatches[rank] += (it == serialPhi.end() || it->second != run.GetPhi()[s]) ? 1 : 0;
         }
       }

@@ -21,7 +21,7 @@ nv::NarrowBand TwoNodeBand()
   nv::NarrowBand band;
   band.GridNodes.Dims = { { 4, 3, 3 } };
   band.GridNodes.Spacing = 1.0;
-  band.Node = { band.GridNodes.Index(1, 1, 1), band.GridNodes.Index(2, 1, 1) };
+  band.Offset = { 1 + 8 + 64, 2 + 8 + 64 }; // (1, 1, 1) and (2, 1, 1) in brick 0
   band.Distance = { 0.8, 1.3 };
   band.RedCount = 1; // node 0 is swept first, then node 1
   const std::uint32_t in = band.InsideSlot(), out = band.OutsideSlot();

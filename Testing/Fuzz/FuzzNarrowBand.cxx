@@ -74,9 +74,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::vector<std::int64_t> slotOfNode(static_cast<std::size_t>(grid.NumberOfNodes()), -1);
   for (std::int64_t s = 0; s < band.Size(); ++s)
   {
-    Require(band.Node[s] >= 0 && band.Node[s] < grid.NumberOfNodes());
-    Require(slotOfNode[band.Node[s]] < 0); // no node twice
-    slotOfNode[band.Node[s]] = s;
+    Require(band.GridIndex(s) >= 0 && band.GridIndex(s) < grid.NumberOfNodes());
+    Require(slotOfNode[band.GridIndex(s)] < 0); // no node twice
+    slotOfNode[band.GridIndex(s)] = s;
   }
   for (std::int64_t k = 0; k < grid.Dims[2]; ++k)
     for (std::int64_t j = 0; j < grid.Dims[1]; ++j)
