@@ -1,6 +1,7 @@
 # SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
 # SPDX-License-Identifier: BSD-3-Clause
 """reconstruct(): the filter in one call, for arrays, VTK and pyvista point sets."""
+import ctypes
 import re
 import signal
 import threading
@@ -14,6 +15,15 @@ from vtkmodules.vtkCommonCore import vtkCommand, vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkDataObject, vtkImageData, vtkPointSet, vtkPolyData
 
 from . import _properties
+
+
+def _run_signal_handlers():
+    """Runs the Python handlers of the signals received so far, as the
+    interpreter does between bytecodes (raises what a handler raises). Python
+    3.11 records a signal that the kernel hands to another thread (one of the
+    run's workers) without telling its main loop, which then runs the handler
+    only after the run: asking in each progress event stops the run there."""
+    ctypes.pythonapi.PyErr_CheckSignals()
 
 
 class ReconstructionError(RuntimeError):
@@ -94,15 +104,15 @@ def reconstruct(points, progress=None, **properties):
     state = {"interrupted": False, "failure": None}
 
     def on_progress(caller, event):
+        try:
+            if replace:
+                _run_signal_handlers()  # on_interrupt below, for Ctrl-C
+            if progress is not None and not state["interrupted"] and state["failure"] is None:
+                progress(caller.GetProgress())
+        except BaseException as failure:  # raised again after the run
+            state["failure"] = failure
         if state["interrupted"] or state["failure"] is not None:
             caller.SetAbortExecute(1)
-            return
-        if progress is not None:
-            try:
-                progress(caller.GetProgress())
-            except BaseException as failure:  # raised again after the run
-                state["failure"] = failure
-                caller.SetAbortExecute(1)
     f.AddObserver(vtkCommand.ProgressEvent, on_progress)
 
     def on_interrupt(signum, frame):

@@ -279,6 +279,7 @@ def test_ctrl_c_while_the_core_runs():
     settings = _core.Settings()
     settings.OffsetDistance, settings.SampleSpacing = 0.1, 0.01
     settings.MaximumNumberOfIterations = 5000  # minutes: the signal comes long before the end
+    settings.ConvergenceTolerance = 0.0  # (no convergence test to end it early)
     run = _core.Reconstruction(settings, _core.Monitor())
     sent = []
 
@@ -293,7 +294,9 @@ def test_ctrl_c_while_the_core_runs():
     end = time.perf_counter()
     timer.join()
     print("interrupted %.3f s after Ctrl-C, %.2f s into the run" % (end - sent[0], end - start))
-    assert run.Aborted() and end - sent[0] < 0.5
+    # Stopped by the signal, not by its end (no wall-clock bound, which a
+    # loaded machine would break: the time is printed).
+    assert run.Aborted()
 
 
 @only_wheel
@@ -305,6 +308,7 @@ def test_ctrl_c_during_update():
     f.SetOffsetDistance(0.1)
     f.SetSampleSpacing(0.01)
     f.SetMaximumNumberOfIterations(5000)
+    f.SetConvergenceTolerance(0.0)
     errors = []
     f.AddObserver(vtkCommand.ErrorEvent, calldata_type(VTK_STRING)(lambda c, e, text: errors.append(text)))
     timer = threading.Timer(0.5, lambda: os.kill(os.getpid(), signal.SIGINT))
@@ -513,12 +517,13 @@ def test_cli_progress_on_a_terminal(tmp_path):
 
 def test_cli_ctrl_c(tmp_path):
     """Ctrl-C stops the command: exit status 130, a message, no file. The run
-    asked for (4,000 steps at 200 cells) takes minutes; the command must stop
-    well before (the time it took is printed; no wall-clock bound, which a
-    loaded machine would break)."""
+    asked for (4,000 steps at 200 cells, no convergence test to end it early)
+    takes minutes; the command must stop well before (the time it took is
+    printed; no wall-clock bound, which a loaded machine would break)."""
     process = subprocess.Popen(nvtesting.python_command() + [
         "-m", "narrowvolume", TREFOIL, "-o", str(tmp_path / "a.stl"), "--maximum-dimension", "200",
-        "--maximum-number-of-iterations", "4000"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        "--maximum-number-of-iterations", "4000", "--convergence-tolerance", "0"],
+        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     first = process.stdout.readline()  # "... points from ...": the run starts
     assert "points from" in first, first
     time.sleep(0.5)
