@@ -85,7 +85,7 @@ AllenCahnSolver::AllenCahnSolver(
       const double g = EdgeStop(phi0, function); // eq. (4) or (3)
       const double c = dt * g / (h * h);
       this->Coupling[s] = c / (1.0 + 6.0 * c);
-      this->Decay[s] = std::exp(-2.0 * g * dt / (eps * eps));
+      this->Decay[s] = static_cast<float>(std::exp(-2.0 * g * dt / (eps * eps)));
       this->Previous[s] = phi0; // first touch here; each step sets it again
     }
   });
@@ -196,7 +196,7 @@ void AllenCahnSolver::ReleaseWorkspace()
 {
   SolverValues().swap(this->Previous);
   SolverValues().swap(this->Coupling);
-  SolverValues().swap(this->Decay);
+  SolverFloats().swap(this->Decay);
 }
 
 template <typename Fn>

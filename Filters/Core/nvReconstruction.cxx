@@ -28,9 +28,9 @@ namespace
 {
 /// Bytes a band node takes at most, during the evolution: its place in the
 /// brick (2) and six neighbour indices (24), and the solver's four vectors
-/// (32); its distance (8) is freed before those are made. (The band's
-/// construction holds less: 16 bytes of transient lists, then 34.)
-constexpr double BytesPerBandNode = 2.0 + 24.0 + 32.0;
+/// (8 + 8 + 8 + 4); its distance (8) is freed before those are made. (The
+/// band's construction holds less: 16 bytes of transient lists, then 34.)
+constexpr double BytesPerBandNode = 2.0 + 24.0 + 28.0;
 /// The per-brick tables: 24 bytes for a brick of 512 nodes.
 constexpr double BytesPerGridNode = 24.0 / 512.0;
 /// A point: its coordinates here and in the distance's buckets.
@@ -398,6 +398,7 @@ bool Reconstruction::RunSteps(std::vector<double> xyz, std::shared_ptr<const Sam
     grid, xyz.data(), static_cast<std::int64_t>(xyz.size() / 3), this->ThePlan.Scheme.Reach()));
   std::vector<double>().swap(xyz);
   this->Band = BuildNarrowBand(*this->Distance, this->ThePlan.Scheme, this->TheMonitor, &this->Part, writeBrick);
+  this->Distance.reset(); // the points sorted into bricks: the band has what the rest needs
   ReleaseFreedMemory();
   this->SetupTime = Seconds(start);
   double failed[2] = { static_cast<double>(this->Band.RefusedSize),
