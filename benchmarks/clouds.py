@@ -10,7 +10,15 @@ import numpy as np
 def load(task):
     """The points of task["source"] as an (n, 3) float array: "sphere" (the
     2,964 points of Fig. 5) or "sphere1024" (500,000) on a sphere of radius
-    0.45 in the unit box, or the PLY file task["path"]."""
+    0.45 in the unit box, "trefoil:N" (N points scattered over the tube
+    around a trefoil knot of Data/make_demo_cloud.py, the demo cloud's shape),
+    or the PLY file task["path"]."""
+    if task["source"].startswith("trefoil:"):
+        import os
+        import sys
+        sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Data"))
+        from make_demo_cloud import trefoil_tube
+        return trefoil_tube(int(task["source"].split(":")[1]))
     if task["source"].startswith("sphere"):
         n = 2964 if task["source"] == "sphere" else 500000
         i = np.arange(n) + 0.5
