@@ -11,7 +11,7 @@ import numpy as np
 from vtkmodules.util.misc import calldata_type
 from vtkmodules.util.numpy_support import numpy_to_vtk
 from vtkmodules.util.vtkConstants import VTK_STRING
-from vtkmodules.vtkCommonCore import vtkCommand, vtkPoints
+from vtkmodules.vtkCommonCore import vtkCommand, vtkObject, vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkDataObject, vtkImageData, vtkPointSet, vtkPolyData
 
 from . import _properties
@@ -127,9 +127,16 @@ def reconstruct(points, progress=None, **properties):
         signal.getsignal(signal.SIGINT) is signal.default_int_handler
     if replace:
         signal.signal(signal.SIGINT, on_interrupt)
+    # The filter's errors and warnings come out as exceptions and Python
+    # warnings even where VTK's output is turned off (GlobalWarningDisplayOff
+    # also stops VTK's error events, which would lose the error); the
+    # observers above take them, so VTK prints nothing either way.
+    display = vtkObject.GetGlobalWarningDisplay()
+    vtkObject.GlobalWarningDisplayOn()
     try:
         f.Update()
     finally:
+        vtkObject.SetGlobalWarningDisplay(display)
         if replace:
             signal.signal(signal.SIGINT, signal.default_int_handler)
     if state["interrupted"]:

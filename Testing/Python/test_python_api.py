@@ -215,6 +215,25 @@ def test_truth_values_for_switches():
     assert volume.GetPointData().GetArray("phi") is None and surface.GetNumberOfPolys() > 0
 
 
+def test_reconstruct_with_vtk_output_off():
+    """With VTK's messages turned off (vtkObject.GlobalWarningDisplayOff()),
+    reconstruct() still raises its errors and gives its warnings, and leaves
+    the setting as it found it."""
+    from vtkmodules.vtkCommonCore import vtkObject
+    vtkObject.GlobalWarningDisplayOff()
+    try:
+        with pytest.raises(narrowvolume.ReconstructionError, match="no points"):
+            narrowvolume.reconstruct(np.zeros((0, 3)))
+        assert not vtkObject.GetGlobalWarningDisplay()
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            narrowvolume.reconstruct(SPHERE[SPHERE[:, 2] > -2.8], OffsetDistance=0.1, SampleSpacing=0.025, Sheets=2)
+        assert any(issubclass(w.category, narrowvolume.ReconstructionWarning) for w in caught), caught
+        assert not vtkObject.GetGlobalWarningDisplay()
+    finally:
+        vtkObject.GlobalWarningDisplayOn()
+
+
 def test_reconstruct_warning():
     """The filter's warnings come as ReconstructionWarning."""
     with warnings.catch_warnings(record=True) as caught:
