@@ -93,8 +93,9 @@ std::int64_t NarrowBand::GridIndex(std::int64_t s) const
   // The last brick whose range of s's colour starts at or before s.
   const std::vector<std::int64_t>& start = s < this->RedCount ? this->RedStart : this->BlackStart;
   const std::int64_t a = (std::upper_bound(start.begin(), start.end(), s) - start.begin()) - 1;
-  std::int64_t ijk[3];
-  this->NodeIjk(a, s, ijk);
+  std::int64_t first[3], ijk[3];
+  this->BrickFirstNode(a, first);
+  this->NodeIjk(first, s, ijk);
   return this->GridNodes.Index(ijk[0], ijk[1], ijk[2]);
 }
 
@@ -274,10 +275,10 @@ NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& 
   });
   band.Neighbor.resize(static_cast<std::size_t>(6 * size));
   const double offset = parameters.OffsetDistance;
-  // Band node s of the brick in slot a.
-  auto connect = [&](std::int64_t a, std::int64_t s) {
+  // Band node s of the brick whose first node is `first`.
+  auto connect = [&](const std::int64_t first[3], std::int64_t s) {
     std::int64_t ijk[3];
-    band.NodeIjk(a, s, ijk);
+    band.NodeIjk(first, s, ijk);
     // phi0 > 0 exactly when d < l (eq. 2).
     const std::uint32_t dirichlet = band.Distance[s] < offset ? band.InsideSlot() : band.OutsideSlot();
     const bool neighbourIsRed = !IsRed(ijk[0], ijk[1], ijk[2]);
@@ -308,13 +309,15 @@ NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& 
   ParallelFor(0, numberOfBricks, 16, [&](std::int64_t begin, std::int64_t end) {
     for (std::int64_t a = begin; a < end; ++a)
     {
+      std::int64_t first[3];
+      band.BrickFirstNode(a, first);
       for (std::int64_t s = redStart[a]; s < redStart[a + 1]; ++s)
       {
-        connect(a, s);
+        connect(first, s);
       }
       for (std::int64_t s = blackStart[a]; s < blackStart[a + 1]; ++s)
       {
-        connect(a, s);
+        connect(first, s);
       }
     }
   });

@@ -73,14 +73,13 @@ struct NarrowBand
 
   /// The first grid node (i, j, k) of brick Bricks[a].
   void BrickFirstNode(std::int64_t a, std::int64_t ijk[3]) const;
-  /// The grid node (i, j, k) of band node s of brick Bricks[a].
-  void NodeIjk(std::int64_t a, std::int64_t s, std::int64_t ijk[3]) const
+  /// The grid node (i, j, k) of band node s of the brick whose first node is `first`.
+  void NodeIjk(const std::int64_t first[3], std::int64_t s, std::int64_t ijk[3]) const
   {
-    this->BrickFirstNode(a, ijk);
     const int offset = this->Offset[s];
-    ijk[0] += offset & (BrickSize - 1);
-    ijk[1] += (offset >> BrickShift) & (BrickSize - 1);
-    ijk[2] += offset >> (2 * BrickShift);
+    ijk[0] = first[0] + (offset & (BrickSize - 1));
+    ijk[1] = first[1] + ((offset >> BrickShift) & (BrickSize - 1));
+    ijk[2] = first[2] + (offset >> (2 * BrickShift));
   }
   /// The grid index of band node s, found by a search over the bricks (for
   /// checks and tests; passes over the band go brick by brick instead).

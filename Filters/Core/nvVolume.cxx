@@ -79,9 +79,9 @@ void VolumeWriter::WriteBand(const NarrowBand& band, const std::vector<double>& 
   const VolumeArrays& arrays = this->Arrays;
   const std::int64_t layer = this->TheGrid.Dims[0] * this->TheGrid.Dims[1];
   const std::int64_t first = this->Begin * layer, last = this->End * layer;
-  auto write = [&](std::int64_t a, std::int64_t s) {
+  auto write = [&](const std::int64_t corner[3], std::int64_t s) {
     std::int64_t ijk[3];
-    band.NodeIjk(a, s, ijk);
+    band.NodeIjk(corner, s, ijk);
     const std::int64_t node = this->TheGrid.Index(ijk[0], ijk[1], ijk[2]);
     if (node < first || node >= last)
       return;
@@ -93,10 +93,12 @@ void VolumeWriter::WriteBand(const NarrowBand& band, const std::vector<double>& 
   ParallelFor(0, static_cast<std::int64_t>(band.Bricks.size()), 32, [&](std::int64_t begin, std::int64_t end) {
     for (std::int64_t a = begin; a < end; ++a)
     {
+      std::int64_t corner[3]; // the brick's first node
+      band.BrickFirstNode(a, corner);
       for (std::int64_t s = band.RedStart[a]; s < band.RedStart[a + 1]; ++s)
-        write(a, s);
+        write(corner, s);
       for (std::int64_t s = band.BlackStart[a]; s < band.BlackStart[a + 1]; ++s)
-        write(a, s);
+        write(corner, s);
     }
   });
 }
