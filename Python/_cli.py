@@ -148,6 +148,16 @@ def write(path, volume, surface):
     return which
 
 
+def _stdout():
+    """Standard output. pvpython replaces sys.stdout by VTK's capture, which
+    keeps what it is given until the process ends when standard output is a
+    pipe or a file (flush does not reach it): there the command's lines go to
+    the stream Python opened, so that they come as the run goes."""
+    if type(sys.stdout).__name__ == "vtkPythonStdStreamCaptureHelper" and sys.__stdout__ is not None:
+        return sys.__stdout__
+    return sys.stdout
+
+
 class Progress:
     """A progress bar on a terminal (standard error); nothing elsewhere."""
 
@@ -238,7 +248,8 @@ def main(argv=None):
     try:
         cloud = read_cloud(args.cloud)
         if not args.quiet:
-            print("narrowvolume: %d points from %s" % (cloud.GetNumberOfPoints(), args.cloud), flush=True)
+            print("narrowvolume: %d points from %s" % (cloud.GetNumberOfPoints(), args.cloud), file=_stdout(),
+                  flush=True)
         import warnings
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always", narrowvolume.ReconstructionWarning)
@@ -266,8 +277,8 @@ def main(argv=None):
         dims = volume.GetDimensions()
         for path, which in written:
             what = ("%d x %d x %d grid" % dims) if which == "volume" else ("%d triangles" % surface.GetNumberOfPolys())
-            print("narrowvolume: wrote %s (%s)" % (path, what))
-        print("narrowvolume: done in %.2f s" % (time.perf_counter() - start))
+            print("narrowvolume: wrote %s (%s)" % (path, what), file=_stdout())
+        print("narrowvolume: done in %.2f s" % (time.perf_counter() - start), file=_stdout(), flush=True)
     return 0
 
 

@@ -538,11 +538,14 @@ def test_cli_ctrl_c(tmp_path):
     """Ctrl-C stops the command: exit status 130, a message, no file. The run
     asked for (4,000 steps at 200 cells, no convergence test to end it early)
     takes minutes; the command must stop well before (the time it took is
-    printed; no wall-clock bound, which a loaded machine would break)."""
+    printed; no wall-clock bound, which a loaded machine would break). Its
+    first line comes as the run starts, through a pipe, without
+    PYTHONUNBUFFERED (pvpython's own sys.stdout would hold it to the end)."""
+    environment = {k: v for k, v in os.environ.items() if k != "PYTHONUNBUFFERED"}
     process = subprocess.Popen(nvtesting.python_command() + [
         "-m", "narrowvolume", TREFOIL, "-o", str(tmp_path / "a.stl"), "--maximum-dimension", "200",
         "--maximum-number-of-iterations", "4000", "--convergence-tolerance", "0"],
-        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=environment)
     first = process.stdout.readline()  # "... points from ...": the run starts
     assert "points from" in first, first
     time.sleep(0.5)
