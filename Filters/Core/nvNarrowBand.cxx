@@ -20,7 +20,7 @@ bool IsRed(std::int64_t i, std::int64_t j, std::int64_t k)
 }
 
 /// Visits the band nodes of one brick in ascending grid index: fn(i, j, k,
-/// d). Marks the brick's other nodes inside the shell in `inside`, and hands
+/// n, d), n = i + 8 (j + 8 k) in the brick. Marks the brick's other nodes inside the shell in `inside`, and hands
 /// its distances to `visitor`, if any.
 template <typename Fn>
 void ForEachBandNode(const TruncatedDistance& distance, const Parameters& parameters, std::int64_t brick,
@@ -54,7 +54,7 @@ void ForEachBandNode(const TruncatedDistance& distance, const Parameters& parame
         const double d = scratch[n];
         if (whole || (lower < d && d < upper))
         {
-          fn(first[0] + i, first[1] + j, first[2] + k, d);
+          fn(first[0] + i, first[1] + j, first[2] + k, n, d);
         }
         else if (d <= lower)
         {
@@ -164,10 +164,8 @@ NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& 
     {
       BrickBand& out = perBrick[a];
       ForEachBandNode(distance, parameters, bricks[a], visitor, scratch, &band.Inside[a * BrickNodes / 64],
-        [&](std::int64_t i, std::int64_t j, std::int64_t k, double d) {
-          const auto offset = static_cast<std::uint16_t>(
-            (i & (BrickSize - 1)) + BrickSize * ((j & (BrickSize - 1)) + BrickSize * (k & (BrickSize - 1))));
-          (IsRed(i, j, k) ? out.Red : out.Black).push_back(Entry{ offset, d });
+        [&](std::int64_t i, std::int64_t j, std::int64_t k, int n, double d) {
+          (IsRed(i, j, k) ? out.Red : out.Black).push_back(Entry{ static_cast<std::uint16_t>(n), d });
         });
     }
   });

@@ -6,6 +6,7 @@
 #include "nvParallel.h"
 #include "nvSurface.h"
 #include "nvSurfaceField.h"
+#include "nvTruncatedDistance.h"
 
 #include <algorithm>
 #include <chrono>
@@ -394,11 +395,13 @@ bool Reconstruction::RunSteps(std::vector<double> xyz, std::shared_ptr<const Sam
     volume->Clear();
     writeBrick = [&volume](std::int64_t brick, const double* d) { volume->WriteBrick(brick, d); };
   }
-  this->Distance.reset(new TruncatedDistance(
-    grid, xyz.data(), static_cast<std::int64_t>(xyz.size() / 3), this->ThePlan.Scheme.Reach()));
-  std::vector<double>().swap(xyz);
-  this->Band = BuildNarrowBand(*this->Distance, this->ThePlan.Scheme, this->TheMonitor, &this->Part, writeBrick);
-  this->Distance.reset(); // the points sorted into bricks: the band has what the rest needs
+  {
+    // The points sorted into bricks, for the band only: gone once it is built.
+    const TruncatedDistance distance(
+      grid, xyz.data(), static_cast<std::int64_t>(xyz.size() / 3), this->ThePlan.Scheme.Reach());
+    std::vector<double>().swap(xyz);
+    this->Band = BuildNarrowBand(distance, this->ThePlan.Scheme, this->TheMonitor, &this->Part, writeBrick);
+  }
   ReleaseFreedMemory();
   this->SetupTime = Seconds(start);
   double failed[2] = { static_cast<double>(this->Band.RefusedSize),

@@ -33,7 +33,6 @@
 #include "nvPartition.h"
 #include "nvSampling.h"
 #include "nvSheets.h"
-#include "nvTruncatedDistance.h"
 #include "nvVolume.h"
 
 #include <cstdint>
@@ -197,7 +196,6 @@ private:
   std::int64_t VolumeGhosts = 0;
   VolumeAllocator AllocateVolume;
   double BytesBeforeBand = 0.0;
-  std::unique_ptr<TruncatedDistance> Distance;
   NarrowBand Band;
   std::unique_ptr<Halo> TheHalo;
   std::unique_ptr<AllenCahnSolver> Solver;
