@@ -115,7 +115,6 @@ NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& 
 {
   NarrowBand band;
   band.GridNodes = distance.GetGrid();
-  const Grid& grid = band.GridNodes;
   const std::int64_t bricksPerLayer = distance.GetBrickDims()[0] * distance.GetBrickDims()[1];
   const Subdomain whole = Subdomain::Whole(distance.GetBrickDims()[2]);
   if (!part)
@@ -217,105 +216,88 @@ NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& 
   });
   std::vector<BrickBand>().swap(perBrick);
 
-  // Step 3: connect each band node to its six neighbours. Each brick keeps a
-  // 512-bit occupancy mask of its band nodes (64 bytes a brick, nothing per
-  // node); a neighbour's position in the band is the start of its brick's
-  // colour range plus the number of same-coloured band nodes before it.
+  // Step 3: connect each band node to its six neighbours. Per brick, the
+  // bricks across its six faces, and per brick holding band nodes, a 512-bit
+  // mask of them and each one's rank among the brick's nodes of its colour (a
+  // byte a place, at most 256 of a colour), kept only for this step: a
+  // neighbour's index is then the start of its colour in its brick plus its
+  // rank, found within the node's brick or the one across the face it lies on.
   band.Bricks = std::move(bricks);
   std::vector<std::int32_t> slotOfBrick(static_cast<std::size_t>(distance.GetNumberOfBricks()), -1);
+  std::vector<std::int32_t> bandBrick(static_cast<std::size_t>(numberOfBricks));
+  std::int32_t bandBricks = 0;
   for (std::int64_t a = 0; a < numberOfBricks; ++a)
   {
     slotOfBrick[band.Bricks[a]] = static_cast<std::int32_t>(a);
+    const bool holdsNodes = redStart[a + 1] > redStart[a] || blackStart[a + 1] > blackStart[a];
+    bandBrick[a] = holdsNodes ? bandBricks++ : -1;
   }
   constexpr int Words = BrickNodes / 64;
-  std::vector<std::uint64_t> occupied(static_cast<std::size_t>(numberOfBricks * Words), 0);
+  std::vector<std::int32_t> adjacent(static_cast<std::size_t>(6 * numberOfBricks));
+  std::vector<std::uint64_t> occupied(static_cast<std::size_t>(bandBricks) * Words, 0);
+  std::vector<std::uint8_t> rank(static_cast<std::size_t>(bandBricks) * BrickNodes, 0);
   const auto& brickDims = distance.GetBrickDims();
-  auto localIndex = [](const std::int64_t ijk[3]) {
-    return static_cast<int>((ijk[0] & (BrickSize - 1)) +
-      BrickSize * ((ijk[1] & (BrickSize - 1)) + BrickSize * (ijk[2] & (BrickSize - 1))));
-  };
   ParallelFor(0, numberOfBricks, 64, [&](std::int64_t begin, std::int64_t end) {
     for (std::int64_t a = begin; a < end; ++a)
     {
+      const std::int64_t b = band.Bricks[a];
+      const std::int64_t at[3] = { b % brickDims[0], (b / brickDims[0]) % brickDims[1],
+        b / (brickDims[0] * brickDims[1]) };
+      for (int direction = 0; direction < 6; ++direction)
+      {
+        std::int64_t next[3] = { at[0], at[1], at[2] };
+        next[direction / 2] += (direction % 2) ? 1 : -1;
+        const bool inGrid = next[direction / 2] >= 0 && next[direction / 2] < brickDims[direction / 2];
+        adjacent[6 * a + direction] =
+          inGrid ? slotOfBrick[next[0] + brickDims[0] * (next[1] + brickDims[1] * next[2])] : -1;
+      }
+      const std::int64_t t = bandBrick[a];
       for (const auto* start : { &redStart, &blackStart })
       {
         for (std::int64_t s = (*start)[a]; s < (*start)[a + 1]; ++s)
         {
           const int n = band.Offset[s];
-          occupied[a * Words + n / 64] |= std::uint64_t(1) << (n % 64);
+          occupied[t * Words + n / 64] |= std::uint64_t(1) << (n % 64);
+          rank[t * BrickNodes + n] = static_cast<std::uint8_t>(s - (*start)[a]);
         }
       }
     }
   });
-  // Local index n = i + 8 j + 64 k; word w holds k = w. Bits of even i + j + k:
-  // rows j alternate between the patterns 0x55 and 0xAA, swapped for odd k.
-  const std::uint64_t evenWordMask = 0xAA55AA55AA55AA55ULL; // for k even
-  auto sameColourMask = [&](int word, bool red) {
-    const std::uint64_t even = (word % 2 == 0) ? evenWordMask : ~evenWordMask;
-    return red ? even : ~even;
-  };
-  // Per brick, colour and word: the same-coloured band nodes in the words
-  // before it, so that a neighbour's rank is one look-up and one count.
-  std::vector<std::uint16_t> before(static_cast<std::size_t>(numberOfBricks * 2 * Words), 0);
-  ParallelFor(0, numberOfBricks, 256, [&](std::int64_t begin, std::int64_t end) {
-    for (std::int64_t a = begin; a < end; ++a)
-    {
-      for (int colour = 0; colour < 2; ++colour)
-      {
-        int count = 0;
-        for (int w = 0; w < Words; ++w)
-        {
-          before[(a * 2 + colour) * Words + w] = static_cast<std::uint16_t>(count);
-          count += Popcount(occupied[a * Words + w] & sameColourMask(w, colour == 0));
-        }
-      }
-    }
-  });
+  std::vector<std::int32_t>().swap(slotOfBrick);
   band.Neighbor.resize(static_cast<std::size_t>(6 * size));
   const double offset = parameters.OffsetDistance;
-  // Band node s of the brick whose first node is `first`.
-  auto connect = [&](const std::int64_t first[3], std::int64_t s) {
-    std::int64_t ijk[3];
-    band.NodeIjk(first, s, ijk);
-    // phi0 > 0 exactly when d < l (eq. 2).
-    const std::uint32_t dirichlet = band.Distance[s] < offset ? band.InsideSlot() : band.OutsideSlot();
-    const bool neighbourIsRed = !IsRed(ijk[0], ijk[1], ijk[2]);
-    for (int direction = 0; direction < 6; ++direction)
-    {
-      const int axis = direction / 2;
-      std::int64_t n[3] = { ijk[0], ijk[1], ijk[2] };
-      n[axis] += (direction % 2) ? 1 : -1;
-      std::uint32_t found = dirichlet;
-      if (n[axis] >= 0 && n[axis] < grid.Dims[axis])
-      {
-        const std::int32_t b = slotOfBrick[(n[0] >> BrickShift) +
-          brickDims[0] * ((n[1] >> BrickShift) + brickDims[1] * (n[2] >> BrickShift))];
-        const int local = localIndex(n);
-        const std::uint64_t* mask = b >= 0 ? &occupied[static_cast<std::size_t>(b) * Words] : nullptr;
-        if (mask && ((mask[local / 64] >> (local % 64)) & 1))
-        {
-          const int w = local / 64;
-          const std::uint64_t below = (std::uint64_t(1) << (local % 64)) - 1;
-          const std::int64_t rank = before[(static_cast<std::size_t>(b) * 2 + (neighbourIsRed ? 0 : 1)) * Words + w] +
-            Popcount(mask[w] & below & sameColourMask(w, neighbourIsRed));
-          found = static_cast<std::uint32_t>((neighbourIsRed ? redStart[b] : blackStart[b]) + rank);
-        }
-      }
-      band.Neighbor[6 * s + direction] = found;
-    }
-  };
+  constexpr int Last = BrickSize - 1;
+  const int step[3] = { 1, BrickSize, BrickSize * BrickSize };
   ParallelFor(0, numberOfBricks, 16, [&](std::int64_t begin, std::int64_t end) {
     for (std::int64_t a = begin; a < end; ++a)
     {
-      std::int64_t first[3];
-      band.BrickFirstNode(a, first);
-      for (std::int64_t s = redStart[a]; s < redStart[a + 1]; ++s)
+      for (const bool red : { true, false })
       {
-        connect(first, s);
-      }
-      for (std::int64_t s = blackStart[a]; s < blackStart[a + 1]; ++s)
-      {
-        connect(first, s);
+        // The neighbours have the other colour.
+        const std::vector<std::int64_t>& own = red ? redStart : blackStart;
+        const std::vector<std::int64_t>& other = red ? blackStart : redStart;
+        for (std::int64_t s = own[a]; s < own[a + 1]; ++s)
+        {
+          const int n = band.Offset[s];
+          const int ijk[3] = { n & Last, (n >> BrickShift) & Last, n >> (2 * BrickShift) };
+          // phi0 > 0 exactly when d < l (eq. 2).
+          const std::uint32_t dirichlet = band.Distance[s] < offset ? band.InsideSlot() : band.OutsideSlot();
+          for (int direction = 0; direction < 6; ++direction)
+          {
+            // Place n -/+ 1, 8 or 64 in this brick, or a side's length back
+            // in the brick across the face the node lies on.
+            const int axis = direction / 2;
+            const bool up = direction % 2 == 1;
+            const bool across = up ? ijk[axis] == Last : ijk[axis] == 0;
+            const std::int64_t b = across ? adjacent[6 * a + direction] : a;
+            const int q = n + (up ? step[axis] : -step[axis]) * (across ? -Last : 1);
+            const std::int32_t t = b >= 0 ? bandBrick[b] : -1;
+            const bool inBand = t >= 0 && ((occupied[static_cast<std::size_t>(t) * Words + q / 64] >> (q % 64)) & 1);
+            band.Neighbor[6 * s + direction] = inBand
+              ? static_cast<std::uint32_t>(other[b] + rank[static_cast<std::size_t>(t) * BrickNodes + q])
+              : dirichlet;
+          }
+        }
       }
     }
   });
