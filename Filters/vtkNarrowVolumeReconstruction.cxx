@@ -241,6 +241,7 @@ int vtkNarrowVolumeReconstruction::RequestInformation(
     nv::GlobalBounds(*communicator, bounds);
   }
   std::shared_ptr<const nv::Sampling> sampling;
+  this->SamplingTime = 0.0;
   nv::WithThreads(this->NumberOfThreads, [&]() { sampling = this->MeasureSampling(input, communicator.get()); });
   const nv::Plan plan = nv::MakePlan(this->GetSettings(), bounds, sampling->Statistics());
   if (!plan.Valid())
@@ -516,8 +517,10 @@ std::shared_ptr<const nv::Sampling> vtkNarrowVolumeReconstruction::MeasureSampli
   }
   if (stale)
   {
+    const auto start = std::chrono::steady_clock::now();
     auto sampling = std::make_shared<nv::Sampling>();
     sampling->Measure(PointsOf(input), communicator);
+    this->SamplingTime = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     this->Sampled = sampling;
     this->SampledTime = time;
     this->SampledPoints = count;

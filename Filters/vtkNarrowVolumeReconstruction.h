@@ -323,7 +323,10 @@ public:
    * used (the automatic ones, or those set),
    * the relative change of each step, and wall-clock seconds of the set-up
    * (distance and band), the evolution and the output (volume and surface)
-   * on this process.
+   * on this process. SamplingTime: seconds spent measuring the points'
+   * spacing (nearest neighbours, for the automatic offset, the gap warning
+   * and MedianPointSpacing) in the last update; 0 when the points had not
+   * changed and the last measurement served.
    */
   int GetNumberOfIterations() const { return static_cast<int>(this->RelativeChanges.size()); }
   vtkGetMacro(NumberOfBandNodes, vtkIdType);
@@ -331,6 +334,7 @@ public:
   const std::vector<double>& GetRelativeChanges() const { return this->RelativeChanges; }
   vtkGetMacro(OffsetDistanceUsed, double);
   vtkGetMacro(SampleSpacingUsed, double);
+  vtkGetMacro(SamplingTime, double);
   vtkGetMacro(SetupTime, double);
   vtkGetMacro(EvolutionTime, double);
   vtkGetMacro(OutputTime, double);
@@ -420,6 +424,7 @@ protected:
   vtkMTimeType SampledTime = 0;
   vtkIdType SampledPoints = -1;
   bool SampledShared = false;
+  double SamplingTime = 0.0;
   double SetupTime = 0.0;
   double EvolutionTime = 0.0;
   double OutputTime = 0.0;

@@ -17,6 +17,32 @@ namespace nv
 {
 namespace
 {
+/// Sorts v: fixed chunks sorted in parallel, then merged pairwise (the
+/// result is the sorted sequence, whatever the threads).
+template <typename T>
+void ParallelSort(std::vector<T>& v)
+{
+  constexpr std::int64_t Chunks = 8;
+  const std::int64_t n = static_cast<std::int64_t>(v.size());
+  auto bound = [&](std::int64_t c) { return v.begin() + static_cast<std::ptrdiff_t>(n * c / Chunks); };
+  ParallelFor(0, Chunks, 1, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t c = begin; c < end; ++c)
+    {
+      std::sort(bound(c), bound(c + 1));
+    }
+  });
+  for (std::int64_t width = 1; width < Chunks; width *= 2)
+  {
+    ParallelFor(0, Chunks / (2 * width), 1, [&](std::int64_t begin, std::int64_t end) {
+      for (std::int64_t m = begin; m < end; ++m)
+      {
+        const std::int64_t first = 2 * width * m;
+        std::inplace_merge(bound(first), bound(first + width), bound(first + 2 * width));
+      }
+    });
+  }
+}
+
 /// Points sorted into cubic cells of a hashed grid, for nearest-neighbour queries.
 class CellIndex
 {
@@ -44,12 +70,14 @@ public:
         keyed[p] = { Key(c), p };
       }
     });
-    std::sort(keyed.begin(), keyed.end());
+    ParallelSort(keyed);
     this->Order.resize(keyed.size());
+    this->Sorted.resize(xyz.size());
     std::size_t cells = 0;
     for (std::size_t q = 0; q < keyed.size(); ++q)
     {
       this->Order[q] = keyed[q].second;
+      std::copy(&xyz[3 * keyed[q].second], &xyz[3 * keyed[q].second] + 3, &this->Sorted[3 * q]);
       cells += (q == 0 || keyed[q].first != keyed[q - 1].first) ? 1 : 0;
     }
     std::size_t slots = 16;
@@ -84,6 +112,23 @@ public:
     this->CellOf(x, c);
     double best = std::numeric_limits<double>::infinity();
     std::int64_t partner = -1;
+    // How far p lies inside its cell from each face, less a margin for the
+    // rounding of the cell's bounds (a cell is skipped only when every point
+    // in it is surely farther than the best so far).
+    const double margin = 1e-9 * this->Size;
+    double below[3], above[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      const double low = this->Low[a] + static_cast<double>(c[a]) * this->Size;
+      below[a] = x[a] - low - margin;
+      above[a] = low + this->Size - x[a] - margin;
+    }
+    // The gap along one axis between p and the cell `step` cells away.
+    auto gap = [&](int a, std::int64_t step) {
+      const double g = step < 0 ? below[a] + static_cast<double>(-step - 1) * this->Size
+                                : (step > 0 ? above[a] + static_cast<double>(step - 1) * this->Size : 0.0);
+      return g > 0.0 ? g * g : 0.0;
+    };
     // Rings of cells around p's cell: ring r holds every point closer than
     // r cells, so the search ends once the best distance is within that.
     for (std::int64_t r = 0; r <= MaximumRing; ++r)
@@ -96,17 +141,24 @@ public:
             {
               continue; // inner rings were searched already
             }
+            if (gap(0, di) + gap(1, dj) + gap(2, dk) > best)
+            {
+              continue; // every point of that cell is farther than the best (ties are kept)
+            }
             const std::int64_t cell[3] = { c[0] + di, c[1] + dj, c[2] + dk };
             const Slot* slot = this->Find(Key(cell));
-            for (std::int64_t q = 0; slot && q < slot->Count; ++q)
+            for (std::int64_t q = slot ? slot->First : 0; slot && q < slot->First + slot->Count; ++q)
             {
-              const std::int64_t other = this->Order[slot->First + q];
-              const double* y = &this->Xyz[3 * other];
+              const double* y = &this->Sorted[3 * q];
               const double d2 = (x[0] - y[0]) * (x[0] - y[0]) + (x[1] - y[1]) * (x[1] - y[1]) + (x[2] - y[2]) * (x[2] - y[2]);
-              if (d2 > 0.0 && (d2 < best || (d2 == best && other < partner)))
+              if (d2 > 0.0 && d2 <= best)
               {
-                best = d2;
-                partner = other;
+                const std::int64_t other = this->Order[q];
+                if (d2 < best || other < partner)
+                {
+                  best = d2;
+                  partner = other;
+                }
               }
             }
           }
@@ -117,6 +169,9 @@ public:
     }
     return { std::numeric_limits<double>::infinity(), -1 };
   }
+
+  /// The points in cell order: queries in this order find their cells' points in the cache.
+  const std::vector<std::int64_t>& CellOrder() const { return this->Order; }
 
   /// Rings searched before giving up (partner -1): the caller searches such
   /// points again with larger cells.
@@ -166,7 +221,8 @@ private:
   const std::vector<double>& Xyz;
   double Size;
   double Low[3];
-  std::vector<std::int64_t> Order;
+  std::vector<std::int64_t> Order; ///< the points in cell order
+  std::vector<double> Sorted;      ///< their coordinates in that order (a cell's points side by side)
   std::vector<Slot> Slots;
 };
 
@@ -207,16 +263,18 @@ double CellSizeFor(const std::vector<double>& xyz)
     return 1.0;
   }
   std::vector<std::uint64_t> keys(static_cast<std::size_t>(n));
-  for (std::int64_t p = 0; p < n; ++p)
-  {
-    std::uint64_t key = 0;
-    for (int a = 0; a < 3; ++a)
+  ParallelFor(0, n, 4096, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t p = begin; p < end; ++p)
     {
-      key = (key << 21) | static_cast<std::uint64_t>((xyz[3 * p + a] - bounds[2 * a]) / coarse);
+      std::uint64_t key = 0;
+      for (int a = 0; a < 3; ++a)
+      {
+        key = (key << 21) | static_cast<std::uint64_t>((xyz[3 * p + a] - bounds[2 * a]) / coarse);
+      }
+      keys[p] = key;
     }
-    keys[p] = key;
-  }
-  std::sort(keys.begin(), keys.end());
+  });
+  ParallelSort(keys);
   const double occupied = static_cast<double>(std::unique(keys.begin(), keys.end()) - keys.begin());
   // Area ~ occupied * coarse^2, spacing ~ sqrt(area / n); two spacings per
   // cell, so that most nearest neighbours are in the 27 cells around a point.
@@ -248,6 +306,10 @@ void Sampling::Measure(const std::vector<double>& xyz, Communicator* communicato
       for (double cell = CellSizeFor(this->Points); pending.size() > 1000; cell *= 4.0)
       {
         const CellIndex index(this->Points, cell);
+        if (pending.size() == static_cast<std::size_t>(n))
+        {
+          pending = index.CellOrder(); // the same points, neighbours one after the other
+        }
         ParallelFor(0, static_cast<std::int64_t>(pending.size()), 1024, [&](std::int64_t begin, std::int64_t end) {
           for (std::int64_t q = begin; q < end; ++q)
           {

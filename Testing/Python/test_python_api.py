@@ -215,6 +215,20 @@ def test_truth_values_for_switches():
     assert volume.GetPointData().GetArray("phi") is None and surface.GetNumberOfPolys() > 0
 
 
+def test_sampling_time():
+    """The points' spacing is measured once per cloud: GetSamplingTime is the
+    measurement's seconds in the update that made it, and 0 in an update that
+    only changed a property."""
+    f = narrowvolume.vtkNarrowVolumeReconstruction()
+    f.SetInputData(nvtesting.cloud(SPHERE))
+    f.SetOutputVolume(0)
+    f.Update()
+    assert f.GetSamplingTime() > 0.0
+    f.SetMaximumNumberOfIterations(2)
+    f.Update()
+    assert f.GetSamplingTime() == 0.0 and f.GetSetupTime() > 0.0
+
+
 def test_reconstruct_with_vtk_output_off():
     """With VTK's messages turned off (vtkObject.GlobalWarningDisplayOff()),
     reconstruct() still raises its errors and gives its warnings, and leaves
