@@ -241,7 +241,6 @@ int vtkNarrowVolumeReconstruction::RequestInformation(
     nv::GlobalBounds(*communicator, bounds);
   }
   std::shared_ptr<const nv::Sampling> sampling;
-  this->SamplingTime = 0.0;
   nv::WithThreads(this->NumberOfThreads, [&]() { sampling = this->MeasureSampling(input, communicator.get()); });
   const nv::Plan plan = nv::MakePlan(this->GetSettings(), bounds, sampling->Statistics());
   if (!plan.Valid())
@@ -340,7 +339,12 @@ int vtkNarrowVolumeReconstruction::RequestData(
       });
     }
     vtkPointSet* input = vtkPointSet::GetData(inputVector[0], 0);
-    if (!run.Run(PointsOf(input), this->MeasureSampling(input, communicator.get())))
+    const std::shared_ptr<const nv::Sampling> sampling = this->MeasureSampling(input, communicator.get());
+    // The measurement's seconds go to the first run that uses it (it may
+    // have been made for this run's information pass).
+    this->SamplingTime = this->SamplingUnreported;
+    this->SamplingUnreported = 0.0;
+    if (!run.Run(PointsOf(input), sampling))
     {
       if (!run.Error().empty())
       {
@@ -520,7 +524,7 @@ std::shared_ptr<const nv::Sampling> vtkNarrowVolumeReconstruction::MeasureSampli
     const auto start = std::chrono::steady_clock::now();
     auto sampling = std::make_shared<nv::Sampling>();
     sampling->Measure(PointsOf(input), communicator);
-    this->SamplingTime = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    this->SamplingUnreported += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     this->Sampled = sampling;
     this->SampledTime = time;
     this->SampledPoints = count;

@@ -425,6 +425,7 @@ protected:
   vtkIdType SampledPoints = -1;
   bool SampledShared = false;
   double SamplingTime = 0.0;
+  double SamplingUnreported = 0.0; ///< seconds of measurements no run has reported yet
   double SetupTime = 0.0;
   double EvolutionTime = 0.0;
   double OutputTime = 0.0;

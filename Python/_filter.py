@@ -72,6 +72,7 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
         # nv::Settings holds the C++ defaults.
         self._settings = _core.Settings()
         self._sampled = None  # (points' identity, modification time, count, the core's Sampling)
+        self._sampling_unreported = 0.0  # seconds of a measurement no run has reported yet
         self._clear_results()
 
     def _clear_results(self):
@@ -189,7 +190,6 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
         bounds = (1.0, 0.0, 1.0, 0.0, 1.0, 0.0)
         if data is not None and data.GetNumberOfPoints() > 0:
             bounds = data.GetBounds()
-        self._sampling_time = 0.0
         try:
             sampling = self._measure_sampling(data)
         except (KeyboardInterrupt, Exception) as error:  # RequestData reports the run's own errors
@@ -213,11 +213,14 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
         """The core's sampling of the input's points, measured once per
         points (object, modification time, count), as the C++ filter does."""
         points = data.GetPoints() if data is not None else None
-        key = (id(points), points.GetMTime() if points else 0, points.GetNumberOfPoints() if points else 0)
+        # The C++ object's address (__this__): a Python wrapper's id() changes
+        # whenever VTK hands out a new wrapper for the same points.
+        key = (points.__this__ if points else None, points.GetMTime() if points else 0,
+               points.GetNumberOfPoints() if points else 0)
         if self._sampled is None or self._sampled[0] != key:
             start = time.perf_counter()
             self._sampled = (key, _core.Sampling(_points_of(data), self._settings.NumberOfThreads))
-            self._sampling_time = time.perf_counter() - start
+            self._sampling_unreported += time.perf_counter() - start
         return self._sampled[1]
 
     def RequestUpdateExtent(self, request, inInfoVec, outInfoVec):
@@ -266,7 +269,11 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
             volume_on = bool(settings.OutputVolume)
             run.RequestVolume(volume_on and settings.OutputInitialPhi, volume_on and settings.OutputDistance,
                               volume_on and settings.OutputNarrowBand)
-        if not run.Run(_points_of(data), self._measure_sampling(data)):
+        sampling = self._measure_sampling(data)
+        # The measurement's seconds go to the first run that uses it (it may
+        # have been made for this run's information pass).
+        self._sampling_time, self._sampling_unreported = self._sampling_unreported, 0.0
+        if not run.Run(_points_of(data), sampling):
             if run.Error():
                 self._error(run.Error())
             return None
