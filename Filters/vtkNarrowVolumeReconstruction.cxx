@@ -292,7 +292,7 @@ int vtkNarrowVolumeReconstruction::RequestData(
   this->Gaps = this->RemovedPieces = this->RemovedVoids = 0;
   this->NumberOfBandNodes = 0;
   this->NumberOfGridNodes = 0;
-  this->SetupTime = this->EvolutionTime = this->OutputTime = 0.0;
+  this->SamplingTime = this->SetupTime = this->EvolutionTime = this->OutputTime = 0.0;
 
   // Distributed (see SetController), or one process computes everything:
   // then the requests for pieces other than 0 leave their outputs empty, so
