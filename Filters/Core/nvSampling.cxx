@@ -73,11 +73,16 @@ public:
     ParallelSort(keyed);
     this->Order.resize(keyed.size());
     this->Sorted.resize(xyz.size());
+    ParallelFor(0, n, 4096, [&](std::int64_t begin, std::int64_t end) {
+      for (std::int64_t q = begin; q < end; ++q)
+      {
+        this->Order[q] = keyed[q].second;
+        std::copy(&xyz[3 * keyed[q].second], &xyz[3 * keyed[q].second] + 3, &this->Sorted[3 * q]);
+      }
+    });
     std::size_t cells = 0;
     for (std::size_t q = 0; q < keyed.size(); ++q)
     {
-      this->Order[q] = keyed[q].second;
-      std::copy(&xyz[3 * keyed[q].second], &xyz[3 * keyed[q].second] + 3, &this->Sorted[3 * q]);
       cells += (q == 0 || keyed[q].first != keyed[q - 1].first) ? 1 : 0;
     }
     std::size_t slots = 16;
@@ -306,16 +311,15 @@ void Sampling::Measure(const std::vector<double>& xyz, Communicator* communicato
       for (double cell = CellSizeFor(this->Points); pending.size() > 1000; cell *= 4.0)
       {
         const CellIndex index(this->Points, cell);
-        if (pending.size() == static_cast<std::size_t>(n))
-        {
-          pending = index.CellOrder(); // the same points, neighbours one after the other
-        }
-        ParallelFor(0, static_cast<std::int64_t>(pending.size()), 1024, [&](std::int64_t begin, std::int64_t end) {
+        // All the points at first, in cell order (neighbours one after the other).
+        const std::vector<std::int64_t>& queries =
+          pending.size() == static_cast<std::size_t>(n) ? index.CellOrder() : pending;
+        ParallelFor(0, static_cast<std::int64_t>(queries.size()), 1024, [&](std::int64_t begin, std::int64_t end) {
           for (std::int64_t q = begin; q < end; ++q)
           {
-            const auto nearest = index.Nearest(pending[q]);
-            this->Nearest[pending[q]] = nearest.first;
-            this->Partner[pending[q]] = nearest.second;
+            const auto nearest = index.Nearest(queries[q]);
+            this->Nearest[queries[q]] = nearest.first;
+            this->Partner[queries[q]] = nearest.second;
           }
         });
         std::vector<std::int64_t> left;
