@@ -20,13 +20,12 @@
 #include "nvReconstruction.h"
 #include "nvSampling.h"
 #include "nvTruncatedDistance.h"
+#include "nvTestUtilities.h" // nvtest::SpherePoints
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <string>
 #include <vector>
 
@@ -44,22 +43,6 @@ double Median(std::vector<double> v)
 {
   std::sort(v.begin(), v.end());
   return v[v.size() / 2];
-}
-
-/// n points on a sphere of radius 0.5 (a Fibonacci spiral: even and repeatable).
-std::vector<double> SpherePoints(std::int64_t n)
-{
-  std::vector<double> xyz(static_cast<std::size_t>(3 * n));
-  const double golden = 3.14159265358979323846 * (3.0 - std::sqrt(5.0));
-  for (std::int64_t p = 0; p < n; ++p)
-  {
-    const double z = 1.0 - 2.0 * (static_cast<double>(p) + 0.5) / static_cast<double>(n);
-    const double r = std::sqrt(1.0 - z * z);
-    xyz[3 * p] = 0.5 * r * std::cos(golden * static_cast<double>(p));
-    xyz[3 * p + 1] = 0.5 * r * std::sin(golden * static_cast<double>(p));
-    xyz[3 * p + 2] = 0.5 * z;
-  }
-  return xyz;
 }
 
 /// A STREAM triad a[i] = b[i] + s c[i] over arrays of n doubles.
@@ -99,7 +82,7 @@ private:
 int main(int argc, char* argv[])
 {
   int cells = 512, sweeps = 20, repeat = 9;
-  std::int64_t points = 200000;
+  std::int64_t points = 200000; // a Fibonacci spiral on a sphere of radius 0.5
   std::vector<int> threads = { 1, 2 };
   for (int i = 1; i < argc; ++i)
   {
@@ -126,7 +109,8 @@ int main(int argc, char* argv[])
   }
 
   // The band of Table 2's large sphere: l = 4 h, xi = 2 h, h = 1 / cells.
-  const std::vector<double> xyz = SpherePoints(points);
+  const double center[3] = { 0.0, 0.0, 0.0 };
+  const std::vector<double> xyz = nvtest::SpherePoints(static_cast<int>(points), 0.5, center);
   nv::Settings settings;
   settings.SampleSpacing = 1.0 / cells;
   settings.OffsetDistance = 4.0 * settings.SampleSpacing;
