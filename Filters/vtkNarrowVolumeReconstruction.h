@@ -36,10 +36,12 @@
  * not saturated: smooth surfaces come out smooth); closed and manifold.
  *
  * @warning
- * The work runs in parallel with vtkSMPTools. When the process-wide backend is
- * Sequential (the default of Debian's ParaView), the filter runs its loops
- * with the STDThread backend and NumberOfThreads threads (0: all cores).
- * Results are bit-identical for any number of threads.
+ * The work runs in parallel on vtkSMPTools' threads when its backend is TBB
+ * or OpenMP. When it is Sequential (the default of Debian's ParaView) or
+ * STDThread, the filter's loops run on a pool of std::threads of its own
+ * with NumberOfThreads threads (0: all cores), as VTK 9.2's STDThread
+ * backend starts new threads for every loop. Results are bit-identical for
+ * any number of threads.
  *
  * Under MPI (pvbatch, pvserver) each process brings its piece of the cloud.
  * The grid is cut along z into one slab per process; each process receives

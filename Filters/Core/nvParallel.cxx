@@ -14,22 +14,21 @@ namespace
 // Chunk size of the deterministic reductions: fixed, never derived from the thread count.
 constexpr std::int64_t ReductionChunk = 8192;
 // Below this many items a reduction (one Gauss-Seidel half sweep, say) costs
-// less than the hand-off to the threads: it runs on the calling thread.
-// Measured on 2 cores: the sweeps of the sphere of Fig. 5 (95,000 nodes a
-// half sweep) take 25 % longer on two threads than on one; the teacup's
-// (231,000) take about as long in a warm process and less in a fresh one;
-// from the fine armadillo's (826,000) up, two threads are 1.3x to 1.5x
-// faster. A memory-bound sweep gains little from a second thread and pays
-// the threads' wake-up, twice a sweep.
-constexpr std::int64_t SerialReduction = 1 << 17;
-// Chunks per task when a reduction does run on threads.
-constexpr std::int64_t ChunksPerTask = 8;
+// less on the calling thread than shared out; above, each chunk is a task of
+// its own (the threads take the next chunk from a counter, so 8192 items a
+// task balance them at little cost). Measured on 2 cores with the pool of
+// nvThreadPool.h (benchmarks/sweep_bandwidth --cells N --threads 1 2): half
+// sweeps of 21,000 and 40,000 nodes run 1.2x to 1.4x slower on two threads
+// than on one, of 81,000 from 0.97x slower to 1.36x faster, of 100,000 and
+// up 1.3x to 2x faster. A sweep of a band that fits in the caches gains from
+// a second thread once its halves are long enough to pay the wake-up.
+constexpr std::int64_t SerialReduction = 1 << 16;
 
 std::vector<double> ChunkValues(std::int64_t n, const RangeReduction& fn)
 {
   const std::int64_t chunks = (n + ReductionChunk - 1) / ReductionChunk;
   std::vector<double> values(static_cast<std::size_t>(chunks), 0.0);
-  ParallelFor(0, chunks, n < SerialReduction ? chunks : ChunksPerTask, [&](std::int64_t first, std::int64_t last) {
+  ParallelFor(0, chunks, n < SerialReduction ? chunks : 1, [&](std::int64_t first, std::int64_t last) {
     for (std::int64_t c = first; c < last; ++c)
     {
       const std::int64_t begin = c * ReductionChunk;

@@ -48,8 +48,9 @@ double ParallelMax(std::int64_t n, const RangeReduction& fn);
 /**
  * Runs body with `threads` threads for the loops above (0: all cores). With
  * vtkSMPTools, a process whose backend is Sequential (the default of
- * Debian's ParaView) gets the STDThread backend for the scope, so that the
- * VTK filters run inside body (the isosurfacer) use the same threads.
+ * Debian's ParaView) gets the STDThread backend for the scope, so that VTK
+ * filters run inside body use threads too; the core's own loops then run on
+ * the pool of nvThreadPool.h.
  */
 void WithThreads(int threads, const std::function<void()>& body);
 

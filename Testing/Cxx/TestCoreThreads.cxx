@@ -6,7 +6,9 @@
 // asked for, loops inside loops and loops from two threads at once, an
 // exception reaching the caller (the pool), reductions and the shipped run's phi
 // bit-identical for any thread count, and (std::thread pool) a forked child
-// that still runs parallel loops.
+// that still runs parallel loops. The VTK build runs its loops on the same
+// pool when vtkSMPTools' backend is Sequential or STDThread: there it is
+// tested as the pool.
 #include "nvParallel.h"
 #include "nvReconstruction.h"
 #include "nvTestUtilities.h"
@@ -22,6 +24,11 @@
 #include <thread>
 #include <vector>
 
+#ifndef NV_TEST_POOL
+#include <vtkSMPTools.h>
+#include <string>
+#endif
+
 #ifndef _WIN32
 #include <csignal>
 #include <sys/wait.h>
@@ -30,6 +37,17 @@
 
 namespace
 {
+
+/// Whether the core's loops run on the std::thread pool of nvThreadPool.h.
+bool OnPool()
+{
+#ifdef NV_TEST_POOL
+  return true;
+#else
+  const std::string backend = vtkSMPTools::GetBackend() ? vtkSMPTools::GetBackend() : "Sequential";
+  return backend == "Sequential" || backend == "STDThread";
+#endif
+}
 
 /// Every index of [begin, end) visited exactly once by ParallelFor.
 bool VisitsOnce(std::int64_t begin, std::int64_t end, std::int64_t grain)
@@ -126,9 +144,8 @@ void TestNestedAndConcurrent()
   NV_CHECK(good == 2);
 }
 
-#ifdef NV_TEST_POOL
-// The std::thread pool hands an exception to the caller (vtkSMPTools'
-// STDThread backend does not: there it would end the process).
+// The std::thread pool hands an exception to the caller (VTK 9.2's
+// STDThread backend, which the pool replaces, would end the process).
 void TestException()
 {
   bool caught = false;
@@ -150,7 +167,6 @@ void TestException()
   });
   NV_CHECK(caught);
 }
-#endif
 
 void TestReductions()
 {
@@ -207,7 +223,7 @@ void TestRunThreads()
   NV_CHECK(phi[2] == phi[0]);
 }
 
-#if defined(NV_TEST_POOL) && !defined(_WIN32)
+#ifndef _WIN32
 /// A child made by fork() after the pool started runs parallel loops too
 /// (it has none of its parent's threads).
 void TestFork()
@@ -234,13 +250,17 @@ int main()
   TestCoverage();
   TestThreadCount();
   TestNestedAndConcurrent();
-#ifdef NV_TEST_POOL
-  TestException();
-#endif
+  if (OnPool())
+  {
+    TestException();
+  }
   TestReductions();
   TestRunThreads();
-#if defined(NV_TEST_POOL) && !defined(_WIN32)
-  TestFork();
+#ifndef _WIN32
+  if (OnPool())
+  {
+    TestFork();
+  }
 #endif
   return nvtest::Result(NV_TEST_NAME);
 }
