@@ -2,15 +2,87 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "nvPieces.h"
 
+#include "nvParallel.h"
+
 #include <algorithm>
 #include <array>
-#include <numeric>
+#include <atomic>
+#include <memory>
 #include <cmath>
 #include <unordered_set>
+#include <utility>
 #include <vector>
 
 namespace nv
 {
+namespace
+{
+constexpr std::int64_t Grain = 1 << 15; ///< triangles or points per task
+
+/// The parts of a surface: union-find over its points, joined from any
+/// thread. A root is only ever linked under a smaller index, so each part's
+/// root ends as its smallest point index, whichever thread joined first.
+class PointParts
+{
+public:
+  explicit PointParts(std::int64_t n)
+    : Parent(new std::atomic<std::int64_t>[static_cast<std::size_t>(n)])
+  {
+    ParallelFor(0, n, Grain, [&](std::int64_t first, std::int64_t last) {
+      for (std::int64_t p = first; p < last; ++p)
+      {
+        this->Parent[p].store(p, std::memory_order_relaxed);
+      }
+    });
+  }
+
+  std::int64_t Root(std::int64_t p)
+  {
+    for (;;)
+    {
+      std::int64_t parent = this->Parent[p].load();
+      if (parent == p)
+      {
+        return p;
+      }
+      // Path halving: p skips to its grandparent (still an ancestor, as links
+      // are never undone).
+      const std::int64_t grandparent = this->Parent[parent].load();
+      if (grandparent != parent)
+      {
+        this->Parent[p].compare_exchange_weak(parent, grandparent);
+      }
+      p = grandparent;
+    }
+  }
+
+  void Join(std::int64_t a, std::int64_t b)
+  {
+    for (;;)
+    {
+      a = this->Root(a);
+      b = this->Root(b);
+      if (a == b)
+      {
+        return;
+      }
+      if (a < b)
+      {
+        std::swap(a, b);
+      }
+      // a, the larger root, under b, unless another thread linked a first.
+      std::int64_t expected = a;
+      if (this->Parent[a].compare_exchange_strong(expected, b))
+      {
+        return;
+      }
+    }
+  }
+
+private:
+  std::unique_ptr<std::atomic<std::int64_t>[]> Parent;
+};
+} // namespace
 
 double SmallPieceVolume(double offset)
 {
@@ -100,34 +172,59 @@ RemovedPieces RemoveSmallPieces(SurfaceArrays& surface, double offset, const Gri
     return removed;
   }
   const VertexId* triangles = surface.Triangles;
-  // Connected parts: union-find over the points that triangles share.
-  std::vector<std::int64_t> parent(static_cast<std::size_t>(n));
-  std::iota(parent.begin(), parent.end(), 0);
-  auto root = [&](std::int64_t a) {
-    while (parent[a] != a)
+  // Connected parts: the points that triangles share, joined on all threads.
+  PointParts parts(n);
+  ParallelFor(0, m, Grain, [&](std::int64_t first, std::int64_t last) {
+    for (std::int64_t t = first; t < last; ++t)
     {
-      a = parent[a] = parent[parent[a]];
+      parts.Join(triangles[3 * t], triangles[3 * t + 1]);
+      parts.Join(triangles[3 * t], triangles[3 * t + 2]);
     }
-    return a;
-  };
-  for (std::int64_t t = 0; t < m; ++t)
-  {
-    parent[root(triangles[3 * t + 1])] = root(triangles[3 * t]);
-    parent[root(triangles[3 * t + 2])] = root(triangles[3 * t]);
-  }
-  // Signed volume of each part: the sum of p0 . (p1 x p2) / 6 over its triangles.
+  });
+  std::vector<std::int64_t> root(static_cast<std::size_t>(n));
+  ParallelFor(0, n, Grain, [&](std::int64_t first, std::int64_t last) {
+    for (std::int64_t p = first; p < last; ++p)
+    {
+      root[p] = parts.Root(p);
+    }
+  });
+  // Signed volume of each part: the sum of p0 . (p1 x p2) / 6 over its
+  // triangles. Each fixed chunk of triangles sums its runs of one part (a
+  // chunk's triangles are near each other, so there are few), and the runs
+  // are added in chunk order: the same volumes for any thread count.
+  const std::int64_t chunks = (m + Grain - 1) / Grain;
+  std::vector<std::vector<std::pair<std::int64_t, double>>> runs(static_cast<std::size_t>(chunks));
+  ParallelFor(0, chunks, 1, [&](std::int64_t first, std::int64_t last) {
+    for (std::int64_t chunk = first; chunk < last; ++chunk)
+    {
+      auto& sums = runs[chunk];
+      for (std::int64_t t = chunk * Grain; t < std::min(m, (chunk + 1) * Grain); ++t)
+      {
+        const double* a = surface.Points + 3 * triangles[3 * t];
+        const double* b = surface.Points + 3 * triangles[3 * t + 1];
+        const double* c = surface.Points + 3 * triangles[3 * t + 2];
+        const double v = (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+                           a[2] * (b[0] * c[1] - b[1] * c[0])) / 6.0;
+        const std::int64_t r = root[triangles[3 * t]];
+        if (sums.empty() || sums.back().first != r)
+        {
+          sums.emplace_back(r, 0.0);
+        }
+        sums.back().second += v;
+      }
+    }
+  });
   std::vector<double> volume(static_cast<std::size_t>(n), 0.0); // by root
   std::vector<char> used(static_cast<std::size_t>(n), 0);
-  for (std::int64_t t = 0; t < m; ++t)
+  for (const auto& sums : runs)
   {
-    const double* a = surface.Points + 3 * triangles[3 * t];
-    const double* b = surface.Points + 3 * triangles[3 * t + 1];
-    const double* c = surface.Points + 3 * triangles[3 * t + 2];
-    const std::int64_t r = root(triangles[3 * t]);
-    volume[r] += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
-                   a[2] * (b[0] * c[1] - b[1] * c[0])) / 6.0;
-    used[r] = 1;
+    for (const auto& run : sums)
+    {
+      volume[run.first] += run.second;
+      used[run.first] = 1;
+    }
   }
+  decltype(runs)().swap(runs);
   // Which parts go; when every piece is small, the largest stays.
   const double smallPiece = SmallPieceVolume(offset), smallVoid = SmallVoidVolume(offset);
   std::int64_t spared = -1;
@@ -179,7 +276,7 @@ RemovedPieces RemoveSmallPieces(SurfaceArrays& surface, double offset, const Gri
   std::int64_t kept = 0;
   for (std::int64_t p = 0; p < n; ++p)
   {
-    if (!drop[root(p)])
+    if (!drop[root[p]])
     {
       newId[p] = kept;
       std::copy(surface.Points + 3 * p, surface.Points + 3 * p + 3, surface.Points + 3 * kept);
@@ -190,7 +287,7 @@ RemovedPieces RemoveSmallPieces(SurfaceArrays& surface, double offset, const Gri
   std::int64_t keptTriangles = 0;
   for (std::int64_t t = 0; t < m; ++t)
   {
-    if (!drop[root(triangles[3 * t])])
+    if (!drop[root[triangles[3 * t]]])
     {
       for (int c = 0; c < 3; ++c)
       {
