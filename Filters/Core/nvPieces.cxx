@@ -7,8 +7,8 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
-#include <memory>
 #include <cmath>
+#include <memory>
 #include <unordered_set>
 #include <utility>
 #include <vector>
