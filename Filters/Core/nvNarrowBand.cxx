@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "nvNarrowBand.h"
 
+#include "nvMemory.h"
 #include "nvParallel.h"
 #include "nvTruncatedDistance.h"
 
@@ -215,6 +216,7 @@ NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& 
     }
   });
   std::vector<BrickBand>().swap(perBrick);
+  ReleaseFreedMemory(); // before the neighbour indices, the band's largest array
 
   // Step 3: connect each band node to its six neighbours. Per brick, the
   // bricks across its six faces, and per brick holding band nodes, a 512-bit

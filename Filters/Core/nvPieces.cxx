@@ -79,7 +79,17 @@ public:
     }
   }
 
-private:
+  /// Once every Join is done: each point's parent becomes its root.
+  void Flatten(std::int64_t n)
+  {
+    ParallelFor(0, n, Grain, [&](std::int64_t first, std::int64_t last) {
+      for (std::int64_t p = first; p < last; ++p)
+      {
+        this->Parent[p].store(this->Root(p), std::memory_order_relaxed);
+      }
+    });
+  }
+
   std::unique_ptr<std::atomic<std::int64_t>[]> Parent;
 };
 } // namespace
@@ -181,13 +191,8 @@ RemovedPieces RemoveSmallPieces(SurfaceArrays& surface, double offset, const Gri
       parts.Join(triangles[3 * t], triangles[3 * t + 2]);
     }
   });
-  std::vector<std::int64_t> root(static_cast<std::size_t>(n));
-  ParallelFor(0, n, Grain, [&](std::int64_t first, std::int64_t last) {
-    for (std::int64_t p = first; p < last; ++p)
-    {
-      root[p] = parts.Root(p);
-    }
-  });
+  parts.Flatten(n);
+  auto root = [&parts](std::int64_t p) { return parts.Parent[p].load(std::memory_order_relaxed); };
   // Signed volume of each part: the sum of p0 . (p1 x p2) / 6 over its
   // triangles. Each fixed chunk of triangles sums its runs of one part (a
   // chunk's triangles are near each other, so there are few), and the runs
@@ -205,7 +210,7 @@ RemovedPieces RemoveSmallPieces(SurfaceArrays& surface, double offset, const Gri
         const double* c = surface.Points + 3 * triangles[3 * t + 2];
         const double v = (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
                            a[2] * (b[0] * c[1] - b[1] * c[0])) / 6.0;
-        const std::int64_t r = root[triangles[3 * t]];
+        const std::int64_t r = root(triangles[3 * t]);
         if (sums.empty() || sums.back().first != r)
         {
           sums.emplace_back(r, 0.0);
@@ -214,44 +219,57 @@ RemovedPieces RemoveSmallPieces(SurfaceArrays& surface, double offset, const Gri
       }
     }
   });
-  std::vector<double> volume(static_cast<std::size_t>(n), 0.0); // by root
-  std::vector<char> used(static_cast<std::size_t>(n), 0);
+  // Each part's volume: its runs in chunk order (a stable sort by root keeps
+  // that order), the parts by ascending root.
+  std::vector<std::pair<std::int64_t, double>> all;
   for (const auto& sums : runs)
   {
-    for (const auto& run : sums)
-    {
-      volume[run.first] += run.second;
-      used[run.first] = 1;
-    }
+    all.insert(all.end(), sums.begin(), sums.end());
   }
   decltype(runs)().swap(runs);
+  std::stable_sort(all.begin(), all.end(),
+    [](const std::pair<std::int64_t, double>& x, const std::pair<std::int64_t, double>& y) { return x.first < y.first; });
+  struct Part
+  {
+    std::int64_t Root;
+    double Volume;
+    bool Drop;
+  };
+  std::vector<Part> found;
+  for (const auto& run : all)
+  {
+    if (found.empty() || found.back().Root != run.first)
+    {
+      found.push_back(Part{ run.first, 0.0, false });
+    }
+    found.back().Volume += run.second;
+  }
   // Which parts go; when every piece is small, the largest stays.
   const double smallPiece = SmallPieceVolume(offset), smallVoid = SmallVoidVolume(offset);
-  std::int64_t spared = -1;
+  const Part* spared = nullptr;
   bool largePiece = false;
-  for (std::int64_t r = 0; r < n; ++r)
+  for (const Part& part : found)
   {
-    if (used[r] && volume[r] > 0.0)
+    if (part.Volume > 0.0)
     {
-      largePiece = largePiece || volume[r] >= smallPiece;
-      spared = (spared < 0 || volume[r] > volume[spared]) ? r : spared;
+      largePiece = largePiece || part.Volume >= smallPiece;
+      spared = (!spared || part.Volume > spared->Volume) ? &part : spared;
     }
   }
-  std::vector<char> drop(static_cast<std::size_t>(n), 0);
-  for (std::int64_t r = 0; r < n; ++r)
+  for (Part& part : found)
   {
-    if (!used[r] || (!largePiece && r == spared))
+    if (!largePiece && &part == spared)
     {
       continue;
     }
-    if (volume[r] > 0.0 && volume[r] < smallPiece)
+    if (part.Volume > 0.0 && part.Volume < smallPiece)
     {
-      drop[r] = 1;
+      part.Drop = true;
       ++removed.Pieces;
     }
-    else if (volume[r] <= 0.0 && -volume[r] < smallVoid)
+    else if (part.Volume <= 0.0 && -part.Volume < smallVoid)
     {
-      drop[r] = 1;
+      part.Drop = true;
       ++removed.Voids;
     }
   }
@@ -259,14 +277,16 @@ RemovedPieces RemoveSmallPieces(SurfaceArrays& surface, double offset, const Gri
   {
     return removed;
   }
-  // phi follows: each dropped region flipped from one of its vertices (the
-  // root is one), before the points move.
-  for (std::int64_t r = 0; phi && r < n; ++r)
+  std::vector<char> drop(static_cast<std::size_t>(n), 0); // by root
+  for (const Part& part : found)
   {
-    if (drop[r])
+    drop[part.Root] = part.Drop;
+    // phi follows: each dropped region flipped from one of its vertices (the
+    // root is one), before the points move.
+    if (part.Drop && phi)
     {
-      const bool piece = volume[r] > 0.0;
-      FlipRegion(grid, phi, kBegin, layers, surface.Points + 3 * r, piece,
+      const bool piece = part.Volume > 0.0;
+      FlipRegion(grid, phi, kBegin, layers, surface.Points + 3 * part.Root, piece,
         2.0 * (piece ? SmallPieceVolume(offset) : SmallVoidVolume(offset)));
     }
   }
@@ -276,7 +296,7 @@ RemovedPieces RemoveSmallPieces(SurfaceArrays& surface, double offset, const Gri
   std::int64_t kept = 0;
   for (std::int64_t p = 0; p < n; ++p)
   {
-    if (!drop[root[p]])
+    if (!drop[root(p)])
     {
       newId[p] = kept;
       std::copy(surface.Points + 3 * p, surface.Points + 3 * p + 3, surface.Points + 3 * kept);
@@ -287,7 +307,7 @@ RemovedPieces RemoveSmallPieces(SurfaceArrays& surface, double offset, const Gri
   std::int64_t keptTriangles = 0;
   for (std::int64_t t = 0; t < m; ++t)
   {
-    if (!drop[root[triangles[3 * t]]])
+    if (!drop[root(triangles[3 * t])])
     {
       for (int c = 0; c < 3; ++c)
       {

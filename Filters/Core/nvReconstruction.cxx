@@ -3,6 +3,7 @@
 #include "nvReconstruction.h"
 
 #include "nvCommunicator.h"
+#include "nvMemory.h"
 #include "nvParallel.h"
 #include "nvSurface.h"
 #include "nvSurfaceField.h"
@@ -18,9 +19,6 @@
 #include <windows.h>
 #else
 #include <unistd.h>
-#endif
-#ifdef __GLIBC__
-#include <malloc.h>
 #endif
 
 namespace nv
@@ -53,17 +51,6 @@ double PhysicalMemoryBytes()
   const long pages = sysconf(_SC_PHYS_PAGES);
   const long pageSize = sysconf(_SC_PAGE_SIZE);
   return pages > 0 && pageSize > 0 ? static_cast<double>(pages) * static_cast<double>(pageSize) : 0.0;
-#endif
-}
-
-/// Hands memory freed by the band's construction back to the system. glibc
-/// keeps what worker threads freed in their own arenas, where the main
-/// thread's later allocations (the surface) cannot reuse it: measured on
-/// the VolumeOff test's sphere (6 M band nodes, 2 threads), 110 MB.
-void ReleaseFreedMemory()
-{
-#ifdef __GLIBC__
-  malloc_trim(0);
 #endif
 }
 
