@@ -453,6 +453,7 @@ bool Reconstruction::RunSteps(std::vector<double> xyz, std::shared_ptr<const Sam
   // The outputs need the band's nodes and phi only.
   this->Solver->ReleaseWorkspace();
   std::vector<std::uint32_t>().swap(this->Band.Neighbor);
+  ReleaseFreedMemory();
   if (volume)
   {
     volume->WriteBand(this->Band, this->Solver->GetPhi());
