@@ -462,6 +462,7 @@ bool vtkNarrowVolumeReconstruction::ProduceOutputs(nv::Reconstruction& run, nv::
       vtkWarningMacro(<< nv::NoInnerSheetWarning());
     }
   }
+  run.ReleaseBand(); // the surface is made: what follows needs neither
   if (done && settings.RemoveSmallPieces && !distributed && !monitor.Aborted())
   {
     // The surface's small parts go, and phi follows in the same regions.

@@ -327,6 +327,7 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
             explained = _core.NoInnerSheet(settings, cavities)
             if explained:
                 self._warning(_core.NoInnerSheetWarning())
+        run.ReleaseBand()  # the surface is made: what follows needs neither
         removed = (0, 0)
         if done and settings.RemoveSmallPieces and not monitor.Aborted():
             # The surface's small parts go, and phi follows in the same regions.

@@ -512,6 +512,8 @@ NB_MODULE(_core, m)
       "Error() says why, or Aborted(). sampling: the points' Sampling, if measured already.")
     .def("TakeVolume", &PythonRun::TakeVolume, "{name: numpy array} of the dense arrays the run filled.")
     .def("ExtractSurface", &PythonRun::ExtractSurface, "sink"_a, "Step 7: the phi = 0 surface from the band.")
+    .def("ReleaseBand", [](PythonRun& r) { r.Run.ReleaseBand(); },
+      "Frees the band and phi once the surface is made.")
     .def("ContourDense", &PythonRun::ContourDense, "phi"_a, "sink"_a,
       "The surface of the sheets the settings keep, from a copy of the dense phi: (done, cavities).")
     .def("Error", [](const PythonRun& r) { return r.Run.Error(); })

@@ -461,6 +461,14 @@ bool Reconstruction::RunSteps(std::vector<double> xyz, std::shared_ptr<const Sam
   return true;
 }
 
+void Reconstruction::ReleaseBand()
+{
+  this->TheHalo.reset();
+  this->Solver.reset();
+  this->Band = NarrowBand{};
+  ReleaseFreedMemory();
+}
+
 void Reconstruction::RequestVolume(std::int64_t ghostLayers, VolumeAllocator allocate)
 {
   this->VolumeGhosts = std::max<std::int64_t>(0, ghostLayers);

@@ -176,6 +176,11 @@ public:
   const NarrowBand& GetBand() const { return this->Band; }
   const std::vector<double>& GetPhi() const { return this->Solver->GetPhi(); }
 
+  /// Frees the band and phi once the outputs no longer need them (after the
+  /// surface is extracted), so that the surface's last steps (small pieces,
+  /// the output's arrays) do not hold them too. GetBand and GetPhi are then empty.
+  void ReleaseBand();
+
 private:
   bool RunSteps(std::vector<double> xyz, std::shared_ptr<const Sampling> measured);
   bool Fail(const std::string& message);
