@@ -9,6 +9,7 @@
 #include <atomic>
 #include <cmath>
 #include <memory>
+#include <unordered_map>
 #include <unordered_set>
 #include <utility>
 #include <vector>
@@ -105,46 +106,95 @@ double SmallVoidVolume(double offset)
   return 4.0 / 3.0 * M_PI * offset * offset * offset;
 }
 
-bool FlipRegion(const Grid& grid, float* phi, std::int64_t kBegin, std::int64_t layers, const double point[3],
-  bool inside, double maximumVolume)
+namespace
+{
+/// The nodes next to a surface vertex on the region's side: the vertex lies
+/// on a grid edge (its other two coordinates are node coordinates), and one
+/// end of that edge is in the region. A vertex on a node (phi = 0 there) has
+/// the node and its six neighbours as candidates.
+void AddSeeds(const Grid& grid, const float* phi, std::int64_t kBegin, std::int64_t layers, const double point[3],
+  bool inside, std::vector<std::int64_t>& seeds)
+{
+  const std::int64_t extent[3] = { grid.Dims[0], grid.Dims[1], layers };
+  double x[3];
+  int axis = 0;
+  double along = -1.0; // the largest distance from a node coordinate
+  for (int a = 0; a < 3; ++a)
+  {
+    x[a] = (point[a] - grid.Origin[a]) / grid.Spacing - (a == 2 ? kBegin : 0);
+    const double off = std::abs(x[a] - std::round(x[a]));
+    if (off > along)
+    {
+      along = off;
+      axis = a;
+    }
+  }
+  std::int64_t node[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    node[a] = static_cast<std::int64_t>(a == axis && along > 1e-6 ? std::floor(x[a]) : std::round(x[a]));
+  }
+  auto add = [&](const std::int64_t ijk[3]) {
+    for (int a = 0; a < 3; ++a)
+    {
+      if (ijk[a] < 0 || ijk[a] >= extent[a])
+      {
+        return;
+      }
+    }
+    const std::int64_t n = ijk[0] + extent[0] * (ijk[1] + extent[1] * ijk[2]);
+    if ((phi[n] > 0.0f) == inside)
+    {
+      seeds.push_back(n);
+    }
+  };
+  add(node);
+  for (int a = 0; a < 3; ++a)
+  {
+    for (int step : { -1, 1 })
+    {
+      if (along > 1e-6 && (a != axis || step < 0))
+      {
+        continue; // on an edge: only its other end
+      }
+      std::int64_t ijk[3] = { node[0], node[1], node[2] };
+      ijk[a] += step;
+      add(ijk);
+    }
+  }
+}
+} // namespace
+
+bool FlipRegion(const Grid& grid, float* phi, std::int64_t kBegin, std::int64_t layers, const double* points,
+  const std::vector<std::int64_t>& vertices, bool inside, double maximumVolume)
 {
   const std::int64_t nx = grid.Dims[0], ny = grid.Dims[1];
   auto sideOf = [&](std::int64_t n) { return phi[n] > 0.0f; };
-  // The seed: the corner of the point's cell on the region's side, nearest to it.
-  std::int64_t cell[3];
-  for (int a = 0; a < 3; ++a)
+  // The seeds: each vertex's edge end in the region. Seeding from every
+  // vertex, not one, matters: the region's nodes can be joined only across a
+  // cell's diagonal (marching cubes joins them through an ambiguous face), so
+  // one 6-connected flood need not reach them all.
+  std::vector<std::int64_t> seeds;
+  for (std::int64_t v : vertices)
   {
-    const std::int64_t extent = a == 2 ? layers : grid.Dims[a];
-    const double x = (point[a] - grid.Origin[a]) / grid.Spacing - (a == 2 ? kBegin : 0);
-    cell[a] = std::min<std::int64_t>(std::max<std::int64_t>(static_cast<std::int64_t>(std::floor(x)), 0), extent - 2);
-  }
-  std::int64_t seed = -1;
-  double nearest = 1e300;
-  for (int corner = 0; corner < 8; ++corner)
-  {
-    const std::int64_t ijk[3] = { cell[0] + (corner & 1), cell[1] + ((corner >> 1) & 1), cell[2] + (corner >> 2) };
-    const std::int64_t n = ijk[0] + nx * (ijk[1] + ny * ijk[2]);
-    double d2 = 0.0;
-    for (int a = 0; a < 3; ++a)
-    {
-      const double x = grid.Origin[a] + (ijk[a] + (a == 2 ? kBegin : 0)) * grid.Spacing - point[a];
-      d2 += x * x;
-    }
-    if (sideOf(n) == inside && d2 < nearest)
-    {
-      nearest = d2;
-      seed = n;
-    }
-  }
-  if (seed < 0)
-  {
-    return false;
+    AddSeeds(grid, phi, kBegin, layers, points + 3 * v, inside, seeds);
   }
   // Breadth-first search of the region, given up beyond maximumVolume.
   const std::int64_t limit =
     static_cast<std::int64_t>(maximumVolume / (grid.Spacing * grid.Spacing * grid.Spacing)) + 1;
-  std::vector<std::int64_t> region{ seed };
-  std::unordered_set<std::int64_t> visited{ seed };
+  std::vector<std::int64_t> region;
+  std::unordered_set<std::int64_t> visited;
+  for (std::int64_t seed : seeds)
+  {
+    if (visited.insert(seed).second)
+    {
+      region.push_back(seed);
+    }
+  }
+  if (region.empty())
+  {
+    return false;
+  }
   for (std::size_t head = 0; head < region.size(); ++head)
   {
     if (static_cast<std::int64_t>(region.size()) > limit)
@@ -281,13 +331,27 @@ RemovedPieces RemoveSmallPieces(SurfaceArrays& surface, double offset, const Gri
   for (const Part& part : found)
   {
     drop[part.Root] = part.Drop;
-    // phi follows: each dropped region flipped from one of its vertices (the
-    // root is one), before the points move.
-    if (part.Drop && phi)
+  }
+  if (phi)
+  {
+    // phi follows: each dropped region flipped from its vertices, before the
+    // points move.
+    std::unordered_map<std::int64_t, std::vector<std::int64_t>> vertices; // by root
+    for (std::int64_t p = 0; p < n; ++p)
     {
-      const bool piece = part.Volume > 0.0;
-      FlipRegion(grid, phi, kBegin, layers, surface.Points + 3 * part.Root, piece,
-        2.0 * (piece ? SmallPieceVolume(offset) : SmallVoidVolume(offset)));
+      if (drop[root(p)])
+      {
+        vertices[root(p)].push_back(p);
+      }
+    }
+    for (const Part& part : found)
+    {
+      if (part.Drop)
+      {
+        const bool piece = part.Volume > 0.0;
+        FlipRegion(grid, phi, kBegin, layers, surface.Points, vertices[part.Root], piece,
+          2.0 * (piece ? SmallPieceVolume(offset) : SmallVoidVolume(offset)));
+      }
     }
   }
   // The kept points to the front, in their order (new id <= old id), then

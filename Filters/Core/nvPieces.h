@@ -23,6 +23,7 @@
 #include "nvSurface.h"
 
 #include <cstdint>
+#include <vector>
 
 namespace nv
 {
@@ -39,15 +40,18 @@ double SmallPieceVolume(double offset);
 double SmallVoidVolume(double offset);
 
 /**
- * Flips the sign of phi over the 6-connected region of nodes of one sign
- * (inside: phi > 0, else phi <= 0) next to `point`, a vertex of the region's
- * surface, so that no phi = 0 surface is left around it. phi holds the node
+ * Flips the sign of phi over the region of nodes of one sign (inside: phi >
+ * 0, else phi <= 0) that a closed part of the surface encloses, so that no
+ * phi = 0 surface is left there. `vertices` are the part's points (indices
+ * into `points`, 3 doubles each); the region is the 6-connected nodes reached
+ * from each vertex's grid-edge end on the region's side (all vertices, as the
+ * region's nodes may touch only across a cell's diagonal). phi holds the node
  * layers [kBegin, kBegin + layers) of the grid. A region larger than
  * maximumVolume (it joins a large one through a node the surface does not
  * see) is left as it is; returns whether the region was flipped.
  */
-bool FlipRegion(const Grid& grid, float* phi, std::int64_t kBegin, std::int64_t layers, const double point[3],
-  bool inside, double maximumVolume);
+bool FlipRegion(const Grid& grid, float* phi, std::int64_t kBegin, std::int64_t layers, const double* points,
+  const std::vector<std::int64_t>& vertices, bool inside, double maximumVolume);
 
 /// A triangle surface in a sink's arrays: NumberOfPoints points (3 doubles
 /// each) with their normals (3 floats each), NumberOfTriangles triangles (3

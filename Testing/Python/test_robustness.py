@@ -5,6 +5,7 @@ their precision, and many random small clouds and parameter sets keep the
 invariants: no NaN, phi in [-1, 1], a closed surface, the same phi on every run."""
 import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkFiltersCore import vtkFlyingEdges3D
 
 from narrowvolume import vtkNarrowVolumeReconstruction
 import nvtesting
@@ -58,6 +59,35 @@ far_points = nvtesting.points_of(far) - shift
 t.check(np.abs(far_points - nvtesting.points_of(near)).max() < 1e-4, "far cloud: same vertices (%.2e)" %
         np.abs(far_points - nvtesting.points_of(near)).max())
 
+
+def contour_of(f):
+    """phi = 0 contoured from the Volume output, as a user would."""
+    contour = vtkFlyingEdges3D()
+    contour.SetInputData(f.GetOutput(0))
+    contour.SetValue(0, 0.0)
+    contour.Update()
+    return contour.GetOutput()
+
+
+# Removed voids leave phi too: a sphere with outliers around it and a clump
+# inside leaves tiny voids in its wall, some of whose nodes touch only across
+# a cell's diagonal; contouring the returned phi gives the surface's parts.
+rng = np.random.default_rng(3)
+shell = rng.normal(size=(20000, 3))
+shell /= np.linalg.norm(shell, axis=1)[:, None]
+clump = 0.05 * rng.normal(size=(3000, 3))
+xyz = np.vstack([shell, rng.uniform(-2, 2, (300, 3)), clump])
+f = run(xyz, MaximumDimension=150)
+field = f.GetOutput(0).GetFieldData()
+removed = [field.GetArray(name).GetValue(0) for name in ("RemovedPieces", "RemovedVoids")]
+surface, contour = f.GetOutput(1), contour_of(f)
+print("pieces: removed %d pieces and %d voids; surface %d parts, %d triangles; contour of phi %d parts, %d triangles" % (
+    removed[0], removed[1], nvtesting.regions(surface), surface.GetNumberOfPolys(), nvtesting.regions(contour),
+    contour.GetNumberOfPolys()))
+t.check(removed[1] > 0, "pieces: tiny voids removed")
+t.check(nvtesting.regions(contour) == nvtesting.regions(surface) == 1, "pieces: contouring phi gives the surface's one part")
+t.check(contour.GetNumberOfPolys() == surface.GetNumberOfPolys(), "pieces: and its triangles")
+
 # Random clouds and parameters.
 rng = np.random.default_rng(2026)
 cases = 0
@@ -77,6 +107,7 @@ for trial in range(40):
     t.check(np.isfinite(phi).all(), "%s: no NaN" % label)
     t.check(phi.min() >= -1 and phi.max() <= 1, "%s: phi in [-1, 1]" % label)
     t.check(nvtesting.boundary_edges(s) == 0, "%s: closed surface" % label)
+    t.check(nvtesting.regions(contour_of(f)) == nvtesting.regions(s), "%s: contouring phi gives the surface's parts" % label)
     again = phi_of(run(xyz, **dict(settings, NumberOfThreads=3 - settings["NumberOfThreads"])))
     t.check(np.array_equal(phi, again), "%s: same phi, other thread count" % label)
     cases += 1
