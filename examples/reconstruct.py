@@ -72,6 +72,11 @@ def can_render():
     return True
 
 
+def report(*values):
+    """print, flushed at once: pvpython's stdout holds a pipe's lines until it exits."""
+    print(*values, flush=True)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("cloud", nargs="?", default=os.path.join(HERE, "..", "Data", "trefoil.vtp"))
@@ -113,15 +118,15 @@ def main():
 
     volume_info = shell.GetDataInformation(0)
     surface_info = shell.GetDataInformation(1)
-    print("input: %s, %d points" % (args.cloud, reader.GetDataInformation().GetNumberOfPoints()))
+    report("input: %s, %d points" % (args.cloud, reader.GetDataInformation().GetNumberOfPoints()))
     field = volume_info.GetFieldDataInformation()
     used = {name: field.GetArrayInformation(name).GetComponentRange(0)[0]
             for name in ("OffsetDistance", "SampleSpacing", "NumberOfGaps", "RemovedPieces")
             if field.GetArrayInformation(name)}
-    print("offset distance l = %g, spacing h = %g, grid %s nodes" % (
+    report("offset distance l = %g, spacing h = %g, grid %s nodes" % (
         used.get("OffsetDistance", shell.OffsetDistance), used.get("SampleSpacing", 0.0), volume_info.GetExtent()))
-    print("gaps wider than l: %d, loose pieces removed: %d" % (used.get("NumberOfGaps", 0), used.get("RemovedPieces", 0)))
-    print("surface: %d triangles, %.2f s" % (surface_info.GetNumberOfCells(), elapsed))
+    report("gaps wider than l: %d, loose pieces removed: %d" % (used.get("NumberOfGaps", 0), used.get("RemovedPieces", 0)))
+    report("surface: %d triangles, %.2f s" % (surface_info.GetNumberOfCells(), elapsed))
 
     # Under MPI, ParaView writes image data as a parallel .pvti (one piece a rank).
     ranks = servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
@@ -134,7 +139,7 @@ def main():
 
     picture = not args.no_picture
     if picture and not can_render():
-        print("no picture: ParaView cannot open a window here (no X display); run the script under "
+        report("no picture: ParaView cannot open a window here (no X display); run the script under "
               "scripts/with-xvfb.sh, or pass --no-picture")
         picture = False
     if picture:
@@ -174,7 +179,7 @@ def main():
         pvs.GetActiveCamera().Dolly(1.5)
         pvs.Render(view)
         pvs.SaveScreenshot(os.path.join(args.out, name + ".png"), view, ImageResolution=[1200, 900])
-    print("wrote %s/%s, %s, %s_shell.stl%s" %
+    report("wrote %s/%s, %s, %s_shell.stl%s" %
           (args.out, volume_file, surface_file, name, ", %s.png" % name if picture else ""))
 
 
