@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <numeric>
 #include <sstream>
@@ -41,6 +42,12 @@ void ParallelSort(std::vector<T>& v)
       }
     });
   }
+}
+
+/// Whether point a comes before point b in lexicographic order (x, then y, then z).
+bool Before(const double* a, const double* b)
+{
+  return std::lexicographical_compare(a, a + 3, b, b + 3);
 }
 
 /// Points sorted into cubic cells of a hashed grid, for nearest-neighbour queries.
@@ -108,11 +115,11 @@ public:
     }
   }
 
-  /// The nearest point to point p at a distance > 0, and that distance
-  /// (infinite when every point coincides with p).
-  std::pair<double, std::int64_t> Nearest(std::int64_t p) const
+  /// The nearest point to x at a distance > 0 (x may be one of the points,
+  /// or another), and that distance; partner -1 when there is none within
+  /// MaximumRing rings.
+  std::pair<double, std::int64_t> Nearest(const double* x) const
   {
-    const double* x = &this->Xyz[3 * p];
     std::int64_t c[3];
     this->CellOf(x, c);
     double best = std::numeric_limits<double>::infinity();
@@ -158,16 +165,18 @@ public:
               const double d2 = (x[0] - y[0]) * (x[0] - y[0]) + (x[1] - y[1]) * (x[1] - y[1]) + (x[2] - y[2]) * (x[2] - y[2]);
               if (d2 > 0.0 && d2 <= best)
               {
-                const std::int64_t other = this->Order[q];
-                if (d2 < best || other < partner)
+                // Ties go to the lowest coordinates: the same partner
+                // whatever the points' order and whichever process looks.
+                if (d2 < best || Before(y, &this->Xyz[3 * partner]))
                 {
                   best = d2;
-                  partner = other;
+                  partner = this->Order[q];
                 }
               }
             }
           }
-      if (partner >= 0 && std::sqrt(best) <= static_cast<double>(r) * this->Size)
+      // (Strictly within: a point as near as the best may lie in the next ring.)
+      if (partner >= 0 && std::sqrt(best) < static_cast<double>(r) * this->Size)
       {
         return { std::sqrt(best), partner };
       }
@@ -231,8 +240,8 @@ private:
   std::vector<Slot> Slots;
 };
 
-/// The nearest point to point p at a distance > 0, by looking at every point.
-std::pair<double, std::int64_t> NearestByScan(const std::vector<double>& xyz, std::int64_t p)
+/// The nearest point to x at a distance > 0, by looking at every point.
+std::pair<double, std::int64_t> NearestByScan(const std::vector<double>& xyz, const double* x)
 {
   double best = std::numeric_limits<double>::infinity();
   std::int64_t partner = -1;
@@ -241,9 +250,9 @@ std::pair<double, std::int64_t> NearestByScan(const std::vector<double>& xyz, st
     double d2 = 0.0;
     for (int a = 0; a < 3; ++a)
     {
-      d2 += (xyz[3 * p + a] - xyz[3 * q + a]) * (xyz[3 * p + a] - xyz[3 * q + a]);
+      d2 += (x[a] - xyz[3 * q + a]) * (x[a] - xyz[3 * q + a]);
     }
-    if (d2 > 0.0 && d2 < best)
+    if (d2 > 0.0 && (d2 < best || (d2 == best && Before(&xyz[3 * q], &xyz[3 * partner]))))
     {
       best = d2;
       partner = q;
@@ -285,175 +294,422 @@ double CellSizeFor(const std::vector<double>& xyz)
   // cell, so that most nearest neighbours are in the 27 cells around a point.
   return 2.0 * coarse * std::sqrt(occupied / static_cast<double>(n));
 }
+
+/**
+ * For each query q of `pending` (a point at queries[3 q ...]), the nearest
+ * point among `points` at a distance > 0: searched in cells near the typical
+ * spacing, queries without a neighbour within a few cells again with cells
+ * four times larger, and the last few against every point. nearest and
+ * partner (an index into points) are indexed by query. The queries may be
+ * the points themselves.
+ */
+void FindNearest(const std::vector<double>& points, const std::vector<double>& queries,
+  std::vector<std::int64_t> pending, std::vector<double>& nearest, std::vector<std::int64_t>& partner)
+{
+  double bounds[6];
+  PointBounds(points, bounds);
+  const double side = std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
+  const bool selves = &points == &queries && pending.size() == points.size() / 3;
+  for (double cell = CellSizeFor(points); pending.size() > 1000; cell *= 4.0)
+  {
+    const CellIndex index(points, cell);
+    // The points themselves at first in cell order (neighbours one after the other).
+    const std::vector<std::int64_t>& order = selves && pending.size() == points.size() / 3 ? index.CellOrder() : pending;
+    ParallelFor(0, static_cast<std::int64_t>(order.size()), 1024, [&](std::int64_t begin, std::int64_t end) {
+      for (std::int64_t i = begin; i < end; ++i)
+      {
+        const std::int64_t q = order[i];
+        const auto found = index.Nearest(&queries[3 * q]);
+        nearest[q] = found.first;
+        partner[q] = found.second;
+      }
+    });
+    std::vector<std::int64_t> left;
+    for (std::int64_t q : pending)
+    {
+      if (partner[q] < 0)
+      {
+        left.push_back(q);
+      }
+    }
+    pending.swap(left);
+    if (cell >= side)
+    {
+      pending.clear(); // one cell held every point: these have no distinct neighbour
+    }
+  }
+  ParallelFor(0, static_cast<std::int64_t>(pending.size()), 1, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t i = begin; i < end; ++i)
+    {
+      const auto found = NearestByScan(points, &queries[3 * pending[i]]);
+      nearest[pending[i]] = found.first;
+      partner[pending[i]] = found.second;
+    }
+  });
+}
+
+/// The k-th smallest (from 0) of all processes' values, all >= 0: found by
+/// halving the range of their bit patterns (which order non-negative doubles
+/// as the values do), one global count per halving. `values` is sorted.
+double GlobalKth(const std::vector<double>& values, std::int64_t k, Communicator& communicator)
+{
+  auto bits = [](double v) {
+    std::uint64_t b;
+    std::memcpy(&b, &v, sizeof b);
+    return b;
+  };
+  std::uint64_t low = 0, high = bits(communicator.MaxAll(values.empty() ? 0.0 : values.back()));
+  while (low < high)
+  {
+    const std::uint64_t middle = low + (high - low) / 2;
+    double t;
+    std::memcpy(&t, &middle, sizeof t);
+    double count = static_cast<double>(std::upper_bound(values.begin(), values.end(), t) - values.begin());
+    communicator.SumAll(&count, 1);
+    if (count >= static_cast<double>(k + 1))
+    {
+      high = middle;
+    }
+    else
+    {
+      low = middle + 1;
+    }
+  }
+  double value;
+  std::memcpy(&value, &low, sizeof value);
+  return value;
+}
+
+/// The index of quantile q among `count` sorted values.
+std::int64_t QuantileIndex(double q, std::int64_t count)
+{
+  return std::min(count - 1, static_cast<std::int64_t>(q * static_cast<double>(count - 1) + 0.5));
+}
+
+/// Values per gap point in GapFigures' input: the point, its distance to its
+/// nearest neighbour, and that neighbour (the point again if it has none).
+constexpr int GapValues = 7;
+
+/**
+ * figures: gaps, gap points, largest, its centre (x, y, z), from the gap
+ * points of the whole cloud, GapValues each, in any order.
+ */
+void GapFigures(const std::vector<double>& gaps, double offset, double figures[6])
+{
+  const std::size_t n = gaps.size() / GapValues;
+  auto at = [&](std::size_t g) { return &gaps[GapValues * g]; };
+  std::int64_t widest = -1;
+  for (std::size_t g = 0; g < n; ++g)
+  {
+    // The widest gap; ties go to the lowest coordinates (independent of the points' order).
+    if (widest < 0 || at(g)[3] > at(widest)[3] || (at(g)[3] == at(widest)[3] && Before(at(g), at(widest))))
+    {
+      widest = static_cast<std::int64_t>(g);
+    }
+  }
+  // Groups: gap points closer than 2 l to each other (union-find; there are
+  // few gap points, and past 20,000 each counts as a group of its own).
+  std::vector<std::size_t> parent(n);
+  std::iota(parent.begin(), parent.end(), 0);
+  auto root = [&](std::size_t a) {
+    while (parent[a] != a)
+    {
+      a = parent[a] = parent[parent[a]];
+    }
+    return a;
+  };
+  const double reach = 2.0 * offset;
+  for (std::size_t a = 0; a < n && n < 20000; ++a)
+  {
+    for (std::size_t b = a + 1; b < n; ++b)
+    {
+      double d2 = 0.0;
+      for (int c = 0; c < 3; ++c)
+      {
+        d2 += (at(a)[c] - at(b)[c]) * (at(a)[c] - at(b)[c]);
+      }
+      if (d2 < reach * reach)
+      {
+        parent[root(a)] = root(b);
+      }
+    }
+  }
+  std::int64_t groups = 0;
+  for (std::size_t a = 0; a < n; ++a)
+  {
+    groups += root(a) == a ? 1 : 0;
+  }
+  figures[0] = static_cast<double>(groups);
+  figures[1] = static_cast<double>(n);
+  if (widest >= 0)
+  {
+    figures[2] = at(widest)[3];
+    for (int c = 0; c < 3; ++c)
+    {
+      figures[3 + c] = 0.5 * (at(widest)[c] + at(widest)[4 + c]);
+    }
+  }
+}
 } // namespace
 
 //------------------------------------------------------------------------------
 void Sampling::Measure(const std::vector<double>& xyz, Communicator* communicator)
 {
-  this->Points = communicator && communicator->Size() > 1 ? communicator->Gather(xyz, 0) : xyz;
-  this->Nearest.clear();
-  this->Partner.clear();
-  double figures[3] = { 0.0, 0.0, 0.0 }; // points, median, 99.9th percentile
-  if (!communicator || communicator->Rank() == 0)
-  {
-    const std::int64_t n = static_cast<std::int64_t>(this->Points.size() / 3);
-    this->Nearest.assign(static_cast<std::size_t>(n), 0.0);
-    this->Partner.assign(static_cast<std::size_t>(n), -1);
-    double bounds[6];
-    const bool finite = PointBounds(this->Points, bounds) < 0; // else the run refuses the points
-    if (n > 1 && finite)
-    {
-      // Points without a neighbour within a few cells are searched again
-      // with cells four times larger, and the last few of them one by one.
-      std::vector<std::int64_t> pending(static_cast<std::size_t>(n));
-      std::iota(pending.begin(), pending.end(), 0);
-      const double side = std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
-      for (double cell = CellSizeFor(this->Points); pending.size() > 1000; cell *= 4.0)
-      {
-        const CellIndex index(this->Points, cell);
-        // All the points at first, in cell order (neighbours one after the other).
-        const std::vector<std::int64_t>& queries =
-          pending.size() == static_cast<std::size_t>(n) ? index.CellOrder() : pending;
-        ParallelFor(0, static_cast<std::int64_t>(queries.size()), 1024, [&](std::int64_t begin, std::int64_t end) {
-          for (std::int64_t q = begin; q < end; ++q)
-          {
-            const auto nearest = index.Nearest(queries[q]);
-            this->Nearest[queries[q]] = nearest.first;
-            this->Partner[queries[q]] = nearest.second;
-          }
-        });
-        std::vector<std::int64_t> left;
-        for (std::int64_t p : pending)
-        {
-          if (this->Partner[p] < 0)
-          {
-            left.push_back(p);
-          }
-        }
-        pending.swap(left);
-        if (cell >= side)
-        {
-          pending.clear(); // one cell held every point: these have no distinct neighbour
-        }
-      }
-      ParallelFor(0, static_cast<std::int64_t>(pending.size()), 1, [&](std::int64_t begin, std::int64_t end) {
-        for (std::int64_t q = begin; q < end; ++q)
-        {
-          const auto nearest = NearestByScan(this->Points, pending[q]);
-          this->Nearest[pending[q]] = nearest.first;
-          this->Partner[pending[q]] = nearest.second;
-        }
-      });
-      // Quantiles of the finite distances (a point whose every neighbour
-      // coincides with it has none).
-      std::vector<double> sorted;
-      sorted.reserve(this->Nearest.size());
-      for (double d : this->Nearest)
-      {
-        if (std::isfinite(d))
-        {
-          sorted.push_back(d);
-        }
-      }
-      if (!sorted.empty())
-      {
-        auto quantile = [&](double q) {
-          const std::size_t k = std::min(sorted.size() - 1, static_cast<std::size_t>(q * static_cast<double>(sorted.size() - 1) + 0.5));
-          std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(k), sorted.end());
-          return sorted[k];
-        };
-        figures[1] = quantile(0.5);
-        figures[2] = quantile(0.999);
-      }
-    }
-    figures[0] = static_cast<double>(n);
-  }
   if (communicator && communicator->Size() > 1)
   {
-    communicator->SumAll(figures, 3); // only process 0 holds non-zero figures
+    this->MeasureDistributed(xyz, *communicator);
+    return;
   }
-  this->Stats.Points = static_cast<std::int64_t>(figures[0]);
-  this->Stats.MedianSpacing = figures[1];
-  this->Stats.WideSpacing = figures[2];
+  this->Points = xyz;
+  this->Owned = static_cast<std::int64_t>(xyz.size() / 3);
+  const std::int64_t n = this->Owned;
+  this->Nearest.assign(static_cast<std::size_t>(n), 0.0); // unmeasured: no gaps
+  this->Partner.assign(static_cast<std::size_t>(n), -1);
+  this->Stats = SamplingStatistics{};
+  this->Stats.Points = n;
+  double bounds[6];
+  if (n < 2 || PointBounds(this->Points, bounds) >= 0) // non-finite: the run refuses the points
+  {
+    return;
+  }
+  std::vector<std::int64_t> every(static_cast<std::size_t>(n));
+  std::iota(every.begin(), every.end(), 0);
+  FindNearest(this->Points, this->Points, std::move(every), this->Nearest, this->Partner);
+  // Quantiles of the finite distances (a point whose every neighbour
+  // coincides with it has none).
+  std::vector<double> sorted;
+  sorted.reserve(this->Nearest.size());
+  for (double d : this->Nearest)
+  {
+    if (std::isfinite(d))
+    {
+      sorted.push_back(d);
+    }
+  }
+  if (!sorted.empty())
+  {
+    auto quantile = [&](double q) {
+      const auto k = static_cast<std::ptrdiff_t>(QuantileIndex(q, static_cast<std::int64_t>(sorted.size())));
+      std::nth_element(sorted.begin(), sorted.begin() + k, sorted.end());
+      return sorted[static_cast<std::size_t>(k)];
+    };
+    this->Stats.MedianSpacing = quantile(0.5);
+    this->Stats.WideSpacing = quantile(0.999);
+  }
+}
+
+//------------------------------------------------------------------------------
+void Sampling::MeasureDistributed(const std::vector<double>& xyz, Communicator& communicator)
+{
+  // Each process measures the points of one slab of z, which it receives
+  // from all processes; a point whose nearest neighbour in the slab is
+  // farther than the slab's nearer face is searched again among the points
+  // of the neighbouring slabs within that distance. Every distance is then
+  // exact, and the figures are the serial run's, while no process holds
+  // more than its slab and a thin layer around it.
+  const int size = communicator.Size(), rank = communicator.Rank();
+  this->Stats = SamplingStatistics{};
+  double bounds[6];
+  const bool finite = PointBounds(xyz, bounds) < 0;
+  double figures[4] = { finite ? 0.0 : 1.0, xyz.empty() ? -std::numeric_limits<double>::infinity() : -bounds[4],
+    xyz.empty() ? -std::numeric_limits<double>::infinity() : bounds[5], 0.0 };
+  communicator.MaxAll(figures, 3);
+  double total = static_cast<double>(xyz.size() / 3);
+  communicator.SumAll(&total, 1);
+  this->Stats.Points = static_cast<std::int64_t>(total);
+  this->Points.clear();
+  this->Owned = 0;
+  this->Nearest.clear();
+  this->Partner.clear();
+  if (figures[0] > 0.0 || total < 2.0)
+  {
+    return; // non-finite points (the run refuses them), or nothing to measure
+  }
+
+  // 1. Slabs of about equal counts, from a histogram of z.
+  const double zLow = -figures[1], zHigh = figures[2];
+  const int bins = 256 * size;
+  std::vector<double> histogram(static_cast<std::size_t>(bins), 0.0);
+  auto binOf = [&](double z) {
+    const double f = zHigh > zLow ? (z - zLow) / (zHigh - zLow) : 0.0;
+    return std::min(bins - 1, std::max(0, static_cast<int>(f * bins)));
+  };
+  for (std::size_t p = 0; p + 2 < xyz.size(); p += 3)
+  {
+    histogram[static_cast<std::size_t>(binOf(xyz[p + 2]))] += 1.0;
+  }
+  communicator.SumAll(histogram.data(), bins);
+  std::vector<double> faces(static_cast<std::size_t>(size) + 1); // slab q: [faces[q], faces[q + 1])
+  faces.front() = -std::numeric_limits<double>::infinity();
+  faces.back() = std::numeric_limits<double>::infinity();
+  double below = 0.0;
+  int bin = 0;
+  for (int q = 1; q < size; ++q)
+  {
+    while (bin < bins && below + histogram[static_cast<std::size_t>(bin)] <= total * q / size)
+    {
+      below += histogram[static_cast<std::size_t>(bin++)];
+    }
+    faces[static_cast<std::size_t>(q)] = zLow + (zHigh - zLow) * bin / bins;
+  }
+  auto owner = [&](double z) {
+    return static_cast<int>(std::upper_bound(faces.begin() + 1, faces.end() - 1, z) - (faces.begin() + 1));
+  };
+
+  // 2. Each slab's points to its process.
+  std::vector<double> send;
+  for (int q = 0; q < size; ++q)
+  {
+    send.clear();
+    for (std::size_t p = 0; p + 2 < xyz.size(); p += 3)
+    {
+      if (owner(xyz[p + 2]) == q)
+      {
+        send.insert(send.end(), &xyz[p], &xyz[p] + 3);
+      }
+    }
+    std::vector<double> gathered = communicator.Gather(send, q);
+    if (q == rank)
+    {
+      this->Points.swap(gathered);
+    }
+  }
+  this->Owned = static_cast<std::int64_t>(this->Points.size() / 3);
+  const std::int64_t owned = this->Owned;
+  this->Nearest.assign(static_cast<std::size_t>(owned), std::numeric_limits<double>::infinity());
+  this->Partner.assign(static_cast<std::size_t>(owned), -1);
+  std::vector<std::int64_t> every(static_cast<std::size_t>(owned));
+  std::iota(every.begin(), every.end(), 0);
+  if (owned > 1)
+  {
+    FindNearest(this->Points, this->Points, every, this->Nearest, this->Partner);
+  }
+
+  // 3. Points whose nearest neighbour may lie in another slab (a point as
+  // near lies within the distance in z, possibly on the next slab's face)
+  // are asked of the processes whose slabs lie that near; each answers with
+  // its nearest point, and the nearest answer, ties to the lowest
+  // coordinates, wins. Questions and answers: x, y, z, distance, asking
+  // process, point.
+  std::vector<std::vector<double>> asks(static_cast<std::size_t>(size));
+  for (std::int64_t p = 0; p < owned; ++p)
+  {
+    const double* x = &this->Points[3 * p];
+    const double d = this->Nearest[p];
+    for (int q = 0; q < size; ++q)
+    {
+      if (q != rank && faces[q] <= x[2] + d && x[2] - d < faces[q + 1])
+      {
+        asks[q].insert(asks[q].end(), { x[0], x[1], x[2], d, static_cast<double>(rank), static_cast<double>(p) });
+      }
+    }
+  }
+  std::vector<double> questions;
+  for (int q = 0; q < size; ++q)
+  {
+    std::vector<double> gathered = communicator.Gather(asks[q], q);
+    if (q == rank)
+    {
+      questions.swap(gathered);
+    }
+  }
+  const std::int64_t asked = static_cast<std::int64_t>(questions.size() / 6);
+  std::vector<double> where(3 * static_cast<std::size_t>(asked));
+  for (std::int64_t i = 0; i < asked; ++i)
+  {
+    std::copy(&questions[6 * i], &questions[6 * i] + 3, &where[3 * i]);
+  }
+  std::vector<double> found(static_cast<std::size_t>(asked), std::numeric_limits<double>::infinity());
+  std::vector<std::int64_t> foundPoint(static_cast<std::size_t>(asked), -1);
+  if (owned > 0 && asked > 0)
+  {
+    std::vector<std::int64_t> all(static_cast<std::size_t>(asked));
+    std::iota(all.begin(), all.end(), 0);
+    FindNearest(this->Points, where, std::move(all), found, foundPoint);
+  }
+  std::vector<std::vector<double>> answers(static_cast<std::size_t>(size));
+  for (std::int64_t i = 0; i < asked; ++i)
+  {
+    if (foundPoint[i] >= 0 && found[i] <= questions[6 * i + 3])
+    {
+      const double* y = &this->Points[3 * foundPoint[i]];
+      answers[static_cast<std::size_t>(questions[6 * i + 4])].insert(
+        answers[static_cast<std::size_t>(questions[6 * i + 4])].end(),
+        { y[0], y[1], y[2], found[i], questions[6 * i + 4], questions[6 * i + 5] });
+    }
+  }
+  std::vector<double> replies;
+  for (int q = 0; q < size; ++q)
+  {
+    std::vector<double> gathered = communicator.Gather(answers[q], q);
+    if (q == rank)
+    {
+      replies.swap(gathered);
+    }
+  }
+  for (std::size_t i = 0; i + 5 < replies.size(); i += 6)
+  {
+    const std::int64_t p = static_cast<std::int64_t>(replies[i + 5]);
+    const double d = replies[i + 3];
+    const double* y = &replies[i];
+    const std::int64_t current = this->Partner[p];
+    if (d < this->Nearest[p] || (d == this->Nearest[p] && (current < 0 || Before(y, &this->Points[3 * current]))))
+    {
+      // The partner joins the held points (for the gaps' centres).
+      this->Nearest[p] = d;
+      this->Partner[p] = static_cast<std::int64_t>(this->Points.size() / 3);
+      this->Points.insert(this->Points.end(), y, y + 3);
+    }
+  }
+
+  // 4. The quantiles of all processes' finite distances.
+  std::vector<double> sorted;
+  for (double d : this->Nearest)
+  {
+    if (std::isfinite(d))
+    {
+      sorted.push_back(d);
+    }
+  }
+  ParallelSort(sorted);
+  double count = static_cast<double>(sorted.size());
+  communicator.SumAll(&count, 1);
+  if (count > 0.0)
+  {
+    const std::int64_t finiteCount = static_cast<std::int64_t>(count);
+    this->Stats.MedianSpacing = GlobalKth(sorted, QuantileIndex(0.5, finiteCount), communicator);
+    this->Stats.WideSpacing = GlobalKth(sorted, QuantileIndex(0.999, finiteCount), communicator);
+  }
 }
 
 //------------------------------------------------------------------------------
 GapReport Sampling::Gaps(double offset, Communicator* communicator) const
 {
-  // figures: gaps, gap points, largest, its centre (x, y, z)
-  double figures[6] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 };
-  if (!communicator || communicator->Rank() == 0)
+  // This process's gap points, then all of them on process 0, which counts.
+  std::vector<double> gaps;
+  for (std::int64_t p = 0; p < this->Owned; ++p)
   {
-    std::vector<std::int64_t> gapPoints;
-    std::int64_t widest = -1;
-    for (std::size_t p = 0; p < this->Nearest.size(); ++p)
+    if (this->Nearest[p] > offset)
     {
-      if (this->Nearest[p] > offset)
-      {
-        gapPoints.push_back(static_cast<std::int64_t>(p));
-        // The widest gap; ties go to the lowest coordinates (independent of the points' order).
-        if (widest < 0 || this->Nearest[p] > this->Nearest[widest] ||
-          (this->Nearest[p] == this->Nearest[widest] &&
-            std::lexicographical_compare(&this->Points[3 * p], &this->Points[3 * p + 3], &this->Points[3 * widest],
-              &this->Points[3 * widest + 3])))
-        {
-          widest = static_cast<std::int64_t>(p);
-        }
-      }
-    }
-    // Groups: gap points closer than 2 l to each other (union-find over a
-    // grid of cells 2 l wide; there are few gap points).
-    std::vector<std::int64_t> parent(gapPoints.size());
-    std::iota(parent.begin(), parent.end(), 0);
-    auto root = [&](std::int64_t a) {
-      while (parent[a] != a)
-      {
-        a = parent[a] = parent[parent[a]];
-      }
-      return a;
-    };
-    std::vector<double> gapXyz;
-    for (std::int64_t p : gapPoints)
-    {
-      gapXyz.insert(gapXyz.end(), &this->Points[3 * p], &this->Points[3 * p + 3]);
-    }
-    const double reach = 2.0 * offset;
-    for (std::size_t a = 0; a < gapPoints.size(); ++a)
-    {
-      for (std::size_t b = a + 1; b < gapPoints.size() && gapPoints.size() < 20000; ++b)
-      {
-        double d2 = 0.0;
-        for (int c = 0; c < 3; ++c)
-        {
-          d2 += (gapXyz[3 * a + c] - gapXyz[3 * b + c]) * (gapXyz[3 * a + c] - gapXyz[3 * b + c]);
-        }
-        if (d2 < reach * reach)
-        {
-          parent[root(static_cast<std::int64_t>(a))] = root(static_cast<std::int64_t>(b));
-        }
-      }
-    }
-    std::int64_t groups = 0;
-    for (std::size_t a = 0; a < parent.size(); ++a)
-    {
-      groups += root(static_cast<std::int64_t>(a)) == static_cast<std::int64_t>(a) ? 1 : 0;
-    }
-    figures[0] = static_cast<double>(groups);
-    figures[1] = static_cast<double>(gapPoints.size());
-    if (widest >= 0)
-    {
-      figures[2] = this->Nearest[widest];
-      const std::int64_t other = this->Partner[widest];
-      for (int c = 0; c < 3; ++c)
-      {
-        figures[3 + c] = other >= 0 ? 0.5 * (this->Points[3 * widest + c] + this->Points[3 * other + c])
-                                    : this->Points[3 * widest + c];
-      }
+      const double* x = &this->Points[3 * p];
+      const std::int64_t other = this->Partner[p];
+      const double* y = other >= 0 ? &this->Points[3 * other] : x;
+      gaps.insert(gaps.end(), { x[0], x[1], x[2], this->Nearest[p], y[0], y[1], y[2] });
     }
   }
-  if (communicator && communicator->Size() > 1)
+  double figures[6] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 };
+  const bool distributed = communicator && communicator->Size() > 1;
+  if (distributed)
   {
-    communicator->SumAll(figures, 6);
+    gaps = communicator->Gather(gaps, 0);
+  }
+  if (!distributed || communicator->Rank() == 0)
+  {
+    GapFigures(gaps, offset, figures);
+  }
+  if (distributed)
+  {
+    communicator->SumAll(figures, 6); // only process 0 holds non-zero figures
   }
   GapReport report;
   report.Gaps = static_cast<std::int64_t>(figures[0]);

@@ -50,9 +50,10 @@ struct GapReport
 };
 
 /**
- * Nearest-neighbour distances of a cloud. In a distributed run the points are
- * gathered on process 0, which measures them and shares the results: every
- * process gets the same figures, equal to a serial run's.
+ * Nearest-neighbour distances of a cloud. In a distributed run each process
+ * measures the points of one slab of z (with the few points of the slabs
+ * next to it that some of its points need): every process gets the same
+ * figures, equal to a serial run's, and none holds the whole cloud.
  */
 class Sampling
 {
@@ -63,11 +64,17 @@ public:
   const SamplingStatistics& Statistics() const { return this->Stats; }
   /// Collective. The gaps the shell of offset l may not bridge.
   GapReport Gaps(double offset, Communicator* communicator) const;
+  /// The points this process holds: all of a serial run's; in a distributed
+  /// run, its slab's and those it borrowed from the slabs next to it.
+  std::int64_t HeldPoints() const { return static_cast<std::int64_t>(this->Points.size() / 3); }
 
 private:
-  std::vector<double> Points;        ///< all points (process 0 of a distributed run)
-  std::vector<double> Nearest;       ///< distance to the nearest other point
-  std::vector<std::int64_t> Partner; ///< that point
+  void MeasureDistributed(const std::vector<double>& xyz, Communicator& communicator);
+
+  std::vector<double> Points;        ///< the measured points first, then the borrowed ones
+  std::int64_t Owned = 0;            ///< the measured points
+  std::vector<double> Nearest;       ///< distance from each measured point to the nearest other point
+  std::vector<std::int64_t> Partner; ///< that point, an index into Points (-1: none)
   SamplingStatistics Stats;
 };
 

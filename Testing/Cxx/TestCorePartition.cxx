@@ -13,6 +13,7 @@
 #include "nvNarrowBand.h"
 #include "nvPartition.h"
 #include "nvReconstruction.h"
+#include "nvSampling.h"
 #include "nvSurface.h"
 #include "nvTestUtilities.h"
 #include "nvTruncatedDistance.h"
@@ -24,6 +25,7 @@
 #include <condition_variable>
 #include <deque>
 #include <map>
+#include <random>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -386,6 +388,105 @@ void TestDistributedRun(int ranks, bool preserve = false)
   NV_CHECK(pieces.Triangles == serialSurface.Triangles);
 }
 
+/// The points' spacing measured by slabs (nvSampling.h): the serial figures,
+/// gaps and largest gap to the last bit, on clouds with outliers, duplicates,
+/// many points on one z and a lone point; no process holds the whole cloud.
+void TestDistributedSampling()
+{
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  const double center[3] = { 0.0, 0.0, 0.0 };
+  std::vector<std::pair<const char*, std::vector<double>>> clouds;
+  clouds.emplace_back("sphere", nvtest::SpherePoints(4000, 0.5, center));
+  std::vector<double> outliers = clouds.back().second;
+  for (int p = 0; p < 60; ++p)
+  {
+    outliers.insert(outliers.end(), { uniform(random), uniform(random), uniform(random) });
+  }
+  clouds.emplace_back("sphere and outliers", outliers);
+  std::vector<double> lattice; // many points on each z, and every one twice
+  for (int i = 0; i < 9; ++i)
+    for (int j = 0; j < 9; ++j)
+      for (int k = 0; k < 9; ++k)
+        for (int copy = 0; copy < 2; ++copy)
+        {
+          lattice.insert(lattice.end(), { 0.1 * i, 0.1 * j + (k == 4 ? 0.03 : 0.0), 0.1 * k });
+        }
+  clouds.emplace_back("lattice of duplicates", lattice);
+  clouds.emplace_back("three points", std::vector<double>{ 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 5.0, 0.0, 0.5 });
+  clouds.emplace_back("one lone point", std::vector<double>{ 1.0, 2.0, 3.0, 1.0, 2.0, 3.0, 1.0, 2.0, 9.0 });
+  for (const auto& cloud : clouds)
+  {
+    const std::vector<double>& points = cloud.second;
+    const std::int64_t n = static_cast<std::int64_t>(points.size() / 3);
+    nv::Sampling serial;
+    serial.Measure(points, nullptr);
+    const double offsets[2] = { 0.5 * serial.Statistics().MedianSpacing, 2.0 * serial.Statistics().MedianSpacing };
+    std::vector<nv::GapReport> serialGaps;
+    for (double offset : offsets)
+    {
+      serialGaps.push_back(serial.Gaps(offset, nullptr));
+    }
+    for (int ranks : { 2, 3, 5, 8 })
+    {
+      Hub hub(ranks);
+      std::vector<int> same(static_cast<std::size_t>(ranks), 1);
+      std::vector<std::int64_t> held(static_cast<std::size_t>(ranks), 0);
+      std::vector<std::thread> threads;
+      for (int rank = 0; rank < ranks; ++rank)
+      {
+        threads.emplace_back([&, rank]() {
+          // Points dealt round-robin, so every piece spans the whole cloud;
+          // rank 1 holds nothing.
+          std::vector<double> mine;
+          for (std::int64_t p = 0; p < n; ++p)
+          {
+            int to = static_cast<int>(p % ranks);
+            to = to == 1 ? 0 : to;
+            if (to == rank)
+            {
+              mine.insert(mine.end(), &points[3 * p], &points[3 * p] + 3);
+            }
+          }
+          ThreadCommunicator communicator(hub, rank);
+          nv::Sampling sampling;
+          sampling.Measure(mine, &communicator);
+          const nv::SamplingStatistics& a = sampling.Statistics();
+          const nv::SamplingStatistics& b = serial.Statistics();
+          int ok = a.Points == b.Points && a.MedianSpacing == b.MedianSpacing && a.WideSpacing == b.WideSpacing;
+          for (int o = 0; o < 2; ++o)
+          {
+            const nv::GapReport gaps = sampling.Gaps(offsets[o], &communicator);
+            const nv::GapReport& reference = serialGaps[static_cast<std::size_t>(o)];
+            ok = ok && gaps.Gaps == reference.Gaps && gaps.GapPoints == reference.GapPoints &&
+              gaps.LargestGap == reference.LargestGap && gaps.LargestGapCenter == reference.LargestGapCenter;
+          }
+          same[static_cast<std::size_t>(rank)] = ok;
+          held[static_cast<std::size_t>(rank)] = sampling.HeldPoints();
+        });
+      }
+      for (std::thread& thread : threads)
+      {
+        thread.join();
+      }
+      const std::int64_t most = *std::max_element(held.begin(), held.end());
+      std::printf("spacing of the %s by %d slabs: median %.6g, %lld gaps at l = %.4g; at most %lld of %lld points on "
+                  "one process\n",
+        cloud.first, ranks, serial.Statistics().MedianSpacing, static_cast<long long>(serialGaps[0].Gaps), offsets[0],
+        static_cast<long long>(most), static_cast<long long>(n));
+      for (int rank = 0; rank < ranks; ++rank)
+      {
+        NV_CHECK(same[static_cast<std::size_t>(rank)]);
+      }
+      if (std::string(cloud.first).rfind("sphere", 0) == 0)
+      {
+        // A slab's share and a thin layer: well under the whole cloud.
+        NV_CHECK(most < 1.5 * n / ranks + 0.1 * n);
+      }
+    }
+  }
+}
+
 /// Errors are every rank's: no points anywhere, or a NaN on one rank.
 void TestDistributedErrors()
 {
@@ -448,5 +549,6 @@ int main()
   TestDistributedSolve(nv::Domain::NarrowBand, 12, {}, true);
   TestDistributedSolve(nv::Domain::WholeDomain, 3, {}, true);
   TestDistributedErrors();
+  TestDistributedSampling();
   return nvtest::Result("TestCorePartition");
 }

@@ -132,6 +132,16 @@ for ranks, output_volume, preserve in ((1, 1, 0), (2, 1, 0), (3, 1, 0), (4, 1, 0
             t.check(difference == 0.0, "%s: phi is the serial phi, bit for bit" % label)
             t.check(float(np.max(np.abs(vtk_to_numpy(phi_array) - references[False][0]))) > 1e-3,
                     "%s: the correction changed phi" % label)
+    # The points' spacing, measured slab by slab (each rank holds its slab
+    # and asks its neighbours about points near the faces): the serial figures.
+    def figures(field):
+        return {name: [field.GetArray(name).GetValue(c) for c in range(field.GetArray(name).GetNumberOfValues())]
+                if field.GetArray(name) else None
+                for name in ("MedianPointSpacing", "NumberOfGaps", "LargestGap", "LargestGapCenter")}
+    spacing, serial_spacing_figures = figures(volume.GetFieldData()), figures(serial.GetVolumeOutput().GetFieldData())
+    print("%s: spacing figures %s" % (label, spacing))
+    t.check(spacing == serial_spacing_figures and None not in spacing.values(),
+            "%s: the serial spacing, gaps and largest gap (%s vs %s)" % (label, spacing, serial_spacing_figures))
     band = volume.GetFieldData().GetArray("NarrowBandNodes")
     t.check(band is not None and band.GetValue(0) == serial.GetNumberOfBandNodes(),
             "%s: the serial band (%d nodes)" % (label, band.GetValue(0) if band else -1))
