@@ -306,8 +306,18 @@ double CellSizeFor(const std::vector<double>& xyz)
 void FindNearest(const std::vector<double>& points, const std::vector<double>& queries,
   std::vector<std::int64_t> pending, std::vector<double>& nearest, std::vector<std::int64_t>& partner)
 {
+  // Once a cell spans the box of the points and the queries together, a
+  // query not answered within MaximumRing rings has no distinct neighbour.
   double bounds[6];
   PointBounds(points, bounds);
+  for (std::int64_t q : pending)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      bounds[2 * a] = std::min(bounds[2 * a], queries[3 * q + a]);
+      bounds[2 * a + 1] = std::max(bounds[2 * a + 1], queries[3 * q + a]);
+    }
+  }
   const double side = std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
   const bool selves = &points == &queries && pending.size() == points.size() / 3;
   for (double cell = CellSizeFor(points); pending.size() > 1000; cell *= 4.0)

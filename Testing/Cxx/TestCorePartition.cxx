@@ -413,6 +413,20 @@ void TestDistributedSampling()
           lattice.insert(lattice.end(), { 0.1 * i, 0.1 * j + (k == 4 ? 0.03 : 0.0), 0.1 * k });
         }
   clouds.emplace_back("lattice of duplicates", lattice);
+  // A sparse square grid at z = 0 with a dense clump just above it, between
+  // grid points: the clump's slab is tiny, and the grid points near the clump
+  // find their nearest neighbour there, far outside that slab's box.
+  std::vector<double> gridAndClump;
+  for (int i = 0; i < 40; ++i)
+    for (int j = 0; j < 40; ++j)
+    {
+      gridAndClump.insert(gridAndClump.end(), { 0.1 * i, 0.1 * j, 0.0 });
+    }
+  for (int p = 0; p < 1700; ++p)
+  {
+    gridAndClump.insert(gridAndClump.end(), { 2.05 + 1e-3 * uniform(random), 2.05 + 1e-3 * uniform(random), 1e-6 });
+  }
+  clouds.emplace_back("grid and clump", gridAndClump);
   clouds.emplace_back("three points", std::vector<double>{ 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 5.0, 0.0, 0.5 });
   clouds.emplace_back("one lone point", std::vector<double>{ 1.0, 2.0, 3.0, 1.0, 2.0, 3.0, 1.0, 2.0, 9.0 });
   for (const auto& cloud : clouds)
@@ -421,7 +435,10 @@ void TestDistributedSampling()
     const std::int64_t n = static_cast<std::int64_t>(points.size() / 3);
     nv::Sampling serial;
     serial.Measure(points, nullptr);
-    const double offsets[2] = { 0.5 * serial.Statistics().MedianSpacing, 2.0 * serial.Statistics().MedianSpacing };
+    // Gaps at offsets near the typical spacing and at a few fixed ones (each
+    // point's distance decides whether it is a gap point).
+    const double median = serial.Statistics().MedianSpacing;
+    const std::vector<double> offsets = { 0.5 * median, 2.0 * median, 0.02, 0.08, 0.3, 2.0 };
     std::vector<nv::GapReport> serialGaps;
     for (double offset : offsets)
     {
@@ -454,10 +471,10 @@ void TestDistributedSampling()
           const nv::SamplingStatistics& a = sampling.Statistics();
           const nv::SamplingStatistics& b = serial.Statistics();
           int ok = a.Points == b.Points && a.MedianSpacing == b.MedianSpacing && a.WideSpacing == b.WideSpacing;
-          for (int o = 0; o < 2; ++o)
+          for (std::size_t o = 0; o < offsets.size(); ++o)
           {
             const nv::GapReport gaps = sampling.Gaps(offsets[o], &communicator);
-            const nv::GapReport& reference = serialGaps[static_cast<std::size_t>(o)];
+            const nv::GapReport& reference = serialGaps[o];
             ok = ok && gaps.Gaps == reference.Gaps && gaps.GapPoints == reference.GapPoints &&
               gaps.LargestGap == reference.LargestGap && gaps.LargestGapCenter == reference.LargestGapCenter;
           }
