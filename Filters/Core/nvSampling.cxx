@@ -513,10 +513,11 @@ void Sampling::MeasureDistributed(const std::vector<double>& xyz, Communicator& 
 {
   // Each process measures the points of one slab of z, which it receives
   // from all processes; a point whose nearest neighbour in the slab is
-  // farther than the slab's nearer face is searched again among the points
-  // of the neighbouring slabs within that distance. Every distance is then
-  // exact, and the figures are the serial run's, while no process holds
-  // more than its slab and a thin layer around it.
+  // farther than a face of the slab is asked of the processes whose slabs
+  // lie within that distance, which answer with their nearest point to it.
+  // Every distance is then exact, and the figures are the serial run's,
+  // while no process holds more than its slab (and the partners of its
+  // points found elsewhere).
   const int size = communicator.Size(), rank = communicator.Rank();
   this->Stats = SamplingStatistics{};
   double bounds[6];
