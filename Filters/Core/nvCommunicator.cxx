@@ -39,4 +39,18 @@ std::vector<double> Communicator::Gather(const std::vector<double>& values, int 
   return all;
 }
 
+std::vector<double> Communicator::Exchange(const std::vector<std::vector<double>>& outgoing)
+{
+  std::vector<double> mine;
+  for (int q = 0; q < this->Size(); ++q)
+  {
+    std::vector<double> gathered = this->Gather(outgoing[static_cast<std::size_t>(q)], q);
+    if (q == this->Rank())
+    {
+      mine.swap(gathered);
+    }
+  }
+  return mine;
+}
+
 } // namespace nv

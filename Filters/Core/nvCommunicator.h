@@ -38,6 +38,10 @@ public:
   /// the others get nothing. Built on Send and Receive (the root only
   /// receives, so blocking sends cannot deadlock).
   std::vector<double> Gather(const std::vector<double>& values, int root);
+  /// Collective: every process sends outgoing[q] to process q (one entry per
+  /// process); returns what reached this one, in rank order (one Gather per
+  /// destination).
+  std::vector<double> Exchange(const std::vector<std::vector<double>>& outgoing);
 };
 
 } // namespace nv

@@ -73,26 +73,19 @@ std::vector<LayerRange> SplitLayers(const std::vector<double>& weights, int part
 std::vector<double> ExchangePoints(
   Communicator& communicator, const std::vector<double>& xyz, const std::vector<std::array<double, 2>>& zRanges)
 {
-  std::vector<double> mine;
-  std::vector<double> send;
+  // Each destination's points: those of this process within its interval.
+  std::vector<std::vector<double>> outgoing(static_cast<std::size_t>(communicator.Size()));
   for (int q = 0; q < communicator.Size(); ++q)
   {
-    // One gather per destination: the points of every process that q needs.
-    send.clear();
     for (std::size_t p = 0; p + 2 < xyz.size(); p += 3)
     {
       if (zRanges[q][0] <= xyz[p + 2] && xyz[p + 2] <= zRanges[q][1])
       {
-        send.insert(send.end(), &xyz[p], &xyz[p] + 3);
+        outgoing[q].insert(outgoing[q].end(), &xyz[p], &xyz[p] + 3);
       }
     }
-    std::vector<double> gathered = communicator.Gather(send, q);
-    if (q == communicator.Rank())
-    {
-      mine.swap(gathered);
-    }
   }
-  return mine;
+  return communicator.Exchange(outgoing);
 }
 
 } // namespace nv

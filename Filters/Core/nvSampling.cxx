@@ -522,8 +522,8 @@ void Sampling::MeasureDistributed(const std::vector<double>& xyz, Communicator& 
   this->Stats = SamplingStatistics{};
   double bounds[6];
   const bool finite = PointBounds(xyz, bounds) < 0;
-  double figures[4] = { finite ? 0.0 : 1.0, xyz.empty() ? -std::numeric_limits<double>::infinity() : -bounds[4],
-    xyz.empty() ? -std::numeric_limits<double>::infinity() : bounds[5], 0.0 };
+  double figures[3] = { finite ? 0.0 : 1.0, xyz.empty() ? -std::numeric_limits<double>::infinity() : -bounds[4],
+    xyz.empty() ? -std::numeric_limits<double>::infinity() : bounds[5] };
   communicator.MaxAll(figures, 3);
   double total = static_cast<double>(xyz.size() / 3);
   communicator.SumAll(&total, 1);
@@ -568,23 +568,13 @@ void Sampling::MeasureDistributed(const std::vector<double>& xyz, Communicator& 
   };
 
   // 2. Each slab's points to its process.
-  std::vector<double> send;
-  for (int q = 0; q < size; ++q)
+  std::vector<std::vector<double>> slabPoints(static_cast<std::size_t>(size));
+  for (std::size_t p = 0; p + 2 < xyz.size(); p += 3)
   {
-    send.clear();
-    for (std::size_t p = 0; p + 2 < xyz.size(); p += 3)
-    {
-      if (owner(xyz[p + 2]) == q)
-      {
-        send.insert(send.end(), &xyz[p], &xyz[p] + 3);
-      }
-    }
-    std::vector<double> gathered = communicator.Gather(send, q);
-    if (q == rank)
-    {
-      this->Points.swap(gathered);
-    }
+    auto& to = slabPoints[static_cast<std::size_t>(owner(xyz[p + 2]))];
+    to.insert(to.end(), &xyz[p], &xyz[p] + 3);
   }
+  this->Points = communicator.Exchange(slabPoints);
   this->Owned = static_cast<std::int64_t>(this->Points.size() / 3);
   const std::int64_t owned = this->Owned;
   this->Nearest.assign(static_cast<std::size_t>(owned), std::numeric_limits<double>::infinity());
@@ -615,15 +605,7 @@ void Sampling::MeasureDistributed(const std::vector<double>& xyz, Communicator& 
       }
     }
   }
-  std::vector<double> questions;
-  for (int q = 0; q < size; ++q)
-  {
-    std::vector<double> gathered = communicator.Gather(asks[q], q);
-    if (q == rank)
-    {
-      questions.swap(gathered);
-    }
-  }
+  const std::vector<double> questions = communicator.Exchange(asks);
   const std::int64_t asked = static_cast<std::int64_t>(questions.size() / 6);
   std::vector<double> where(3 * static_cast<std::size_t>(asked));
   for (std::int64_t i = 0; i < asked; ++i)
@@ -649,15 +631,7 @@ void Sampling::MeasureDistributed(const std::vector<double>& xyz, Communicator& 
         { y[0], y[1], y[2], found[i], questions[6 * i + 4], questions[6 * i + 5] });
     }
   }
-  std::vector<double> replies;
-  for (int q = 0; q < size; ++q)
-  {
-    std::vector<double> gathered = communicator.Gather(answers[q], q);
-    if (q == rank)
-    {
-      replies.swap(gathered);
-    }
-  }
+  const std::vector<double> replies = communicator.Exchange(answers);
   for (std::size_t i = 0; i + 5 < replies.size(); i += 6)
   {
     const std::int64_t p = static_cast<std::int64_t>(replies[i + 5]);
