@@ -307,15 +307,18 @@ void FindNearest(const std::vector<double>& points, const std::vector<double>& q
   std::vector<std::int64_t> pending, std::vector<double>& nearest, std::vector<std::int64_t>& partner)
 {
   // Once a cell spans the box of the points and the queries together, a
-  // query not answered within MaximumRing rings has no distinct neighbour.
+  // query not answered within MaximumRing rings has no distinct neighbour
+  // (the points themselves lie in their own box already).
   double bounds[6];
   PointBounds(points, bounds);
-  for (std::int64_t q : pending)
+  if (&queries != &points)
   {
+    double around[6];
+    PointBounds(queries, around);
     for (int a = 0; a < 3; ++a)
     {
-      bounds[2 * a] = std::min(bounds[2 * a], queries[3 * q + a]);
-      bounds[2 * a + 1] = std::max(bounds[2 * a + 1], queries[3 * q + a]);
+      bounds[2 * a] = std::min(bounds[2 * a], around[2 * a]);
+      bounds[2 * a + 1] = std::max(bounds[2 * a + 1], around[2 * a + 1]);
     }
   }
   const double side = std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
