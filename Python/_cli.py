@@ -68,28 +68,81 @@ def _errors_of(algorithm, event="ErrorEvent"):
     return errors
 
 
+def _text_row(line):
+    """A text line as (fields, x y z): fields None for a blank or comment
+    line, x y z None when its first three fields are not numbers."""
+    fields = line.replace(",", " ").split()
+    if not fields or fields[0].startswith(("#", "//")):
+        return None, None
+    try:
+        return fields, [float(v) for v in fields[:3]]
+    except ValueError:
+        return fields, None
+
+
+def _read_text_columns(text):
+    """The common case, fast: after the header lines, every line holds the
+    same number (3 or more) of numbers and nothing else; numpy parses them
+    in one call (about 4 times faster than line by line). None for any other
+    file, which _read_text_lines then reads and explains."""
+    start = 0
+    while start < len(text):
+        end = text.find("\n", start)
+        end = len(text) if end < 0 else end
+        fields, values = _text_row(text[start:end])
+        if values is not None:
+            if len(values) < 3:
+                if len(fields) == 1:  # a .pts file's point count
+                    start = end + 1
+                    continue
+                return None
+            body = text[start:].rstrip()
+            if "#" in body or "//" in body:
+                return None
+            import warnings
+            with warnings.catch_warnings():
+                warnings.simplefilter("error")  # a partial parse warns; then read line by line
+                try:
+                    numbers = np.fromstring(body.replace(",", " "), dtype=np.float64, sep=" ")
+                except (ValueError, DeprecationWarning):
+                    return None
+            rows = body.count("\n") + 1
+            if numbers.size != rows * len(fields):
+                return None  # blank lines, or rows of different lengths
+            return numbers.reshape(rows, len(fields))[:, :3]
+        start = end + 1
+    return None
+
+
+def _read_text_lines(text, path):
+    """x y z line by line, with the number of a line that is not a point."""
+    rows = []
+    for number, line in enumerate(text.splitlines(), 1):
+        fields, values = _text_row(line)
+        if fields is None:
+            continue
+        if values is None:
+            if rows:
+                raise Failure("%s, line %d: not a point (x y z): %r" % (path, number, line.strip()))
+            continue  # a header line
+        if len(values) == 3:
+            rows.append(values)
+        elif not (len(fields) == 1 and not rows):  # a .pts file's point count
+            raise Failure("%s, line %d: not a point (x y z): %r" % (path, number, line.strip()))
+    return np.array(rows, dtype=np.float64).reshape(-1, 3)
+
+
 def _read_text(path):
     """x y z of a plain-text cloud: the first three columns (spaces, tabs or
     commas), header lines and # or // comments skipped. The CMake build's
     package reads these files with vtkPointCloudTextReader instead."""
-    rows = []
-    with open(path, "r", errors="replace") as text:
-        for number, line in enumerate(text, 1):
-            fields = line.replace(",", " ").split()
-            if not fields or fields[0].startswith(("#", "//")):
-                continue
-            try:
-                values = [float(v) for v in fields[:3]]
-            except ValueError:
-                if rows:
-                    raise Failure("%s, line %d: not a point (x y z): %r" % (path, number, line.strip()))
-                continue  # a header line
-            if len(values) == 3:
-                rows.append(values)
-            elif not (len(fields) == 1 and not rows):  # a .pts file's point count
-                raise Failure("%s, line %d: not a point (x y z): %r" % (path, number, line.strip()))
+    with open(path, "r", errors="replace") as file:
+        text = file.read()
+    xyz = _read_text_columns(text)
+    if xyz is None:
+        xyz = _read_text_lines(text, path)
     from ._reconstruct import point_cloud
-    return point_cloud(np.array(rows, dtype=np.float64).reshape(-1, 3))
+    return point_cloud(np.ascontiguousarray(xyz))
 
 
 def read_cloud(path):

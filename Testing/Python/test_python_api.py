@@ -474,6 +474,23 @@ def test_cli_text_cloud(tmp_path):
     assert _read(str(tmp_path / "a.vtp")).GetNumberOfPolys() == surface.GetNumberOfPolys() > 0
 
 
+def test_cli_text_layouts(tmp_path):
+    """The wheel's plain-text reading: numpy's one-call parse (rows of equal
+    length after a header) and the line-by-line reading (comments, blank
+    lines, rows of different lengths) give the same points."""
+    from narrowvolume import _cli
+    texts = ["1 2 3\n4 5 6\n", "x y z\n1,2,3\n4,5,6", "2\n1 2 3 0.5\n4 5 6 0.5\n",
+             "1\t2\t3\r\n4\t5\t6\r\n\n", "1 2 3\n# a comment\n4 5 6\n", "1 2 3\n\n4 5 6 7\n",
+             "1 2 3 red\n4 5 6 blue\n"]
+    for number, text in enumerate(texts):
+        fast = _cli._read_text_columns(text)
+        assert (fast is not None) == (number < 4), text
+        path = tmp_path / ("cloud%d.xyz" % number)
+        path.write_text(text)
+        xyz = vtk_to_numpy(_cli._read_text(str(path)).GetPoints().GetData())
+        assert np.array_equal(xyz, [[1, 2, 3], [4, 5, 6]]), text
+
+
 def test_cli_options_and_defaults():
     """--help names every property, with the filter's default."""
     result = cli("--help")
