@@ -38,21 +38,25 @@ namespace
 {
 
 /// The core's progress to the filter, and the filter's abort flag to the
-/// core, on the thread that runs the filter (see nv::CallerMonitor).
+/// core, on the thread that runs the filter (see nv::CallerMonitor). Not
+/// abortable in the information pass: the pipeline clears the abort flag as
+/// a data pass begins, so there it may still hold the last run's.
 class FilterMonitor : public nv::CallerMonitor
 {
 public:
-  FilterMonitor(vtkAlgorithm* filter)
+  FilterMonitor(vtkAlgorithm* filter, bool abortable = true)
     : Filter(filter)
+    , Abortable(abortable)
   {
   }
 
 protected:
   void Report(double progress) override { this->Filter->UpdateProgress(progress); }
-  bool Poll() override { return this->Filter->GetAbortExecute() != 0; }
+  bool Poll() override { return this->Abortable && this->Filter->GetAbortExecute() != 0; }
 
 private:
   vtkAlgorithm* Filter;
+  bool Abortable;
 };
 
 /// The points of a point set as xyz triples in double precision.
@@ -240,8 +244,21 @@ int vtkNarrowVolumeReconstruction::RequestInformation(
     communicator.reset(new vtkNarrowVolumeCommunicator(this->Controller));
     nv::GlobalBounds(*communicator, bounds);
   }
+  // The measurement shows its progress (on a large cloud it takes seconds,
+  // before the data pass begins) as the run's first stage; the data pass's
+  // progress, which the pipeline starts again from 0, then fills the rest.
   std::shared_ptr<const nv::Sampling> sampling;
-  nv::WithThreads(this->NumberOfThreads, [&]() { sampling = this->MeasureSampling(input, communicator.get()); });
+  bool measured = false;
+  this->SetProgressShiftScale(0.0, 1.0);
+  nv::WithThreads(this->NumberOfThreads, [&]() {
+    FilterMonitor progress(this, false);
+    progress.Stage(0.0, nv::SamplingStage);
+    sampling = this->MeasureSampling(input, communicator.get(), progress, &measured);
+  });
+  if (measured)
+  {
+    this->SetProgressShiftScale(nv::SamplingStage, 1.0 - nv::SamplingStage);
+  }
   const nv::Plan plan = nv::MakePlan(this->GetSettings(), bounds, sampling->Statistics());
   if (!plan.Valid())
   {
@@ -283,6 +300,12 @@ int vtkNarrowVolumeReconstruction::RequestUpdateExtent(
 int vtkNarrowVolumeReconstruction::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
+  // The progress of the information pass's measurement (if any) ends here.
+  struct ProgressReset
+  {
+    vtkAlgorithm* Filter;
+    ~ProgressReset() { this->Filter->SetProgressShiftScale(0.0, 1.0); }
+  } progressReset{ this };
   vtkImageData* volume = vtkImageData::GetData(outputVector, 0);
   vtkPolyData* surface = vtkPolyData::GetData(outputVector, 1);
   volume->Initialize();
@@ -339,11 +362,16 @@ int vtkNarrowVolumeReconstruction::RequestData(
       });
     }
     vtkPointSet* input = vtkPointSet::GetData(inputVector[0], 0);
-    const std::shared_ptr<const nv::Sampling> sampling = this->MeasureSampling(input, communicator.get());
+    monitor.Stage(0.0, nv::SamplingStage);
+    const std::shared_ptr<const nv::Sampling> sampling = this->MeasureSampling(input, communicator.get(), monitor);
     // The measurement's seconds go to the first run that uses it (it may
     // have been made for this run's information pass).
     this->SamplingTime = this->SamplingUnreported;
     this->SamplingUnreported = 0.0;
+    if (!sampling) // stopped (AbortExecute)
+    {
+      return;
+    }
     if (!run.Run(PointsOf(input), sampling))
     {
       if (!run.Error().empty())
@@ -506,7 +534,7 @@ void vtkNarrowVolumeReconstruction::AddRunSummary(
 
 //------------------------------------------------------------------------------
 std::shared_ptr<const nv::Sampling> vtkNarrowVolumeReconstruction::MeasureSampling(
-  vtkPointSet* input, nv::Communicator* communicator)
+  vtkPointSet* input, nv::Communicator* communicator, nv::Monitor& monitor, bool* measured)
 {
   // The same points (object, modification time, count) are measured once:
   // the information pass and the data pass, and runs that only change
@@ -524,8 +552,17 @@ std::shared_ptr<const nv::Sampling> vtkNarrowVolumeReconstruction::MeasureSampli
   {
     const auto start = std::chrono::steady_clock::now();
     auto sampling = std::make_shared<nv::Sampling>();
-    sampling->Measure(PointsOf(input), communicator);
+    const bool complete = sampling->Measure(PointsOf(input), communicator, &monitor);
     this->SamplingUnreported += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (measured)
+    {
+      *measured = true;
+    }
+    if (!complete)
+    {
+      this->Sampled = nullptr;
+      return nullptr;
+    }
     this->Sampled = sampling;
     this->SampledTime = time;
     this->SampledPoints = count;

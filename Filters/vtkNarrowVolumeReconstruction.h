@@ -386,8 +386,10 @@ protected:
   /// The run's figures (nv::RunSummary) as the volume's field data.
   void AddRunSummary(vtkImageData* volume, const std::vector<nv::SummaryArray>& summary);
   /// The sampling of the input's points, measured once per input (collective
-  /// when the processes share the cloud).
-  std::shared_ptr<const nv::Sampling> MeasureSampling(vtkPointSet* input, nv::Communicator* communicator);
+  /// when the processes share the cloud), with its progress to the monitor;
+  /// null if the monitor stopped it. measured: whether this call measured.
+  std::shared_ptr<const nv::Sampling> MeasureSampling(
+    vtkPointSet* input, nv::Communicator* communicator, nv::Monitor& monitor, bool* measured = nullptr);
 
   double OffsetDistance = 0.0;
   double SampleSpacing = 0.0;

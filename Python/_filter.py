@@ -191,7 +191,17 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
         if data is not None and data.GetNumberOfPoints() > 0:
             bounds = data.GetBounds()
         try:
-            sampling = self._measure_sampling(data)
+            # Its progress shows (seconds on a large cloud, before the data
+            # pass); not stopped by AbortExecute, which the pipeline clears
+            # only as a data pass begins (it may hold the last run's).
+            # As the run's first stage: the data pass's progress, which the
+            # pipeline starts again from 0, then fills the rest.
+            self.SetProgressShiftScale(0.0, 1.0)
+            monitor = _core.Monitor(report=self.UpdateProgress, poll=None)
+            monitor.Stage(0.0, _core.SamplingStage)
+            sampling, measured = self._measure_sampling(data, monitor)
+            if measured:
+                self.SetProgressShiftScale(_core.SamplingStage, 1.0 - _core.SamplingStage)
         except (KeyboardInterrupt, Exception) as error:  # RequestData reports the run's own errors
             self._sampled = None
             volume_info.Set(sddp.WHOLE_EXTENT(), (0, -1, 0, -1, 0, -1), 6)
@@ -209,9 +219,11 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
         vtkDataObject.SetPointDataActiveScalarInfo(volume_info, VTK_FLOAT, 1)
         return 1
 
-    def _measure_sampling(self, data):
+    def _measure_sampling(self, data, monitor):
         """The core's sampling of the input's points, measured once per
-        points (object, modification time, count), as the C++ filter does."""
+        points (object, modification time, count), as the C++ filter does
+        (None if the monitor stopped the measurement), and whether this call
+        measured."""
         points = data.GetPoints() if data is not None else None
         # The C++ object's address (__this__): a Python wrapper's id() changes
         # whenever VTK hands out a new wrapper for the same points.
@@ -219,9 +231,16 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
                points.GetNumberOfPoints() if points else 0)
         if self._sampled is None or self._sampled[0] != key:
             start = time.perf_counter()
-            self._sampled = (key, _core.Sampling(_points_of(data), self._settings.NumberOfThreads))
-            self._sampling_unreported += time.perf_counter() - start
-        return self._sampled[1]
+            self._sampled = None
+            try:
+                sampling = _core.Sampling.Measure(_points_of(data), self._settings.NumberOfThreads, monitor)
+            finally:
+                self._sampling_unreported += time.perf_counter() - start
+            if sampling is None:
+                return None, True
+            self._sampled = (key, sampling)
+            return sampling, True
+        return self._sampled[1], False
 
     def RequestUpdateExtent(self, request, inInfoVec, outInfoVec):
         """The shell depends on every point: asks for the whole cloud."""
@@ -233,6 +252,12 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
 
     def RequestData(self, request, inInfoVec, outInfoVec):
         """Runs the core on the input's points and makes the two outputs."""
+        try:
+            return self._request_data(inInfoVec, outInfoVec)
+        finally:
+            self.SetProgressShiftScale(0.0, 1.0)  # the information pass's measurement's share ends here
+
+    def _request_data(self, inInfoVec, outInfoVec):
         volume = vtkImageData.GetData(outInfoVec, 0)
         surface = vtkPolyData.GetData(outInfoVec, 1)
         volume.Initialize()
@@ -269,10 +294,13 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
             volume_on = bool(settings.OutputVolume)
             run.RequestVolume(volume_on and settings.OutputInitialPhi, volume_on and settings.OutputDistance,
                               volume_on and settings.OutputNarrowBand)
-        sampling = self._measure_sampling(data)
+        monitor.Stage(0.0, _core.SamplingStage)
+        sampling, _ = self._measure_sampling(data, monitor)
         # The measurement's seconds go to the first run that uses it (it may
         # have been made for this run's information pass).
         self._sampling_time, self._sampling_unreported = self._sampling_unreported, 0.0
+        if sampling is None:  # stopped (AbortExecute)
+            return None
         if not run.Run(_points_of(data), sampling):
             if run.Error():
                 self._error(run.Error())

@@ -423,16 +423,26 @@ NB_MODULE(_core, m)
     .def_ro("LargestGap", &nv::GapReport::LargestGap)
     .def_prop_ro("LargestGapCenter", [](const nv::GapReport& g) { return g.LargestGapCenter; });
   nb::class_<nv::Sampling>(m, "Sampling", "The sampling of a cloud (nv::Sampling), measured once per cloud.")
-    .def(nb::new_([](Points points, int threads) {
-      auto sampling = std::make_shared<nv::Sampling>();
-      std::vector<double> xyz(points.data(), points.data() + 3 * points.shape(0));
-      nb::gil_scoped_release release;
-      nv::WithThreads(threads, [&]() { sampling->Measure(xyz, nullptr); });
-      return sampling;
-    }),
-      "points"_a, "threads"_a = 0,
+    .def_static(
+      "Measure",
+      [](Points points, int threads, std::shared_ptr<PythonMonitor> monitor) -> std::shared_ptr<nv::Sampling> {
+        auto sampling = std::make_shared<nv::Sampling>();
+        std::vector<double> xyz(points.data(), points.data() + 3 * points.shape(0));
+        bool measured = false;
+        {
+          nb::gil_scoped_release release;
+          nv::WithThreads(threads, [&]() { measured = sampling->Measure(xyz, nullptr, monitor.get()); });
+        }
+        if (monitor)
+        {
+          monitor->RaisePending(); // Ctrl-C, or what a callback raised
+        }
+        return measured ? sampling : nullptr;
+      },
+      "points"_a, "threads"_a = 0, "monitor"_a.none() = nb::none(),
       "Measures the nearest-neighbour distances of the points ((n, 3) float64) on `threads` threads (0: all "
-      "cores), without the GIL.")
+      "cores), without the GIL. The monitor (optional) gets the search's progress in its current stage and "
+      "may stop it: then None (Ctrl-C raises KeyboardInterrupt).")
     .def("Statistics", &nv::Sampling::Statistics);
 
   m.def(
@@ -555,4 +565,5 @@ NB_MODULE(_core, m)
   m.def("NoInnerSheetWarning", &nv::NoInnerSheetWarning);
   m.def("OneSheetNeedsGridWarning", &nv::OneSheetNeedsGridWarning);
   m.attr("OutputStage") = nb::make_tuple(nv::OutputStage[0], nv::OutputStage[1]);
+  m.attr("SamplingStage") = nv::SamplingStage;
 }

@@ -325,7 +325,15 @@ bool Reconstruction::RunSteps(std::vector<double> xyz, std::shared_ptr<const Sam
   if (!measured)
   {
     auto sampling = std::make_shared<Sampling>();
-    sampling->Measure(xyz, this->Comm);
+    if (this->TheMonitor)
+    {
+      this->TheMonitor->Stage(0.0, SamplingStage);
+    }
+    if (!sampling->Measure(xyz, this->Comm, this->TheMonitor))
+    {
+      this->Stopped = true;
+      return false;
+    }
     measured = sampling;
   }
   this->TheSampling = measured;

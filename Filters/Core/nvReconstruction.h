@@ -110,6 +110,11 @@ std::int64_t PointBounds(const std::vector<double>& xyz, double bounds[6]);
 /// The bounds of all processes' points (in place), collective.
 void GlobalBounds(Communicator& communicator, double bounds[6]);
 
+/// The share of a run's progress that the measurement of the points'
+/// spacing shows, when it is made for the run (the set-up's stage starts at
+/// 0 as well, and shows once past it).
+constexpr double SamplingStage = 0.1;
+
 class Reconstruction
 {
 public:

@@ -301,10 +301,13 @@ double CellSizeFor(const std::vector<double>& xyz)
  * spacing, queries without a neighbour within a few cells again with cells
  * four times larger, and the last few against every point. nearest and
  * partner (an index into points) are indexed by query. The queries may be
- * the points themselves.
+ * the points themselves. The first pass, which answers almost every query,
+ * reports its progress to the monitor (may be null) and stops when it asks:
+ * then false, and the figures are incomplete.
  */
-void FindNearest(const std::vector<double>& points, const std::vector<double>& queries,
-  std::vector<std::int64_t> pending, std::vector<double>& nearest, std::vector<std::int64_t>& partner)
+bool FindNearest(const std::vector<double>& points, const std::vector<double>& queries,
+  std::vector<std::int64_t> pending, std::vector<double>& nearest, std::vector<std::int64_t>& partner,
+  Monitor* monitor = nullptr)
 {
   // Once a cell spans the box of the points and the queries together, a
   // query not answered within MaximumRing rings has no distinct neighbour
@@ -328,15 +331,21 @@ void FindNearest(const std::vector<double>& points, const std::vector<double>& q
     const CellIndex index(points, cell);
     // The points themselves at first in cell order (neighbours one after the other).
     const std::vector<std::int64_t>& order = selves && pending.size() == points.size() / 3 ? index.CellOrder() : pending;
-    ParallelFor(0, static_cast<std::int64_t>(order.size()), 1024, [&](std::int64_t begin, std::int64_t end) {
-      for (std::int64_t i = begin; i < end; ++i)
-      {
-        const std::int64_t q = order[i];
-        const auto found = index.Nearest(&queries[3 * q]);
-        nearest[q] = found.first;
-        partner[q] = found.second;
-      }
-    });
+    const bool done =
+      MonitoredFor(0, static_cast<std::int64_t>(order.size()), 1024, monitor, [&](std::int64_t begin, std::int64_t end) {
+        for (std::int64_t i = begin; i < end; ++i)
+        {
+          const std::int64_t q = order[i];
+          const auto found = index.Nearest(&queries[3 * q]);
+          nearest[q] = found.first;
+          partner[q] = found.second;
+        }
+      });
+    if (!done)
+    {
+      return false;
+    }
+    monitor = nullptr; // the passes after it answer few queries
     std::vector<std::int64_t> left;
     for (std::int64_t q : pending)
     {
@@ -359,6 +368,7 @@ void FindNearest(const std::vector<double>& points, const std::vector<double>& q
       partner[pending[i]] = found.second;
     }
   });
+  return true;
 }
 
 /// The k-th smallest (from 0) of all processes' values, all >= 0: found by
@@ -466,12 +476,11 @@ void GapFigures(const std::vector<double>& gaps, double offset, double figures[6
 } // namespace
 
 //------------------------------------------------------------------------------
-void Sampling::Measure(const std::vector<double>& xyz, Communicator* communicator)
+bool Sampling::Measure(const std::vector<double>& xyz, Communicator* communicator, Monitor* monitor)
 {
   if (communicator && communicator->Size() > 1)
   {
-    this->MeasureDistributed(xyz, *communicator);
-    return;
+    return this->MeasureDistributed(xyz, *communicator, monitor);
   }
   this->Points = xyz;
   this->Owned = static_cast<std::int64_t>(xyz.size() / 3);
@@ -483,11 +492,14 @@ void Sampling::Measure(const std::vector<double>& xyz, Communicator* communicato
   double bounds[6];
   if (n < 2 || PointBounds(this->Points, bounds) >= 0) // non-finite: the run refuses the points
   {
-    return;
+    return true;
   }
   std::vector<std::int64_t> every(static_cast<std::size_t>(n));
   std::iota(every.begin(), every.end(), 0);
-  FindNearest(this->Points, this->Points, std::move(every), this->Nearest, this->Partner);
+  if (!FindNearest(this->Points, this->Points, std::move(every), this->Nearest, this->Partner, monitor))
+  {
+    return false;
+  }
   // Quantiles of the finite distances (a point whose every neighbour
   // coincides with it has none).
   std::vector<double> sorted;
@@ -509,10 +521,11 @@ void Sampling::Measure(const std::vector<double>& xyz, Communicator* communicato
     this->Stats.MedianSpacing = quantile(0.5);
     this->Stats.WideSpacing = quantile(0.999);
   }
+  return true;
 }
 
 //------------------------------------------------------------------------------
-void Sampling::MeasureDistributed(const std::vector<double>& xyz, Communicator& communicator)
+bool Sampling::MeasureDistributed(const std::vector<double>& xyz, Communicator& communicator, Monitor* monitor)
 {
   // Each process measures the points of one slab of z, which it receives
   // from all processes; a point whose nearest neighbour in the slab is
@@ -537,7 +550,7 @@ void Sampling::MeasureDistributed(const std::vector<double>& xyz, Communicator& 
   this->Partner.clear();
   if (figures[0] > 0.0 || total < 2.0)
   {
-    return; // non-finite points (the run refuses them), or nothing to measure
+    return true; // non-finite points (the run refuses them), or nothing to measure
   }
 
   // 1. Slabs of about equal counts, from a histogram of z.
@@ -584,9 +597,10 @@ void Sampling::MeasureDistributed(const std::vector<double>& xyz, Communicator& 
   this->Partner.assign(static_cast<std::size_t>(owned), -1);
   std::vector<std::int64_t> every(static_cast<std::size_t>(owned));
   std::iota(every.begin(), every.end(), 0);
-  if (owned > 1)
+  const bool stopped = owned > 1 && !FindNearest(this->Points, this->Points, every, this->Nearest, this->Partner, monitor);
+  if (communicator.MaxAll(stopped ? 1.0 : 0.0) > 0.0) // every process stops, or none
   {
-    FindNearest(this->Points, this->Points, every, this->Nearest, this->Partner);
+    return false;
   }
 
   // 3. Points whose nearest neighbour may lie in another slab (a point as
@@ -668,6 +682,7 @@ void Sampling::MeasureDistributed(const std::vector<double>& xyz, Communicator& 
     this->Stats.MedianSpacing = GlobalKth(sorted, QuantileIndex(0.5, finiteCount), communicator);
     this->Stats.WideSpacing = GlobalKth(sorted, QuantileIndex(0.999, finiteCount), communicator);
   }
+  return true;
 }
 
 //------------------------------------------------------------------------------

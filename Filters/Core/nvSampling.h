@@ -29,6 +29,7 @@
 namespace nv
 {
 class Communicator;
+class Monitor;
 
 /// The longest side, in cells, of a grid whose spacing is chosen automatically.
 constexpr int AutomaticMaximumDimension = 320;
@@ -59,8 +60,11 @@ class Sampling
 {
 public:
   /// Collective. Measures the distance from each point to its nearest other
-  /// point (duplicates of a point do not count as neighbours).
-  void Measure(const std::vector<double>& xyz, Communicator* communicator);
+  /// point (duplicates of a point do not count as neighbours). The monitor
+  /// (may be null) gets the progress of the search, which takes most of the
+  /// time, and may stop it: then false on every process, and the figures
+  /// are not to be used.
+  bool Measure(const std::vector<double>& xyz, Communicator* communicator, Monitor* monitor = nullptr);
   const SamplingStatistics& Statistics() const { return this->Stats; }
   /// Collective. The gaps the shell of offset l may not bridge.
   GapReport Gaps(double offset, Communicator* communicator) const;
@@ -69,7 +73,7 @@ public:
   std::int64_t HeldPoints() const { return static_cast<std::int64_t>(this->Points.size() / 3); }
 
 private:
-  void MeasureDistributed(const std::vector<double>& xyz, Communicator& communicator);
+  bool MeasureDistributed(const std::vector<double>& xyz, Communicator& communicator, Monitor* monitor);
 
   std::vector<double> Points;        ///< the measured points first, then the borrowed ones
   std::int64_t Owned = 0;            ///< the measured points

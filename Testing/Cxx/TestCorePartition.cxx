@@ -11,6 +11,7 @@
 #include "nvGrid.h"
 #include "nvHalo.h"
 #include "nvNarrowBand.h"
+#include "nvParallel.h"
 #include "nvPartition.h"
 #include "nvReconstruction.h"
 #include "nvSampling.h"
@@ -504,6 +505,69 @@ void TestDistributedSampling()
   }
 }
 
+/// Records the progress it gets; asks to stop once it has `StopAfter`
+/// reports (never when negative).
+struct RecordingMonitor : nv::Monitor
+{
+  int StopAfter = -1;
+  std::vector<double> Reports;
+  void Progress(double fraction) override { this->Reports.push_back(fraction); }
+  bool Aborted() override { return this->StopAfter >= 0 && static_cast<int>(this->Reports.size()) >= this->StopAfter; }
+};
+
+/// The spacing measurement reports its progress and stops when asked: on
+/// one process, on every process when one of them is asked, and a run that
+/// measures for itself then stops as aborted, without an error.
+void TestSamplingProgressAndStop()
+{
+  const double center[3] = { 0.0, 0.0, 0.0 };
+  const std::vector<double> points = nvtest::SpherePoints(50000, 0.5, center);
+  nv::Sampling plain;
+  NV_CHECK(plain.Measure(points, nullptr));
+  RecordingMonitor watch;
+  nv::Sampling watched;
+  NV_CHECK(watched.Measure(points, nullptr, &watch));
+  NV_CHECK(watched.Statistics().MedianSpacing == plain.Statistics().MedianSpacing &&
+    watched.Statistics().WideSpacing == plain.Statistics().WideSpacing);
+  std::printf("spacing of %zu points: %zu progress reports\n", points.size() / 3, watch.Reports.size());
+  NV_CHECK(watch.Reports.size() >= 8 && std::is_sorted(watch.Reports.begin(), watch.Reports.end()) &&
+    watch.Reports.front() > 0.0 && watch.Reports.back() == 1.0);
+
+  RecordingMonitor stop;
+  stop.StopAfter = 2;
+  nv::Sampling stopped;
+  NV_CHECK(!stopped.Measure(points, nullptr, &stop));
+  NV_CHECK(stop.Reports.size() == 2);
+
+  // Three processes, the last one asked to stop: all three stop.
+  Hub hub(3);
+  std::vector<int> measured(3, -1);
+  std::vector<std::thread> threads;
+  for (int rank = 0; rank < 3; ++rank)
+  {
+    threads.emplace_back([&, rank]() {
+      std::vector<double> mine(points.begin() + rank * (points.size() / 9) * 3,
+        rank == 2 ? points.end() : points.begin() + (rank + 1) * (points.size() / 9) * 3);
+      ThreadCommunicator communicator(hub, rank);
+      RecordingMonitor asks;
+      asks.StopAfter = rank == 2 ? 1 : -1;
+      nv::Sampling sampling;
+      measured[static_cast<std::size_t>(rank)] = sampling.Measure(mine, &communicator, &asks) ? 1 : 0;
+    });
+  }
+  for (std::thread& thread : threads)
+  {
+    thread.join();
+  }
+  NV_CHECK(measured == std::vector<int>({ 0, 0, 0 }));
+
+  RecordingMonitor stopRun;
+  stopRun.StopAfter = 1;
+  nv::Settings settings;
+  nv::Reconstruction run(settings, nullptr, &stopRun);
+  NV_CHECK(!run.Run(points) && run.Aborted() && run.Error().empty());
+}
+
 /// Errors are every rank's: no points anywhere, or a NaN on one rank.
 void TestDistributedErrors()
 {
@@ -567,5 +631,6 @@ int main()
   TestDistributedSolve(nv::Domain::WholeDomain, 3, {}, true);
   TestDistributedErrors();
   TestDistributedSampling();
+  TestSamplingProgressAndStop();
   return nvtest::Result("TestCorePartition");
 }

@@ -278,6 +278,36 @@ def test_progress_callback():
         narrowvolume.reconstruct(SPHERE, progress=stop_at_half, **SETTINGS)
 
 
+def test_spacing_progress_in_the_information_pass():
+    """The measurement of the points' spacing runs in the information pass
+    (seconds on a large cloud, before the data pass): its progress shows
+    there as the run's first tenth, never going back."""
+    f = narrowvolume.vtkNarrowVolumeReconstruction()
+    f.SetInputData(nvtesting.cloud(nvtesting.sphere_points(100000)))
+    seen = []
+    f.AddObserver(vtkCommand.ProgressEvent, lambda caller, event: seen.append(caller.GetProgress()))
+    f.UpdateInformation()
+    print("%d progress events in the information pass" % len(seen))
+    assert len(seen) >= 8 and seen[-1] == pytest.approx(0.1)
+    assert all(b >= a for a, b in zip(seen, seen[1:]))
+
+
+@only_wheel
+def test_spacing_stops_when_asked():
+    """The binding's measurement stops when the monitor asks (None), and on
+    Ctrl-C (KeyboardInterrupt), as a run does."""
+    from narrowvolume import _core
+    points = np.ascontiguousarray(nvtesting.sphere_points(100000))
+    assert _core.Sampling.Measure(points, 0, None).Statistics().Valid()
+    assert _core.Sampling.Measure(points, 0, _core.Monitor(None, lambda: True)) is None
+
+    def interrupt(fraction):
+        if fraction > 0.2:
+            os.kill(os.getpid(), signal.SIGINT)
+    with pytest.raises(KeyboardInterrupt):
+        _core.Sampling.Measure(points, 0, _core.Monitor(interrupt, None))
+
+
 def _timed(**settings):
     start = time.perf_counter()
     narrowvolume.reconstruct(SPHERE, **settings)
