@@ -77,15 +77,14 @@ open("%s/rank%d.json" % (task["out"], rank), "w").write(json.dumps(dict(rank=ran
 def run(ranks, task, build):
     env = {k: v for k, v in os.environ.items() if not k.startswith(("OMPI_", "PMIX_", "OPAL_", "PMI_"))}
     env["PYTHONPATH"] = os.pathsep.join([os.path.join(build, "lib", "python3.11", "dist-packages"), HERE])
-    task = dict(task, out=tempfile.mkdtemp())
-    command = ["mpiexec", "--allow-run-as-root", "--oversubscribe", "-np", str(ranks), "pvbatch", "--symmetric",
-               "-c", RANK, json.dumps(task)]
     if shutil.which("pvbatch") is None:
         sys.exit("pvbatch not found")
-    result = subprocess.run(command, capture_output=True, text=True, env=env)
-    rows = [json.load(open(os.path.join(task["out"], name))) for name in os.listdir(task["out"])]
-    for name in os.listdir(task["out"]):
-        os.remove(os.path.join(task["out"], name))
+    with tempfile.TemporaryDirectory(prefix="nv-mpi-scaling-") as out:
+        task = dict(task, out=out)
+        command = ["mpiexec", "--allow-run-as-root", "--oversubscribe", "-np", str(ranks), "pvbatch", "--symmetric",
+                   "-c", RANK, json.dumps(task)]
+        result = subprocess.run(command, capture_output=True, text=True, env=env)
+        rows = [json.load(open(os.path.join(out, name))) for name in os.listdir(out)]
     if result.returncode != 0 or len(rows) != ranks:
         raise RuntimeError("%d ranks failed:\n%s\n%s" % (ranks, result.stdout[-2000:], result.stderr[-3000:]))
     return sorted(rows, key=lambda r: r["rank"])
@@ -111,7 +110,8 @@ def main():
         import numpy as np
         sys.path.insert(0, HERE)
         import clouds
-        task["npy"] = os.path.join(tempfile.mkdtemp(), "cloud.npy")
+        scratch = tempfile.TemporaryDirectory(prefix="nv-mpi-scaling-")  # removed at exit
+        task["npy"] = os.path.join(scratch.name, "cloud.npy")
         np.save(task["npy"], clouds.load(task))
     print("## %s under MPI, OutputVolume %d, %d thread(s) per rank, medians of %d runs\n"
           % (args.case, args.volume, args.threads, args.repeat))

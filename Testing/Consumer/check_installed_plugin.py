@@ -52,7 +52,8 @@ filename = plugins.get("NarrowVolume", ("", False))[0]
 check(hasattr(pvs, "NarrowVolumeReconstruction"), "paraview.simple.NarrowVolumeReconstruction exists")
 if hasattr(pvs, "NarrowVolumeReconstruction"):
     import tempfile
-    cloud_file = os.path.join(tempfile.mkdtemp(prefix="nv-installed-"), "sphere.pcd")
+    folder = tempfile.TemporaryDirectory(prefix="nv-installed-")  # removed at the end
+    cloud_file = os.path.join(folder.name, "sphere.pcd")
     sphere = pvs.Sphere(Radius=0.5, ThetaResolution=24, PhiResolution=24)
     sphere.UpdatePipeline()
     xyz = [servermanager.Fetch(sphere).GetPoint(i) for i in range(servermanager.Fetch(sphere).GetNumberOfPoints())]
