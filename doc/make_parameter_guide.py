@@ -28,7 +28,8 @@ panels = [
     ("l = 3h, eps = eps_3, 10 steps", dict(OffsetDistance=3 * H, EpsilonCells=3, MaximumNumberOfIterations=10)),
     ("l = 3h, eps = eps_12, 10 steps", dict(OffsetDistance=3 * H, EpsilonCells=12, MaximumNumberOfIterations=10)),
 ]
-folder = tempfile.mkdtemp()
+scratch = tempfile.TemporaryDirectory()  # the panels, removed at exit
+folder = scratch.name
 images = []
 for title, settings in panels:
     view = pvs.CreateView("RenderView")
