@@ -191,11 +191,11 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
         if data is not None and data.GetNumberOfPoints() > 0:
             bounds = data.GetBounds()
         try:
-            # Its progress shows (seconds on a large cloud, before the data
-            # pass); not stopped by AbortExecute, which the pipeline clears
-            # only as a data pass begins (it may hold the last run's).
-            # As the run's first stage: the data pass's progress, which the
-            # pipeline starts again from 0, then fills the rest.
+            # The measurement shows its progress (seconds on a large cloud,
+            # before the data pass) as the run's first stage; the data pass's
+            # progress, which the pipeline starts again from 0, then fills
+            # the rest. AbortExecute does not stop it: the pipeline clears
+            # that flag only as a data pass begins (it may hold the last run's).
             self.SetProgressShiftScale(0.0, 1.0)
             monitor = _core.Monitor(report=self.UpdateProgress, poll=None)
             monitor.Stage(0.0, _core.SamplingStage)

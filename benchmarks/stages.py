@@ -4,7 +4,7 @@
 again in one warm process (for a profiler to sample, or to see where the time
 of a run goes without a fresh process's start-up).
 
-    PYTHONPATH=build/lib/python3.11/site-packages \\
+    PYTHONPATH=build/lib/python3.11/dist-packages \\
         pvpython benchmarks/stages.py dragon [--repeat 8] [--volume off] [--scans DIR]
 
     perf record -F 1000 pvpython benchmarks/stages.py dragon --repeat 8 --volume off
