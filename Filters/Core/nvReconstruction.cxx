@@ -342,7 +342,7 @@ bool Reconstruction::RunSteps(std::vector<double> xyz, std::shared_ptr<const Sam
   {
     return this->Fail(this->ThePlan.Error);
   }
-  this->Gaps = this->TheSampling->Gaps(this->ThePlan.Scheme.OffsetDistance, this->Comm);
+  this->Gaps = this->TheSampling->Gaps(this->ThePlan.Scheme.OffsetDistance, this->Comm, xyz);
   const Grid& grid = this->ThePlan.TheGrid;
   const std::int64_t layers = (grid.Dims[2] + BrickSize - 1) >> BrickShift;
 

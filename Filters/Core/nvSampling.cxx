@@ -482,7 +482,10 @@ bool Sampling::Measure(const std::vector<double>& xyz, Communicator* communicato
   {
     return this->MeasureDistributed(xyz, *communicator, monitor);
   }
-  this->Points = xyz;
+  // The caller's points are measured where they are (Gaps reads them there
+  // again): no copy of the cloud is kept.
+  this->Distributed = false;
+  this->Points.clear();
   this->Owned = static_cast<std::int64_t>(xyz.size() / 3);
   const std::int64_t n = this->Owned;
   this->Nearest.assign(static_cast<std::size_t>(n), 0.0); // unmeasured: no gaps
@@ -490,13 +493,13 @@ bool Sampling::Measure(const std::vector<double>& xyz, Communicator* communicato
   this->Stats = SamplingStatistics{};
   this->Stats.Points = n;
   double bounds[6];
-  if (n < 2 || PointBounds(this->Points, bounds) >= 0) // non-finite: the run refuses the points
+  if (n < 2 || PointBounds(xyz, bounds) >= 0) // non-finite: the run refuses the points
   {
     return true;
   }
   std::vector<std::int64_t> every(static_cast<std::size_t>(n));
   std::iota(every.begin(), every.end(), 0);
-  if (!FindNearest(this->Points, this->Points, std::move(every), this->Nearest, this->Partner, monitor))
+  if (!FindNearest(xyz, xyz, std::move(every), this->Nearest, this->Partner, monitor))
   {
     return false;
   }
@@ -544,6 +547,7 @@ bool Sampling::MeasureDistributed(const std::vector<double>& xyz, Communicator& 
   double total = static_cast<double>(xyz.size() / 3);
   communicator.SumAll(&total, 1);
   this->Stats.Points = static_cast<std::int64_t>(total);
+  this->Distributed = true;
   this->Points.clear();
   this->Owned = 0;
   this->Nearest.clear();
@@ -686,17 +690,21 @@ bool Sampling::MeasureDistributed(const std::vector<double>& xyz, Communicator& 
 }
 
 //------------------------------------------------------------------------------
-GapReport Sampling::Gaps(double offset, Communicator* communicator) const
+GapReport Sampling::Gaps(double offset, Communicator* communicator, const std::vector<double>& xyz) const
 {
   // This process's gap points, then all of them on process 0, which counts.
+  // (A serial run's points must be the ones measured: other points have none.)
+  const std::vector<double>& points = this->Distributed ? this->Points : xyz;
+  const std::int64_t measured =
+    this->Distributed || xyz.size() == 3 * static_cast<std::size_t>(this->Owned) ? this->Owned : 0;
   std::vector<double> gaps;
-  for (std::int64_t p = 0; p < this->Owned; ++p)
+  for (std::int64_t p = 0; p < measured; ++p)
   {
     if (this->Nearest[p] > offset)
     {
-      const double* x = &this->Points[3 * p];
+      const double* x = &points[3 * p];
       const std::int64_t other = this->Partner[p];
-      const double* y = other >= 0 ? &this->Points[3 * other] : x;
+      const double* y = other >= 0 ? &points[3 * other] : x;
       gaps.insert(gaps.end(), { x[0], x[1], x[2], this->Nearest[p], y[0], y[1], y[2] });
     }
   }

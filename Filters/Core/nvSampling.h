@@ -66,16 +66,21 @@ public:
   /// are not to be used.
   bool Measure(const std::vector<double>& xyz, Communicator* communicator, Monitor* monitor = nullptr);
   const SamplingStatistics& Statistics() const { return this->Stats; }
-  /// Collective. The gaps the shell of offset l may not bridge.
-  GapReport Gaps(double offset, Communicator* communicator) const;
-  /// The points this process holds: all of a serial run's; in a distributed
-  /// run, its slab's and those it borrowed from the slabs next to it.
+  /// Collective. The gaps the shell of offset l may not bridge. xyz: in a
+  /// serial run, the points measured (not kept: the sampling holds their
+  /// nearest distances and partners only); a distributed run reads the
+  /// copies it holds instead.
+  GapReport Gaps(double offset, Communicator* communicator, const std::vector<double>& xyz) const;
+  /// The copies of points this process holds: none in a serial run; in a
+  /// distributed run, its slab's and those it borrowed from the slabs next
+  /// to it.
   std::int64_t HeldPoints() const { return static_cast<std::int64_t>(this->Points.size() / 3); }
 
 private:
   bool MeasureDistributed(const std::vector<double>& xyz, Communicator& communicator, Monitor* monitor);
 
-  std::vector<double> Points;        ///< the measured points first, then the borrowed ones
+  bool Distributed = false;
+  std::vector<double> Points;        ///< distributed: the measured points first, then the borrowed ones
   std::int64_t Owned = 0;            ///< the measured points
   std::vector<double> Nearest;       ///< distance from each measured point to the nearest other point
   std::vector<std::int64_t> Partner; ///< that point, an index into Points (-1: none)

@@ -443,7 +443,7 @@ void TestDistributedSampling()
     std::vector<nv::GapReport> serialGaps;
     for (double offset : offsets)
     {
-      serialGaps.push_back(serial.Gaps(offset, nullptr));
+      serialGaps.push_back(serial.Gaps(offset, nullptr, points));
     }
     for (int ranks : { 2, 3, 5, 8 })
     {
@@ -474,7 +474,7 @@ void TestDistributedSampling()
           int ok = a.Points == b.Points && a.MedianSpacing == b.MedianSpacing && a.WideSpacing == b.WideSpacing;
           for (std::size_t o = 0; o < offsets.size(); ++o)
           {
-            const nv::GapReport gaps = sampling.Gaps(offsets[o], &communicator);
+            const nv::GapReport gaps = sampling.Gaps(offsets[o], &communicator, mine);
             const nv::GapReport& reference = serialGaps[o];
             ok = ok && gaps.Gaps == reference.Gaps && gaps.GapPoints == reference.GapPoints &&
               gaps.LargestGap == reference.LargestGap && gaps.LargestGapCenter == reference.LargestGapCenter;
