@@ -20,6 +20,7 @@ import signal
 import sys
 import threading
 import time
+import warnings
 
 import numpy as np
 
@@ -99,7 +100,6 @@ def _read_text_columns(text):
             body = text[start:].rstrip()
             if "#" in body or "//" in body:
                 return None
-            import warnings
             with warnings.catch_warnings():
                 warnings.simplefilter("error")  # a partial parse warns; then read line by line
                 try:

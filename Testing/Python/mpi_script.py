@@ -68,8 +68,9 @@ if output_volume:
     clip.ClipType.Normal = [0.0, 0.0, 1.0]
     # A third of a cell above the centre: a plane through a layer of nodes
     # (the centre is one when the grid has an even number of cells in z)
-    # puts phi's sign there to a rounding tie, and a piece's cells then fall
-    # on either side of it (one layer of cells more on 2 ranks than on 1).
+    # leaves the side of those nodes to rounding, and the pieces' cells next
+    # to it then fall on either side (one layer of cells more on 2 ranks
+    # than on 1).
     bounds, extent = volume.GetDataInformation().GetBounds(), volume.GetDataInformation().GetExtent()
     clip.ClipType.Origin = [(bounds[0] + bounds[1]) / 2, (bounds[2] + bounds[3]) / 2,
                             (bounds[4] + bounds[5]) / 2 + (bounds[5] - bounds[4]) / (extent[5] - extent[4]) / 3]
