@@ -19,10 +19,10 @@ import sys
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "Data"))
+sys.path.insert(0, HERE)
 
 import numpy as np  # noqa: E402
-from make_demo_cloud import trefoil_tube  # noqa: E402
+import clouds  # noqa: E402
 
 
 def resident_mb():
@@ -55,7 +55,7 @@ def main():
     from vtkmodules.vtkCommonDataModel import vtkPolyData
     from narrowvolume import vtkNarrowVolumeReconstruction
 
-    xyz = trefoil_tube(args.points)
+    xyz = clouds.load(dict(source="trefoil:%d" % args.points))
     points = vtkPoints()
     points.SetData(numpy_to_vtk(np.ascontiguousarray(xyz), deep=1))
     del xyz

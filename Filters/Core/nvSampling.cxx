@@ -601,7 +601,8 @@ bool Sampling::MeasureDistributed(const std::vector<double>& xyz, Communicator& 
   this->Partner.assign(static_cast<std::size_t>(owned), -1);
   std::vector<std::int64_t> every(static_cast<std::size_t>(owned));
   std::iota(every.begin(), every.end(), 0);
-  const bool stopped = owned > 1 && !FindNearest(this->Points, this->Points, every, this->Nearest, this->Partner, monitor);
+  const bool stopped =
+    owned > 1 && !FindNearest(this->Points, this->Points, std::move(every), this->Nearest, this->Partner, monitor);
   if (communicator.MaxAll(stopped ? 1.0 : 0.0) > 0.0) // every process stops, or none
   {
     return false;
