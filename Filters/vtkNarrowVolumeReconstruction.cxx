@@ -186,6 +186,8 @@ nv::Settings vtkNarrowVolumeReconstruction::GetSettings() const
 {
   nv::Settings settings;
   settings.OffsetDistance = this->OffsetDistance;
+  settings.CloseGaps = this->CloseGaps;
+  settings.ClosingRadius = this->ClosingRadius;
   settings.SampleSpacing = this->SampleSpacing;
   settings.MaximumDimension = this->MaximumDimension;
   settings.XiCells = this->XiCells;
@@ -312,6 +314,7 @@ int vtkNarrowVolumeReconstruction::RequestData(
   surface->Initialize();
   this->RelativeChanges.clear();
   this->OffsetDistanceUsed = this->SampleSpacingUsed = this->MedianPointSpacing = this->LargestGap = 0.0;
+  this->ClosingRadiusUsed = 0.0;
   this->Gaps = this->RemovedPieces = this->RemovedVoids = 0;
   this->NumberOfBandNodes = 0;
   this->NumberOfGridNodes = 0;
@@ -387,6 +390,7 @@ int vtkNarrowVolumeReconstruction::RequestData(
     this->EvolutionTime = run.EvolutionSeconds();
     this->OffsetDistanceUsed = run.GetParameters().OffsetDistance;
     this->SampleSpacingUsed = run.GetGrid().Spacing;
+    this->ClosingRadiusUsed = run.GetPlan().ClosingRadius;
     this->MedianPointSpacing = run.GetSampling().MedianSpacing;
     this->Gaps = run.GetGaps().Gaps;
     this->LargestGap = run.GetGaps().LargestGap;
@@ -403,7 +407,7 @@ int vtkNarrowVolumeReconstruction::RequestData(
     const bool firstProcess = !communicator || communicator->Rank() == 0;
     if (ok && run.GetGaps().Gaps > 0 && firstProcess)
     {
-      vtkWarningMacro(<< nv::GapWarning(run.GetGaps(), this->OffsetDistanceUsed));
+      vtkWarningMacro(<< nv::GapWarning(run.GetGaps(), this->OffsetDistanceUsed, this->ClosingRadiusUsed));
     }
     if (ok && surfacePoints == 0 && !explained && firstProcess)
     {
@@ -577,6 +581,9 @@ void vtkNarrowVolumeReconstruction::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "OffsetDistance: " << this->OffsetDistance << (this->OffsetDistance == 0.0 ? " (automatic)" : "")
+     << "\n";
+  os << indent << "CloseGaps: " << this->CloseGaps << "\n";
+  os << indent << "ClosingRadius: " << this->ClosingRadius << (this->ClosingRadius == 0.0 ? " (automatic)" : "")
      << "\n";
   os << indent << "SampleSpacing: " << this->SampleSpacing << "\n";
   os << indent << "MaximumDimension: " << this->MaximumDimension << "\n";

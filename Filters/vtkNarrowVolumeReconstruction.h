@@ -21,14 +21,18 @@
  * With only the input set, the offset and the grid follow the cloud's
  * sampling: l from the distances between neighbouring points, so that the
  * shell closes where the sampling allows and keeps detail near the sampling
- * scale, and h = l / 4 (see OffsetDistance and SampleSpacing). A warning
- * names the gaps wider than l, where the shell may open.
+ * scale, and h = l / 4 (see OffsetDistance and SampleSpacing). Holes in
+ * the sampled surface up to 3 l wide (radius) are bridged with points
+ * before the distance is computed (CloseGaps, ClosingRadius), so that a
+ * closed scan gives a closed shell with a cavity; a warning names the holes
+ * left open, wider than that.
  * Output port 0 (vtkImageData): point array "phi" (float, in [-1, 1]), and on
  * request "InitialPhi" (eq. 2), "Distance" (eq. 6) and "NarrowBand" (1 on
  * band nodes). Its field data holds "NumberOfIterations", "NarrowBandNodes",
  * "RelativeChange" (one value per time step), the "OffsetDistance" and
- * "SampleSpacing" used, the cloud's "MedianPointSpacing", the gaps
- * ("NumberOfGaps", "LargestGap", "LargestGapCenter") and the small pieces
+ * "SampleSpacing" used, the cloud's "MedianPointSpacing", the gap closing
+ * ("ClosingRadius" used, "AddedPoints"), the holes left open ("NumberOfGaps",
+ * "LargestGap", the radius of the widest, "LargestGapCenter") and the small pieces
  * removed ("RemovedPieces", "RemovedVoids").
  * Output port 1 (vtkPolyData): the phi = 0 surfaces, with point normals out
  * of the shell, contoured by marching cubes in the band's bricks from the
@@ -110,6 +114,32 @@ public:
    */
   vtkSetMacro(OffsetDistance, double);
   vtkGetMacro(OffsetDistance, double);
+  ///@}
+
+  ///@{
+  /**
+   * Bridge the holes of the sampling (default on). A hole is an empty disc
+   * on the sampled surface wider than l (radius): the shell's wall is
+   * pierced there, and one such tunnel joins its outer and inner sheets.
+   * Holes up to ClosingRadius are filled with points before the distance is
+   * computed, so that the wall over them stays at least 0.66 l thick on each
+   * side; wider openings (a scan's border, the mouth of a cup, an open base)
+   * are left open and reported. Concavities are not filled. Off: the points
+   * as given (the paper's method).
+   */
+  vtkSetMacro(CloseGaps, bool);
+  vtkGetMacro(CloseGaps, bool);
+  vtkBooleanMacro(CloseGaps, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The widest hole bridged, as the radius of its empty disc, in world
+   * units; 0 (the default): 3 l. GetClosingRadiusUsed() tells the value of
+   * the last run (0 with CloseGaps off).
+   */
+  vtkSetMacro(ClosingRadius, double);
+  vtkGetMacro(ClosingRadius, double);
   ///@}
 
   ///@{
@@ -336,6 +366,7 @@ public:
   const std::vector<double>& GetRelativeChanges() const { return this->RelativeChanges; }
   vtkGetMacro(OffsetDistanceUsed, double);
   vtkGetMacro(SampleSpacingUsed, double);
+  vtkGetMacro(ClosingRadiusUsed, double);
   vtkGetMacro(SamplingTime, double);
   vtkGetMacro(SetupTime, double);
   vtkGetMacro(EvolutionTime, double);
@@ -392,6 +423,8 @@ protected:
     vtkPointSet* input, nv::Communicator* communicator, nv::Monitor& monitor, bool* measured = nullptr);
 
   double OffsetDistance = 0.0;
+  bool CloseGaps = true;
+  double ClosingRadius = 0.0;
   double SampleSpacing = 0.0;
   int MaximumDimension = 0;
   double XiCells = 2.0;
@@ -418,6 +451,7 @@ protected:
   std::vector<double> RelativeChanges;
   double OffsetDistanceUsed = 0.0;
   double SampleSpacingUsed = 0.0;
+  double ClosingRadiusUsed = 0.0;
   double MedianPointSpacing = 0.0;
   std::int64_t Gaps = 0;
   double LargestGap = 0.0;

@@ -47,7 +47,8 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
     on request "InitialPhi", "Distance" and "NarrowBand"; field data
     "NumberOfIterations", "NarrowBandNodes", "RelativeChange" (one value per
     step), "OffsetDistance" and "SampleSpacing" (l and h used),
-    "MedianPointSpacing", "NumberOfGaps", "LargestGap", "LargestGapCenter",
+    "MedianPointSpacing", "ClosingRadius", "AddedPoints", "NumberOfGaps",
+    "LargestGap" (a radius), "LargestGapCenter",
     "RemovedPieces" and "RemovedVoids".
     Output port 1 (vtkPolyData): the phi = 0 surfaces with point normals
     ("Normals") and double-precision points, made by the core (marching cubes
@@ -79,7 +80,7 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
         self._band_nodes = 0
         self._grid_nodes = 0
         self._changes = ()
-        self._used = (0.0, 0.0)
+        self._used = (0.0, 0.0, 0.0)
         self._times = (0.0, 0.0, 0.0)
         self._sampling_time = 0.0
 
@@ -129,6 +130,10 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
     def GetSampleSpacingUsed(self):
         """The grid spacing h of the last run (the automatic one, or the one set)."""
         return self._used[1]
+
+    def GetClosingRadiusUsed(self):
+        """The closing radius of the last run (0 with CloseGaps off)."""
+        return self._used[2]
 
     def GetSamplingTime(self):
         """Wall-clock seconds spent measuring the points' spacing (nearest
@@ -309,14 +314,14 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
         self._band_nodes = run.NumberOfBandNodes()
         self._changes = tuple(run.RelativeChanges())
         offset = run.GetParameters().OffsetDistance
-        self._used = (offset, run.GetGrid().Spacing)
+        self._used = (offset, run.GetGrid().Spacing, run.GetPlan().ClosingRadius)
         start = time.perf_counter()
         done, explained, removed = self._produce_outputs(run, monitor, volume, surface)
         self._times = (run.SetupSeconds(), run.EvolutionSeconds(), time.perf_counter() - start)
         if not done:
             return None
         if run.GetGaps().Gaps > 0:
-            self._warning(_core.GapWarning(run.GetGaps(), offset))
+            self._warning(_core.GapWarning(run.GetGaps(), offset, run.GetPlan().ClosingRadius))
         if surface.GetNumberOfPoints() == 0 and not explained:
             self._warning(_core.EmptySurfaceWarning(offset, run.GetGrid().Spacing))
         return run.RunSummary(*removed)

@@ -39,6 +39,14 @@ PROPERTIES = (
              "Offset distance l in world units: the half-thickness of the shell, the distance of both "
              "phi = 0 sheets from the points. 0 chooses it from the cloud: l = max(1.5 m, q), m the median "
              "and q the 99.9th percentile of the distances from each point to its nearest neighbour."),
+    Property("CloseGaps", "CloseGaps", bool, None, None, (),
+             "Bridge the holes of the sampling: empty discs on the sampled surface wider than l (radius), "
+             "where the wall is pierced, are filled with points before the distance is computed, up to "
+             "ClosingRadius; wider openings (a scan's border, a cup's mouth) are left open and reported. "
+             "Off: the points as given (the paper's method)."),
+    Property("ClosingRadius", "ClosingRadius", float, None, None, (),
+             "The widest hole CloseGaps bridges, as the radius of its empty disc, in world units; 0 "
+             "chooses 3 l."),
     Property("SampleSpacing", "SampleSpacing", float, None, None, (),
              "Grid spacing h in world units. When <= 0, h comes from MaximumDimension, or, when that is 0 "
              "too, h = l / 4 (the paper's ratio) with at most 320 cells along the padded box's longest side."),

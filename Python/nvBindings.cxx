@@ -376,6 +376,8 @@ NB_MODULE(_core, m)
   nb::class_<nv::Settings>(m, "Settings", "What the user chooses (nv::Settings): the filter's properties.")
     .def(nb::init<>())
     .def_rw("OffsetDistance", &nv::Settings::OffsetDistance)
+    .def_rw("CloseGaps", &nv::Settings::CloseGaps)
+    .def_rw("ClosingRadius", &nv::Settings::ClosingRadius)
     .def_rw("SampleSpacing", &nv::Settings::SampleSpacing)
     .def_rw("MaximumDimension", &nv::Settings::MaximumDimension)
     .def_rw("XiCells", &nv::Settings::XiCells)
@@ -409,6 +411,7 @@ NB_MODULE(_core, m)
   nb::class_<nv::Plan>(m, "Plan", "The grid that points with given bounds get (nv::MakePlan).")
     .def_ro("TheGrid", &nv::Plan::TheGrid)
     .def_ro("Scheme", &nv::Plan::Scheme)
+    .def_ro("ClosingRadius", &nv::Plan::ClosingRadius)
     .def_ro("Error", &nv::Plan::Error)
     .def("Valid", &nv::Plan::Valid);
 
@@ -417,7 +420,7 @@ NB_MODULE(_core, m)
     .def_ro("MedianSpacing", &nv::SamplingStatistics::MedianSpacing)
     .def_ro("WideSpacing", &nv::SamplingStatistics::WideSpacing)
     .def("Valid", &nv::SamplingStatistics::Valid);
-  nb::class_<nv::GapReport>(m, "GapReport", "The gaps wider than the offset distance.")
+  nb::class_<nv::GapReport>(m, "GapReport", "The holes of the sampling left open (nvGapClosing.h).")
     .def_ro("Gaps", &nv::GapReport::Gaps)
     .def_ro("GapPoints", &nv::GapReport::GapPoints)
     .def_ro("LargestGap", &nv::GapReport::LargestGap)
@@ -531,6 +534,7 @@ NB_MODULE(_core, m)
     .def("GetSettings", [](const PythonRun& r) { return r.Run.GetSettings(); })
     .def("GetGrid", [](const PythonRun& r) { return r.Run.GetGrid(); })
     .def("GetParameters", [](const PythonRun& r) { return r.Run.GetParameters(); })
+    .def("GetPlan", [](const PythonRun& r) { return r.Run.GetPlan(); })
     .def("GetSampling", [](const PythonRun& r) { return r.Run.GetSampling(); })
     .def("GetGaps", [](const PythonRun& r) { return r.Run.GetGaps(); })
     .def("VolumeBegin", [](const PythonRun& r) { return r.Run.VolumeBegin(); })
@@ -560,7 +564,7 @@ NB_MODULE(_core, m)
   m.def("NeedsDenseVolume", &nv::NeedsDenseVolume, "settings"_a, "distributed"_a = false);
   m.def("SurfaceFromDenseCopy", &nv::SurfaceFromDenseCopy, "settings"_a, "distributed"_a = false);
   m.def("NoInnerSheet", &nv::NoInnerSheet, "settings"_a, "cavities"_a);
-  m.def("GapWarning", &nv::GapWarning, "gaps"_a, "offset"_a);
+  m.def("GapWarning", &nv::GapWarning, "gaps"_a, "offset"_a, "closing_radius"_a);
   m.def("EmptySurfaceWarning", &nv::EmptySurfaceWarning, "offset"_a, "spacing"_a);
   m.def("NoInnerSheetWarning", &nv::NoInnerSheetWarning);
   m.def("OneSheetNeedsGridWarning", &nv::OneSheetNeedsGridWarning);

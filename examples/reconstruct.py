@@ -121,11 +121,12 @@ def main():
     report("input: %s, %d points" % (args.cloud, reader.GetDataInformation().GetNumberOfPoints()))
     field = volume_info.GetFieldDataInformation()
     used = {name: field.GetArrayInformation(name).GetComponentRange(0)[0]
-            for name in ("OffsetDistance", "SampleSpacing", "NumberOfGaps", "RemovedPieces")
+            for name in ("OffsetDistance", "SampleSpacing", "AddedPoints", "NumberOfGaps", "RemovedPieces")
             if field.GetArrayInformation(name)}
     report("offset distance l = %g, spacing h = %g, grid %s nodes" % (
         used.get("OffsetDistance", shell.OffsetDistance), used.get("SampleSpacing", 0.0), volume_info.GetExtent()))
-    report("gaps wider than l: %d, loose pieces removed: %d" % (used.get("NumberOfGaps", 0), used.get("RemovedPieces", 0)))
+    report("points added in holes: %d, gaps left open: %d, loose pieces removed: %d" % (
+        used.get("AddedPoints", 0), used.get("NumberOfGaps", 0), used.get("RemovedPieces", 0)))
     report("surface: %d triangles, %.2f s" % (surface_info.GetNumberOfCells(), elapsed))
 
     # Under MPI, ParaView writes image data as a parallel .pvti (one piece a rank).

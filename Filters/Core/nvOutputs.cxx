@@ -50,6 +50,8 @@ std::vector<SummaryArray> RunSummary(const Reconstruction& run, const RemovedPie
     { "OffsetDistance", SummaryArray::Double, 1, { run.GetParameters().OffsetDistance } },
     { "SampleSpacing", SummaryArray::Double, 1, { run.GetGrid().Spacing } },
     { "MedianPointSpacing", SummaryArray::Double, 1, { run.GetSampling().MedianSpacing } },
+    { "ClosingRadius", SummaryArray::Double, 1, { run.GetPlan().ClosingRadius } },
+    { "AddedPoints", SummaryArray::Id, 1, { static_cast<double>(run.AddedPoints()) } },
     { "NumberOfGaps", SummaryArray::Double, 1, { static_cast<double>(gaps.Gaps) } },
     { "LargestGap", SummaryArray::Double, 1, { gaps.LargestGap } },
     { "LargestGapCenter", SummaryArray::Double, 3,
@@ -59,18 +61,27 @@ std::vector<SummaryArray> RunSummary(const Reconstruction& run, const RemovedPie
   };
 }
 
-std::string GapWarning(const GapReport& gaps, double offset)
+std::string GapWarning(const GapReport& gaps, double offset, double closingRadius)
 {
   std::ostringstream text;
-  text << "The cloud has " << gaps.Gaps << (gaps.Gaps == 1 ? " gap" : " gaps") << " wider than the offset distance "
-       << offset
-       << ": there, points have no neighbour within the offset, so the shell may open (a tunnel through "
-          "its wall, or a loose piece around a point farther than twice the offset from all others). The largest "
-          "gap is "
-       << gaps.LargestGap << " wide, at (" << gaps.LargestGapCenter[0] << ", " << gaps.LargestGapCenter[1] << ", "
-       << gaps.LargestGapCenter[2] << "). To bridge the gaps, set OffsetDistance to at least " << gaps.LargestGap
-       << ", or fill them with points; loose pieces are dropped by RemoveSmallPieces. Field data NumberOfGaps, "
-          "LargestGap and LargestGapCenter hold these figures.";
+  text << "The sampled surface has " << gaps.Gaps << (gaps.Gaps == 1 ? " gap" : " gaps")
+       << (closingRadius > 0.0 ? " left open" : "") << ": holes wider than the offset distance " << offset
+       << ", empty discs on the surface whose centre is farther than the offset from every point. The shell's wall "
+          "is pierced there, and its outer and inner sheets may join. The largest has radius "
+       << gaps.LargestGap << ", at (" << gaps.LargestGapCenter[0] << ", " << gaps.LargestGapCenter[1] << ", "
+       << gaps.LargestGapCenter[2] << "). ";
+  if (closingRadius > 0.0)
+  {
+    text << "Gaps up to ClosingRadius (" << closingRadius << ") are bridged with points; to bridge these too "
+         << "(if they are gaps, not the surface's own openings), set ClosingRadius to at least " << gaps.LargestGap
+         << ", or OffsetDistance above it.";
+  }
+  else
+  {
+    text << "Turn CloseGaps on to bridge gaps up to " << AutomaticClosingRadius << " times the offset with "
+         << "points, or set OffsetDistance to at least " << gaps.LargestGap << ".";
+  }
+  text << " Field data NumberOfGaps, LargestGap and LargestGapCenter hold these figures.";
   return text.str();
 }
 

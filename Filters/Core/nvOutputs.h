@@ -72,7 +72,7 @@ struct SummaryArray
 std::vector<SummaryArray> RunSummary(const Reconstruction& run, const RemovedPieces& removed);
 
 /// The warnings a filter gives about its outputs.
-std::string GapWarning(const GapReport& gaps, double offset);
+std::string GapWarning(const GapReport& gaps, double offset, double closingRadius);
 std::string EmptySurfaceWarning(double offset, double spacing);
 std::string NoInnerSheetWarning();
 std::string OneSheetNeedsGridWarning();

@@ -140,6 +140,10 @@ Plan MakePlan(const Settings& chosen, const double bounds[6], const SamplingStat
   {
     error << "OffsetDistance must be a finite value > 0 (or 0: automatic), not " << chosen.OffsetDistance << ".";
   }
+  else if (!std::isfinite(chosen.ClosingRadius) || chosen.ClosingRadius < 0.0)
+  {
+    error << "ClosingRadius must be a finite value > 0 (or 0: automatic), not " << chosen.ClosingRadius << ".";
+  }
   else if (!std::isfinite(chosen.SampleSpacing))
   {
     error << "SampleSpacing must be finite, not " << chosen.SampleSpacing << ".";
@@ -211,6 +215,11 @@ Plan MakePlan(const Settings& chosen, const double bounds[6], const SamplingStat
     return plan;
   }
   plan.TheGrid = MakeGrid(bounds, parameters.Spacing, padding);
+  if (settings.CloseGaps)
+  {
+    plan.ClosingRadius = settings.ClosingRadius > 0.0 ? settings.ClosingRadius
+                                                      : AutomaticClosingRadius * parameters.OffsetDistance;
+  }
   return plan;
 }
 
@@ -342,12 +351,13 @@ bool Reconstruction::RunSteps(std::vector<double> xyz, std::shared_ptr<const Sam
   {
     return this->Fail(this->ThePlan.Error);
   }
-  this->Gaps = this->TheSampling->Gaps(this->ThePlan.Scheme.OffsetDistance, this->Comm, xyz);
   const Grid& grid = this->ThePlan.TheGrid;
   const std::int64_t layers = (grid.Dims[2] + BrickSize - 1) >> BrickShift;
 
-  // 3. This process's slab, and the points within its reach.
+  // 3. This process's slab, and the points within its reach: the band's,
+  // and the gap closing's around it.
   this->Partition(xyz, layers);
+  GapClosing closing(grid, this->ThePlan.Scheme.OffsetDistance, this->ThePlan.ClosingRadius);
 
   // 4. Memory before any allocation that grows with the grid.
   if (!this->CheckMemory(static_cast<double>(grid.NumberOfNodes()), static_cast<double>(xyz.size() / 3)))
@@ -360,7 +370,7 @@ bool Reconstruction::RunSteps(std::vector<double> xyz, std::shared_ptr<const Sam
     for (std::size_t q = 0; q < this->Owners.size(); ++q)
     {
       const Subdomain other = Subdomain::Around(this->Owners[q], layers);
-      const double margin = this->ThePlan.Scheme.Reach() + grid.Spacing;
+      const double margin = this->ThePlan.Scheme.Reach() + grid.Spacing + closing.Reach();
       zRanges[q] = { grid.Origin[2] + other.Computed.Begin * BrickSize * grid.Spacing - margin,
         grid.Origin[2] + (std::min(other.Computed.End * BrickSize, grid.Dims[2]) - 1) * grid.Spacing + margin };
       if (other.Computed.Empty())
@@ -369,6 +379,10 @@ bool Reconstruction::RunSteps(std::vector<double> xyz, std::shared_ptr<const Sam
       }
     }
     xyz = ExchangePoints(*this->Comm, xyz, zRanges);
+  }
+  if (!this->CloseGaps(xyz, closing))
+  {
+    return false;
   }
 
   // 5. Distance (eq. 6, 7) and band (steps 1-3); the dense arrays, if
@@ -499,6 +513,60 @@ bool Reconstruction::ExtractSurface(SurfaceSink& sink) const
 }
 
 //------------------------------------------------------------------------------
+bool Reconstruction::CloseGaps(std::vector<double>& xyz, GapClosing& closing)
+{
+  // Every process bridges the holes among the points it holds (those far
+  // from its slab may come out otherwise, and matter nowhere), and reports
+  // the holes left open seen from the points of its own brick layers.
+  if (this->TheMonitor)
+  {
+    this->TheMonitor->Stage(0.0, 0.15);
+  }
+  const Grid& grid = this->ThePlan.TheGrid;
+  const LayerRange owned = this->Part.Owned;
+  const std::int64_t layers = (grid.Dims[2] + BrickSize - 1) >> BrickShift;
+  std::function<bool(const double*)> owns;
+  if (this->Comm)
+  {
+    owns = [&grid, owned, layers](const double* x) {
+      const std::int64_t k = static_cast<std::int64_t>(std::floor((x[2] - grid.Origin[2]) / grid.Spacing)) >> BrickShift;
+      return owned.Contains(std::min(std::max<std::int64_t>(k, 0), layers - 1));
+    };
+  }
+  const std::size_t given = xyz.size();
+  const bool stopped = !closing.Run(xyz, owns, this->TheMonitor);
+  if (this->Anywhere(stopped))
+  {
+    this->Stopped = true;
+    return false;
+  }
+  std::vector<Hole> holes = closing.OpenHoles();
+  double added = 0.0;
+  for (std::size_t p = given; p < xyz.size(); p += 3)
+  {
+    added += !owns || owns(&xyz[p]) ? 1.0 : 0.0;
+  }
+  if (this->Comm)
+  {
+    std::vector<double> mine;
+    for (const Hole& hole : holes)
+    {
+      mine.insert(mine.end(), { hole.Center[0], hole.Center[1], hole.Center[2], hole.Radius });
+    }
+    const std::vector<double> all =
+      this->Comm->Exchange(std::vector<std::vector<double>>(static_cast<std::size_t>(this->Comm->Size()), mine));
+    holes.clear();
+    for (std::size_t i = 0; i + 3 < all.size(); i += 4)
+    {
+      holes.push_back(Hole{ { { all[i], all[i + 1], all[i + 2] } }, all[i + 3] });
+    }
+    added = this->SumAll(added);
+  }
+  this->Gaps = SummarizeHoles(std::move(holes), this->ThePlan.Scheme.OffsetDistance);
+  this->Added = static_cast<std::int64_t>(added);
+  return true;
+}
+
 void Reconstruction::Partition(const std::vector<double>& xyz, std::int64_t layers)
 {
   // The whole grid, or a slab of brick layers balanced by the number of

@@ -10,7 +10,9 @@
 //      (MakePlan);
 //   3. in a distributed run, the slab of brick layers this process owns
 //      (nvPartition.h), balanced by the points per layer, and the points
-//      within reach of it, moved here from the other processes;
+//      within reach of it, moved here from the other processes; then the
+//      points that bridge the holes of the sampling (nvGapClosing.h), and
+//      the holes left open;
 //   4. the memory budget: the dense output and the per-brick tables before
 //      anything large exists, the band once its size is known;
 //   5. the truncated distance (eq. 6, 7) and the narrow band (steps 1-3),
@@ -26,6 +28,7 @@
 #define nvReconstruction_h
 
 #include "nvAllenCahnSolver.h"
+#include "nvGapClosing.h"
 #include "nvGrid.h"
 #include "nvHalo.h"
 #include "nvNarrowBand.h"
@@ -65,6 +68,9 @@ struct Settings
   Domain Mode = Domain::NarrowBand;
   EdgeStopping EdgeFunction = EdgeStopping::Eq4;
   bool PreserveOffset = false;
+  // The points (nvGapClosing.h).
+  bool CloseGaps = true;      ///< add points inside the holes of the sampling, up to ClosingRadius
+  double ClosingRadius = 0.0; ///< the widest hole bridged (radius, world units); 0: 3 l
   // The outputs (nvOutputs.h).
   bool RemoveSmallPieces = true;    ///< drop loose pieces and tiny voids (nvPieces.h)
   Sheets KeptSheets = Sheets::Both; ///< the phi = 0 sheets the surface keeps
@@ -89,6 +95,8 @@ struct Plan
 {
   Grid TheGrid;
   Parameters Scheme;
+  /// The widest hole the run bridges (radius, world units); 0: none (CloseGaps off).
+  double ClosingRadius = 0.0;
   bool AutomaticOffset = false;
   bool AutomaticSpacing = false;
   std::string Error; ///< why there is no grid; empty when there is one
@@ -152,8 +160,10 @@ public:
   const Grid& GetGrid() const { return this->ThePlan.TheGrid; }
   const Plan& GetPlan() const { return this->ThePlan; }
   const SamplingStatistics& GetSampling() const { return this->TheSampling->Statistics(); }
-  /// The gaps wider than the offset distance (nvSampling.h).
+  /// The holes of the sampling left open (nvGapClosing.h).
   const GapReport& GetGaps() const { return this->Gaps; }
+  /// The points the gap closing added (all processes).
+  std::int64_t AddedPoints() const { return this->Added; }
   const Parameters& GetParameters() const { return this->ThePlan.Scheme; }
   /// The node layers along z of this process's output piece: its owned brick
   /// layers and the first node layer of the next piece, which both share.
@@ -191,6 +201,7 @@ private:
   bool Fail(const std::string& message);
   bool CheckMemory(double gridNodes, double points);
   void Partition(const std::vector<double>& xyz, std::int64_t layers);
+  bool CloseGaps(std::vector<double>& xyz, GapClosing& closing);
 
   Settings TheSettings;
   Communicator* Comm;
@@ -198,6 +209,7 @@ private:
   Plan ThePlan;
   std::shared_ptr<const Sampling> TheSampling;
   GapReport Gaps;
+  std::int64_t Added = 0;
   std::vector<LayerRange> Owners;
   Subdomain Part;
   std::int64_t Piece[2] = { 0, 0 };

@@ -22,6 +22,8 @@
 #ifndef nvSampling_h
 #define nvSampling_h
 
+#include "nvGapClosing.h"
+
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -40,14 +42,6 @@ struct SamplingStatistics
   double MedianSpacing = 0.0;  ///< median distance to the nearest other point
   double WideSpacing = 0.0;    ///< its 99.9th percentile
   bool Valid() const { return this->MedianSpacing > 0.0; }
-};
-
-struct GapReport
-{
-  std::int64_t Gaps = 0;      ///< groups of gap points (closer than 2 l to each other)
-  std::int64_t GapPoints = 0; ///< points whose nearest neighbour is farther than l
-  double LargestGap = 0.0;    ///< the largest such distance
-  std::array<double, 3> LargestGapCenter{ { 0.0, 0.0, 0.0 } }; ///< midpoint of that pair
 };
 
 /**

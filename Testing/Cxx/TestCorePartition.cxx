@@ -289,15 +289,43 @@ struct SurfaceByCoordinates
 /// grid, and its owned nodes have exactly the serial phi. The ranks' pieces
 /// of the surface together are the serial surface: the same triangles, with
 /// the same vertices and normals to the bit (the shared planes' vertices made
-/// on both sides from the same values).
-void TestDistributedRun(int ranks, bool preserve = false)
+/// on both sides from the same values). With `holes`, the sphere has holes
+/// of radius 1.5 l to 4 l at several heights (across the slabs' faces): the
+/// same points are added (nvGapClosing.h) and the same gaps left open.
+void TestDistributedRun(int ranks, bool preserve = false, bool holes = false)
 {
   const double center[3] = { 0.1, -0.2, 0.3 };
-  const std::vector<double> points = nvtest::SpherePoints(800, 0.5, center);
+  std::vector<double> points = nvtest::SpherePoints(holes ? 4000 : 800, 0.5, center);
+  if (holes)
+  {
+    // (direction, radius in units of l = 0.08 / 2)
+    const double caps[][4] = { { 1, 0, 0, 1.5 }, { 0, 0, 1, 2.0 }, { 0, 0, -1, 3.0 }, { 0, 0.6, 0.8, 2.5 },
+      { -0.8, 0, 0.6, 4.0 } };
+    std::vector<double> kept;
+    for (std::size_t p = 0; p < points.size(); p += 3)
+    {
+      bool keep = true;
+      for (const auto& cap : caps)
+      {
+        double d2 = 0.0;
+        for (int a = 0; a < 3; ++a)
+        {
+          const double d = points[p + a] - (center[a] + 0.5 * cap[a]);
+          d2 += d * d;
+        }
+        keep = keep && std::sqrt(d2) > cap[3] * 0.04;
+      }
+      if (keep)
+      {
+        kept.insert(kept.end(), &points[p], &points[p] + 3);
+      }
+    }
+    points = kept;
+  }
   nv::Settings settings;
   settings.PreserveOffset = preserve;
   settings.MaximumNumberOfIterations = preserve ? 10 : settings.MaximumNumberOfIterations;
-  settings.OffsetDistance = 0.08;
+  settings.OffsetDistance = holes ? 0.04 : 0.08;
   settings.MaximumDimension = 60;
   settings.MemoryLimit = 1000.0;
   nv::Reconstruction serial(settings, nullptr, nullptr);
@@ -317,6 +345,7 @@ void TestDistributedRun(int ranks, bool preserve = false)
   std::vector<std::int64_t> owned(static_cast<std::size_t>(ranks), 0);
   std::vector<int> mismatches(static_cast<std::size_t>(ranks), 0);
   std::vector<int> sameGrid(static_cast<std::size_t>(ranks), 0);
+  std::vector<int> sameGaps(static_cast<std::size_t>(ranks), 0);
   std::vector<SurfaceByCoordinates> surfaces(static_cast<std::size_t>(ranks));
   std::vector<std::thread> threads;
   for (int rank = 0; rank < ranks; ++rank)
@@ -351,6 +380,10 @@ void TestDistributedRun(int ranks, bool preserve = false)
       sameGrid[rank] = run.GetGrid().Dims == serial.GetGrid().Dims &&
         run.GetGrid().Origin == serial.GetGrid().Origin && run.GetGrid().Spacing == serial.GetGrid().Spacing &&
         run.NumberOfBandNodes() == serial.NumberOfBandNodes();
+      const nv::GapReport& gaps = run.GetGaps();
+      sameGaps[rank] = run.AddedPoints() == serial.AddedPoints() && gaps.Gaps == serial.GetGaps().Gaps &&
+        gaps.GapPoints == serial.GetGaps().GapPoints && gaps.LargestGap == serial.GetGaps().LargestGap &&
+        gaps.LargestGapCenter == serial.GetGaps().LargestGapCenter;
       for (bool red : { true, false })
       {
         std::int64_t begin, end;
@@ -372,6 +405,7 @@ void TestDistributedRun(int ranks, bool preserve = false)
   for (int rank = 0; rank < ranks; ++rank)
   {
     NV_CHECK(sameGrid[rank]);
+    NV_CHECK(sameGaps[rank]);
     NV_CHECK(mismatches[rank] == 0);
     total += owned[rank];
   }
@@ -383,8 +417,14 @@ void TestDistributedRun(int ranks, bool preserve = false)
     pieces.Triangles.insert(pieces.Triangles.end(), surface.Triangles.begin(), surface.Triangles.end());
   }
   std::sort(pieces.Triangles.begin(), pieces.Triangles.end());
-  std::printf("%d ranks: %zu triangles in the pieces, %zu in the serial surface\n", ranks, pieces.Triangles.size(),
-    serialSurface.Triangles.size());
+  std::printf("%d ranks%s: %zu triangles in the pieces, %zu in the serial surface; %lld points added, %lld gaps "
+              "left\n",
+    ranks, holes ? " (sphere with holes)" : "", pieces.Triangles.size(), serialSurface.Triangles.size(),
+    static_cast<long long>(serial.AddedPoints()), static_cast<long long>(serial.GetGaps().Gaps));
+  if (holes)
+  {
+    NV_CHECK(serial.AddedPoints() > 0 && serial.GetGaps().Gaps == 1);
+  }
   NV_CHECK(serialSurface.Triangles.size() > 1000);
   NV_CHECK(pieces.Triangles == serialSurface.Triangles);
 }
@@ -619,6 +659,7 @@ int main()
   for (int ranks : { 1, 2, 3, 5 })
   {
     TestDistributedRun(ranks);
+    TestDistributedRun(ranks, false, true);
   }
   // PreserveOffset: the same, serial phi on every rank.
   for (int ranks : { 2, 3, 5 })

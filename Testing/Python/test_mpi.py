@@ -27,7 +27,7 @@ import sys
 import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOXML import (vtkXMLImageDataReader, vtkXMLPImageDataReader, vtkXMLPPolyDataReader,
-                                 vtkXMLPolyDataReader)
+                                 vtkXMLPolyDataReader, vtkXMLPolyDataWriter)
 
 import narrowvolume
 import nvtesting
@@ -212,6 +212,60 @@ try:
     server.wait(timeout=60)
 except subprocess.TimeoutExpired:
     server.kill()
+
+# Gap closing (issue 27) under MPI: a sphere of radius 1 sampled 0.6 l apart
+# with holes of radius 1.5 l to 3 l at several heights (some across the
+# faces between slabs), and one of 4 l left open. With 2 and 3 ranks: the
+# serial points added, gaps, surface and phi.
+sphere = nvtesting.sphere_points(5500, radius=1.0)
+for center, radius in (((1.0, 0.0, 0.0), 0.12), ((0.0, 0.0, 1.0), 0.2), ((0.0, 0.0, -1.0), 0.24),
+                       ((0.0, 1.0, 0.0), 0.16), ((-0.7, 0.0, 0.71), 0.2), ((0.0, -0.8, -0.6), 0.32)):
+    sphere = sphere[np.linalg.norm(sphere - np.array(center), axis=1) > radius]
+holey = os.path.join(nvtesting.scratch_folder(prefix="nv-mpi-"), "holey_sphere.vtp")
+writer = vtkXMLPolyDataWriter()
+writer.SetInputData(nvtesting.cloud(sphere))
+writer.SetDataModeToBinary()
+writer.SetFileName(holey)
+writer.Write()
+reader.SetFileName(holey)
+gap_serial, gap_phi, gap_triangles, gap_area = serial_run(False)
+closing_names = ("AddedPoints", "NumberOfGaps", "LargestGap", "LargestGapCenter", "ClosingRadius")
+
+
+def closing_figures(field):
+    return {name: [field.GetArray(name).GetValue(c) for c in range(field.GetArray(name).GetNumberOfValues())]
+            if field.GetArray(name) else None for name in closing_names}
+
+
+gap_figures = closing_figures(gap_serial.GetVolumeOutput().GetFieldData())
+print("holey sphere, serial: %s" % gap_figures)
+t.check(gap_figures["AddedPoints"][0] > 0 and gap_figures["NumberOfGaps"] == [1.0],
+        "holey sphere: points added, the 4 l hole left open")
+for ranks in (2, 3):
+    out = nvtesting.scratch_folder(prefix="nv-mpi-")
+    command = ["mpiexec", "--allow-run-as-root", "--oversubscribe", "-np", str(ranks), "pvbatch",
+               os.path.join(here, "mpi_script.py"), plugin, out, holey, "1", "0"]
+    run = subprocess.run(command, capture_output=True, text=True, timeout=600, env=env)
+    label = "holey sphere, %d ranks" % ranks
+    if not t.check(run.returncode == 0 and os.path.exists(out + "/phi.pvti"), "%s ran: %s" % (
+            label, nvtesting.explain(run))):
+        continue
+    surface_reader = vtkXMLPPolyDataReader()
+    surface_reader.SetFileName(out + "/surface.pvtp")
+    surface_reader.Update()
+    triangles, open_edges, area = nvtesting.merged_surface(surface_reader.GetOutput())
+    volume_reader = vtkXMLPImageDataReader()
+    volume_reader.SetFileName(out + "/phi.pvti")
+    volume_reader.Update()
+    volume = volume_reader.GetOutput()
+    difference = float(np.max(np.abs(vtk_to_numpy(volume.GetPointData().GetArray("phi")) - gap_phi)))
+    figures = closing_figures(volume.GetFieldData())
+    print("%s: %s; %d triangles, %d open edges, max |phi - serial phi| = %.3g" % (
+        label, figures, triangles, open_edges, difference))
+    t.check(figures == gap_figures, "%s: the serial points added and gaps" % label)
+    t.check(open_edges == 0 and triangles == gap_triangles and abs(area - gap_area) <= 1e-6 * gap_area,
+            "%s: the serial surface (%d vs %d triangles)" % (label, triangles, gap_triangles))
+    t.check(difference <= 1e-6, "%s: phi equals the serial phi to the Gauss-Seidel tolerance" % label)
 
 # The example script, as a user runs it: with 2 ranks it writes a .pvti that
 # reads back as the serial .vti (the file as SaveData wrote it).

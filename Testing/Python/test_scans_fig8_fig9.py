@@ -8,6 +8,7 @@ from ../shared/data/scans. Skipped, with a message, when the folder is absent.
   separate pieces); with xi = eps_2 and eps_4 they close into two clean
   sheets (inner and outer, each with the handle's tunnel: Euler
   characteristic 0 each).
+  The points are taken as given (CloseGaps off), as in the paper.
 - Fig. 9, bunny, l = 4h, 200 cells: with a sixth of the points the initial
   surface is wrinkled (rougher than with all points), and eps = eps_12
   smooths it more than eps_6.
@@ -46,6 +47,7 @@ def shell(xyz, cells, offset_cells, **settings):
     f.SetSampleSpacing(h)
     f.SetOffsetDistance(offset_cells * h)
     f.SetRemoveSmallPieces(False)  # the paper's figures show every piece
+    f.SetCloseGaps(False)  # of the points as given (gap closing: test_gap_closing.py)
     for key, value in settings.items():
         getattr(f, "Set" + key)(value)
     f.Update()

@@ -1,0 +1,718 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+// SPDX-License-Identifier: BSD-3-Clause
+#include "nvGapClosing.h"
+
+#include "nvParallel.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+namespace nv
+{
+namespace
+{
+/// Directions of the circles through each point, evenly around it (a
+/// circle's centre lies on its direction).
+constexpr int Directions = 32;
+/// After a hole is found, the rims are measured again down to this share of
+/// l: the wall over a bridged hole keeps sqrt(1 - 0.75^2) = 0.66 of its
+/// half-thickness.
+constexpr double BridgeTarget = 0.75;
+/// Rounds of bridging points; each about halves the empty discs left.
+constexpr int MaximumRounds = 3;
+/// A circle is a hole when the points around it leave no direction gap of
+/// this angle (as seen from its centre): they surround it.
+constexpr double EnclosingGap = 2.0 * 3.14159265358979323846 / 3.0;
+/// The rim of a hole lies around its centre near the tangent plane: the
+/// mean squared sine of its points' elevation above that plane, seen from
+/// the centre, is at most FlatRim (about 18 degrees).
+constexpr double FlatRim = 0.1;
+
+/// The points (relative to the grid's origin) sorted into cubic cells
+/// anchored at the origin, for the searches within a radius.
+class PointCells
+{
+public:
+  PointCells(const Grid& grid, double cellSize, const std::vector<double>& rel)
+    : Points(rel)
+  {
+    // The cells cover the grid's box (every point lies in it); at most
+    // about 2^24 of them, whatever the offset, the same on every process.
+    double extent[3], volume = 1.0;
+    for (int a = 0; a < 3; ++a)
+    {
+      extent[a] = std::max(1.0, static_cast<double>(grid.Dims[a] - 1)) * grid.Spacing;
+      volume *= extent[a];
+    }
+    this->Size = std::max(cellSize, std::cbrt(volume / 16777216.0));
+    std::int64_t cells = 1;
+    for (int a = 0; a < 3; ++a)
+    {
+      this->Dims[a] = static_cast<std::int64_t>(extent[a] / this->Size) + 1;
+      cells *= this->Dims[a];
+    }
+    const std::int64_t n = static_cast<std::int64_t>(rel.size() / 3);
+    std::vector<std::int64_t> cellOf(static_cast<std::size_t>(n));
+    this->Start.assign(static_cast<std::size_t>(cells + 1), 0);
+    for (std::int64_t p = 0; p < n; ++p)
+    {
+      std::int64_t c[3];
+      this->CellOf(&rel[3 * p], c);
+      cellOf[p] = c[0] + this->Dims[0] * (c[1] + this->Dims[1] * c[2]);
+      ++this->Start[cellOf[p] + 1];
+    }
+    std::partial_sum(this->Start.begin(), this->Start.end(), this->Start.begin());
+    std::vector<std::int64_t> next(this->Start.begin(), this->Start.end() - 1);
+    this->Order.resize(static_cast<std::size_t>(n));
+    for (std::int64_t p = 0; p < n; ++p)
+    {
+      this->Order[next[cellOf[p]]++] = p;
+    }
+    // Each cell's points by their coordinates: the searches then visit the
+    // points in an order that does not depend on the order they came in
+    // (distributed runs hold them in another), and every sum over them
+    // comes out the same.
+    const auto before = [&rel](std::int64_t a, std::int64_t b) {
+      return std::lexicographical_compare(&rel[3 * a], &rel[3 * a] + 3, &rel[3 * b], &rel[3 * b] + 3);
+    };
+    ParallelFor(0, cells, 4096, [&](std::int64_t begin, std::int64_t end) {
+      for (std::int64_t c = begin; c < end; ++c)
+      {
+        std::sort(this->Order.begin() + this->Start[c], this->Order.begin() + this->Start[c + 1], before);
+      }
+    });
+  }
+
+  /// Calls fn(q) for every point q within `radius` of the place x.
+  template <typename Fn>
+  void ForEachWithin(const double x[3], double radius, Fn&& fn) const
+  {
+    std::int64_t lo[3], hi[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      lo[a] = std::max<std::int64_t>(0, static_cast<std::int64_t>(std::floor((x[a] - radius) / this->Size)));
+      hi[a] = std::min(this->Dims[a] - 1, static_cast<std::int64_t>(std::floor((x[a] + radius) / this->Size)));
+    }
+    const double r2 = radius * radius;
+    for (std::int64_t k = lo[2]; k <= hi[2]; ++k)
+    {
+      for (std::int64_t j = lo[1]; j <= hi[1]; ++j)
+      {
+        const std::int64_t row = this->Dims[0] * (j + this->Dims[1] * k);
+        for (std::int64_t s = this->Start[row + lo[0]]; s < this->Start[row + hi[0] + 1]; ++s)
+        {
+          const std::int64_t q = this->Order[s];
+          const double* y = &this->Points[3 * q];
+          const double dx = y[0] - x[0], dy = y[1] - x[1], dz = y[2] - x[2];
+          if (dx * dx + dy * dy + dz * dz <= r2)
+          {
+            fn(q);
+          }
+        }
+      }
+    }
+  }
+
+private:
+  void CellOf(const double x[3], std::int64_t c[3]) const
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      c[a] = std::min(this->Dims[a] - 1, std::max<std::int64_t>(0, static_cast<std::int64_t>(x[a] / this->Size)));
+    }
+  }
+
+  const std::vector<double>& Points;
+  double Size = 1.0;
+  std::int64_t Dims[3] = { 1, 1, 1 };
+  std::vector<std::int64_t> Start; ///< points of cell c: Order[Start[c] .. Start[c + 1])
+  std::vector<std::int64_t> Order;
+};
+
+/// Eigenvectors of a symmetric 3x3 matrix (cyclic Jacobi rotations), as the
+/// columns of `vectors`, sorted by ascending eigenvalue.
+void SymmetricEigenvectors(double m[3][3], double vectors[3][3])
+{
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      vectors[i][j] = i == j ? 1.0 : 0.0;
+    }
+  }
+  for (int sweep = 0; sweep < 16; ++sweep)
+  {
+    const double off = m[0][1] * m[0][1] + m[0][2] * m[0][2] + m[1][2] * m[1][2];
+    if (off <= 1e-30 * (m[0][0] * m[0][0] + m[1][1] * m[1][1] + m[2][2] * m[2][2]))
+    {
+      break;
+    }
+    for (int p = 0; p < 2; ++p)
+    {
+      for (int q = p + 1; q < 3; ++q)
+      {
+        if (m[p][q] == 0.0)
+        {
+          continue;
+        }
+        const double theta = (m[q][q] - m[p][p]) / (2.0 * m[p][q]);
+        const double t = (theta >= 0.0 ? 1.0 : -1.0) / (std::fabs(theta) + std::sqrt(theta * theta + 1.0));
+        const double c = 1.0 / std::sqrt(t * t + 1.0), s = t * c;
+        for (int k = 0; k < 3; ++k) // m <- m J
+        {
+          const double a = m[k][p], b = m[k][q];
+          m[k][p] = c * a - s * b;
+          m[k][q] = s * a + c * b;
+        }
+        for (int k = 0; k < 3; ++k) // m <- J^T m
+        {
+          const double a = m[p][k], b = m[q][k];
+          m[p][k] = c * a - s * b;
+          m[q][k] = s * a + c * b;
+        }
+        for (int k = 0; k < 3; ++k)
+        {
+          const double a = vectors[k][p], b = vectors[k][q];
+          vectors[k][p] = c * a - s * b;
+          vectors[k][q] = s * a + c * b;
+        }
+      }
+    }
+  }
+  // Sort the columns by eigenvalue.
+  int order[3] = { 0, 1, 2 };
+  std::sort(order, order + 3, [&](int a, int b) { return m[a][a] < m[b][b] || (m[a][a] == m[b][b] && a < b); });
+  double sorted[3][3];
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      sorted[i][j] = vectors[i][order[j]];
+    }
+  }
+  std::copy(&sorted[0][0], &sorted[0][0] + 9, &vectors[0][0]);
+}
+
+/// The neighbours of p within a radius, as offsets from p, in the cells'
+/// order (the same whatever order the points came in).
+void Neighbours(const PointCells& cells, const std::vector<double>& rel, std::int64_t p, double radius,
+  double tiny, std::vector<std::array<double, 3>>& out)
+{
+  out.clear();
+  const double* x = &rel[3 * p];
+  cells.ForEachWithin(x, radius, [&](std::int64_t q) {
+    const double* y = &rel[3 * q];
+    const std::array<double, 3> v{ { y[0] - x[0], y[1] - x[1], y[2] - x[2] } };
+    if (v[0] * v[0] + v[1] * v[1] + v[2] * v[2] > tiny) // not p, nor a copy of it
+    {
+      out.push_back(v);
+    }
+  });
+}
+
+/// What one point sees: the largest hole through it, if any.
+struct Finding
+{
+  bool Suspect = false; ///< an empty circle wider than the threshold within 2 l
+  bool Found = false;   ///< a hole of radius in (threshold, limit]
+  Hole Disc{};          ///< its centre (relative to the grid's origin) and radius
+};
+
+class HoleFinder
+{
+public:
+  HoleFinder(const PointCells& cells, const std::vector<double>& rel, double offset)
+    : Cells(cells)
+    , Rel(rel)
+    , Offset(offset)
+  {
+    for (int k = 0; k < Directions; ++k)
+    {
+      const double angle = 2.0 * 3.14159265358979323846 * k / Directions;
+      this->Cos[k] = std::cos(angle);
+      this->Sin[k] = std::sin(angle);
+    }
+  }
+
+  /**
+   * The widest hole through point p: the largest circle in the plane with
+   * threshold < radius <= limit that is a hole, whose empty ball (the
+   * distance from its centre to the nearest point, which is less than the
+   * circle's radius on a curved surface) is wider than the threshold; its
+   * radius is the ball's.
+   * With `prefilter`, first the cheap test on the neighbours within 2 l: an
+   * empty circle through p whose radius is below 2 l / 2 = l is bounded by a
+   * neighbour within 2 l, so p with no circle wider than the threshold
+   * among those (threshold <= l) has none at all.
+   */
+  Finding Examine(std::int64_t p, double threshold, double limit, bool prefilter)
+  {
+    Finding finding;
+    const double l = this->Offset;
+    const double tiny = 1e-24 * l * l;
+    Neighbours(this->Cells, this->Rel, p, 2.0 * l, tiny, this->Near);
+    if (this->Near.size() < 3)
+    {
+      return finding; // a lone point or a pair: no surface to speak of
+    }
+    // The tangent plane: the principal directions of p and its neighbours.
+    double mean[3] = { 0.0, 0.0, 0.0 };
+    for (const auto& v : this->Near)
+    {
+      for (int a = 0; a < 3; ++a)
+      {
+        mean[a] += v[a];
+      }
+    }
+    const double n = static_cast<double>(this->Near.size() + 1);
+    for (int a = 0; a < 3; ++a)
+    {
+      mean[a] /= n;
+    }
+    double covariance[3][3] = { { 0.0 } };
+    auto add = [&](const double v[3]) {
+      for (int a = 0; a < 3; ++a)
+      {
+        for (int b = 0; b < 3; ++b)
+        {
+          covariance[a][b] += (v[a] - mean[a]) * (v[b] - mean[b]);
+        }
+      }
+    };
+    const double origin[3] = { 0.0, 0.0, 0.0 };
+    add(origin);
+    for (const auto& v : this->Near)
+    {
+      add(v.data());
+    }
+    double axes[3][3];
+    SymmetricEigenvectors(covariance, axes);
+    for (int a = 0; a < 3; ++a)
+    {
+      this->Normal[a] = axes[a][0];
+      this->Tangent[0][a] = axes[a][2];
+      this->Tangent[1][a] = axes[a][1];
+    }
+
+    if (prefilter)
+    {
+      double widest[Directions];
+      this->Radii(this->Near, widest);
+      finding.Suspect = *std::max_element(widest, widest + Directions) > threshold;
+      if (!finding.Suspect)
+      {
+        return finding;
+      }
+    }
+    finding.Suspect = true;
+
+    // The neighbours that a circle up to `limit` and its ring can reach: not
+    // those far off the plane (the other side of a thin part), which would
+    // hide a hole on this side.
+    Neighbours(this->Cells, this->Rel, p, 2.0 * limit + l, tiny, this->Wide);
+    this->Plane.clear();
+    for (const auto& v : this->Wide)
+    {
+      const double u = v[0] * this->Tangent[0][0] + v[1] * this->Tangent[0][1] + v[2] * this->Tangent[0][2];
+      const double w = v[0] * this->Tangent[1][0] + v[1] * this->Tangent[1][1] + v[2] * this->Tangent[1][2];
+      const double h = v[0] * this->Normal[0] + v[1] * this->Normal[1] + v[2] * this->Normal[2];
+      const double along = std::sqrt(u * u + w * w);
+      if (std::fabs(h) <= std::max(l, 0.5 * along))
+      {
+        this->Plane.push_back({ { along, u, w, h } });
+      }
+    }
+    // Nearest first (in the plane), so that the searches below stop early.
+    std::sort(this->Plane.begin(), this->Plane.end());
+    double radius[Directions];
+    this->PlaneRadii(limit, radius);
+    int candidates[Directions];
+    int count = 0;
+    for (int k = 0; k < Directions; ++k)
+    {
+      if (radius[k] > threshold && radius[k] <= limit)
+      {
+        candidates[count++] = k;
+      }
+    }
+    std::sort(candidates, candidates + count,
+      [&](int a, int b) { return radius[a] > radius[b] || (radius[a] == radius[b] && a < b); });
+    for (int c = 0; c < count; ++c)
+    {
+      const int k = candidates[c];
+      const double t = radius[k];
+      const double center[2] = { t * this->Cos[k], t * this->Sin[k] };
+      double height = 0.0;
+      if (!this->Enclosed(center, t, height))
+      {
+        continue;
+      }
+      // The disc's centre in space, and its distance to the nearest point:
+      // the shell leaves a tunnel there only if that distance exceeds l (a
+      // circle in the plane may be covered by points off it, on a curved or
+      // thin part).
+      double offset[3];
+      for (int a = 0; a < 3; ++a)
+      {
+        offset[a] = center[0] * this->Tangent[0][a] + center[1] * this->Tangent[1][a] + height * this->Normal[a];
+      }
+      double empty = offset[0] * offset[0] + offset[1] * offset[1] + offset[2] * offset[2]; // to p
+      for (const auto& v : this->Wide)
+      {
+        const double dx = v[0] - offset[0], dy = v[1] - offset[1], dz = v[2] - offset[2];
+        empty = std::min(empty, dx * dx + dy * dy + dz * dz);
+      }
+      empty = std::sqrt(empty);
+      if (empty > threshold && this->Flat(offset, empty))
+      {
+        finding.Found = true;
+        const double* x = &this->Rel[3 * p];
+        for (int a = 0; a < 3; ++a)
+        {
+          finding.Disc.Center[a] = x[a] + offset[a];
+        }
+        finding.Disc.Radius = empty;
+        break;
+      }
+    }
+    return finding;
+  }
+
+private:
+  /// Per direction, the radius of the largest empty circle through p
+  /// bounded by the neighbour at (u, w) in the plane: |v|^2 / (2 v.u).
+  void Bound(double u, double w, double radius[Directions]) const
+  {
+    const double squared = u * u + w * w;
+    for (int k = 0; k < Directions; ++k)
+    {
+      const double along = u * this->Cos[k] + w * this->Sin[k];
+      if (along > 0.0)
+      {
+        radius[k] = std::min(radius[k], squared / (2.0 * along));
+      }
+    }
+  }
+
+  /// Per direction, the radius of the largest empty circle through p among
+  /// the neighbours within 2 l (+infinity where none bounds it).
+  void Radii(const std::vector<std::array<double, 3>>& points, double radius[Directions]) const
+  {
+    std::fill(radius, radius + Directions, std::numeric_limits<double>::infinity());
+    for (const auto& v : points)
+    {
+      this->Bound(v[0] * this->Tangent[0][0] + v[1] * this->Tangent[0][1] + v[2] * this->Tangent[0][2],
+        v[0] * this->Tangent[1][0] + v[1] * this->Tangent[1][1] + v[2] * this->Tangent[1][2], radius);
+    }
+  }
+
+  /// The same among the points in the plane, exact up to `limit` (a larger
+  /// radius only says so): a neighbour at distance |v| bounds no circle
+  /// below |v| / 2, so the nearest-first scan stops there.
+  void PlaneRadii(double limit, double radius[Directions]) const
+  {
+    std::fill(radius, radius + Directions, std::numeric_limits<double>::infinity());
+    double widest = limit;
+    for (const auto& v : this->Plane)
+    {
+      if (0.5 * v[0] > widest)
+      {
+        break;
+      }
+      this->Bound(v[1], v[2], radius);
+      widest = std::min(limit, *std::max_element(radius, radius + Directions));
+    }
+  }
+
+  /// Whether the points around an empty ball (centre `center` relative to
+  /// p, radius `empty`), those within empty + l of its centre, lie around it
+  /// as a hole's rim in the surface does: in directions from the centre
+  /// near p's tangent plane; not around a crevice between thin parts (toes,
+  /// fingers), where they lie on all sides, nor between two facing sheets,
+  /// where they lie above and below.
+  bool Flat(const double center[3], double empty) const
+  {
+    const double reach = empty + this->Offset;
+    double elevation = 0.0; // sum of sin^2 of the directions' elevation
+    double count = 0.0;
+    auto add = [&](const double w[3]) {
+      const double d2 = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
+      if (d2 <= reach * reach && d2 > 0.0)
+      {
+        const double up = w[0] * this->Normal[0] + w[1] * this->Normal[1] + w[2] * this->Normal[2];
+        elevation += up * up / d2;
+        count += 1.0;
+      }
+    };
+    const double toP[3] = { -center[0], -center[1], -center[2] };
+    add(toP);
+    for (const auto& v : this->Wide)
+    {
+      const double w[3] = { v[0] - center[0], v[1] - center[1], v[2] - center[2] };
+      add(w);
+    }
+    return elevation <= FlatRim * count;
+  }
+
+  /// Whether the points within t + l of the centre surround it; `height`:
+  /// the mean height above the plane of the rim (p and the points within
+  /// t + l / 2 of the centre).
+  bool Enclosed(const double center[2], double t, double& height)
+  {
+    const double ring = t + this->Offset;
+    const double rim = t + 0.5 * this->Offset;
+    this->Angles.clear();
+    double sum = 0.0;
+    int rimPoints = 1; // p itself, at height 0
+    this->Angles.push_back(std::atan2(-center[1], -center[0]));
+    for (const auto& v : this->Plane)
+    {
+      if (v[0] > t + ring) // beyond the ring, as all that follow
+      {
+        break;
+      }
+      const double du = v[1] - center[0], dw = v[2] - center[1];
+      const double d = std::sqrt(du * du + dw * dw);
+      if (d <= ring)
+      {
+        this->Angles.push_back(std::atan2(dw, du));
+      }
+      if (d <= rim)
+      {
+        sum += v[3];
+        ++rimPoints;
+      }
+    }
+    std::sort(this->Angles.begin(), this->Angles.end());
+    double gap = this->Angles.front() + 2.0 * 3.14159265358979323846 - this->Angles.back();
+    for (std::size_t i = 1; i < this->Angles.size(); ++i)
+    {
+      gap = std::max(gap, this->Angles[i] - this->Angles[i - 1]);
+    }
+    height = sum / rimPoints;
+    return gap < EnclosingGap;
+  }
+
+  const PointCells& Cells;
+  const std::vector<double>& Rel;
+  double Offset;
+  double Cos[Directions], Sin[Directions];
+  double Normal[3], Tangent[2][3];
+  std::vector<std::array<double, 3>> Near, Wide;
+  std::vector<std::array<double, 4>> Plane; ///< distance in the plane, u, w, height
+  std::vector<double> Angles;
+};
+
+/// Looks at points [0, n) (or only those marked in `look`) for holes
+/// (HoleFinder::Examine); false if the monitor stopped it.
+bool FindHoles(const Grid& grid, const std::vector<double>& rel, double offset, double threshold, double limit,
+  const std::vector<char>* look, bool prefilter, std::vector<Finding>& findings, Monitor* monitor)
+{
+  const PointCells cells(grid, 2.0 * offset, rel);
+  const std::int64_t n = static_cast<std::int64_t>(rel.size() / 3);
+  findings.assign(static_cast<std::size_t>(n), Finding{});
+  return MonitoredFor(0, n, 256, monitor, [&](std::int64_t begin, std::int64_t end) {
+    HoleFinder finder(cells, rel, offset);
+    for (std::int64_t p = begin; p < end; ++p)
+    {
+      if (!look || (*look)[p])
+      {
+        findings[p] = finder.Examine(p, threshold, limit, prefilter);
+      }
+    }
+  });
+}
+} // namespace
+
+GapClosing::GapClosing(const Grid& grid, double offset, double radius)
+  : GridNodes(grid)
+  , Offset(offset)
+  , Radius(radius > offset ? radius : 0.0)
+  , Measured(2.0 * (radius > offset ? radius : AutomaticClosingRadius * offset))
+{
+}
+
+double GapClosing::Reach() const
+{
+  // Every pass decides a point's hole from the points within 2 M + l (M:
+  // the measured radius), and a round places its point within M + l: per
+  // round, 3 M + 2 l further; then the final measurement.
+  const double l = this->Offset;
+  const double rounds = this->Radius > 0.0 ? MaximumRounds * (3.0 * this->Measured + 2.0 * l) : 0.0;
+  return rounds + 2.0 * this->Measured + l;
+}
+
+bool GapClosing::Run(std::vector<double>& xyz, const std::function<bool(const double*)>& owned, Monitor* monitor)
+{
+  const double l = this->Offset;
+  const std::array<double, 3>& origin = this->GridNodes.Origin;
+  std::vector<double> rel(xyz.size());
+  for (std::size_t i = 0; i < xyz.size(); ++i)
+  {
+    rel[i] = xyz[i] - origin[i % 3];
+  }
+  const std::int64_t given = static_cast<std::int64_t>(xyz.size() / 3);
+  std::vector<Finding> findings;
+  // Points that can border a hole: those with an empty circle wider than l
+  // within 2 l (adding points only shrinks the circles), and the added ones.
+  std::vector<char> look;
+  for (int round = 0; this->Radius > 0.0 && round < MaximumRounds; ++round)
+  {
+    const bool first = round == 0;
+    if (!FindHoles(this->GridNodes, rel, l, first ? l : BridgeTarget * l, this->Measured, first ? nullptr : &look,
+          first, findings, monitor))
+    {
+      return false;
+    }
+    if (first)
+    {
+      look.resize(findings.size());
+      for (std::size_t p = 0; p < findings.size(); ++p)
+      {
+        look[p] = findings[p].Suspect;
+      }
+    }
+    for (Finding& f : findings) // wider holes are left open
+    {
+      f.Found = f.Found && f.Disc.Radius <= this->Radius;
+    }
+    // One new point per cell of l / 2 (the rim's points find nearly the same
+    // centre): the widest disc's, the lowest centre on ties.
+    struct Proposal
+    {
+      std::array<std::int64_t, 3> Cell;
+      double Radius;
+      std::array<double, 3> Center;
+      bool operator<(const Proposal& o) const
+      {
+        if (this->Cell != o.Cell)
+        {
+          return this->Cell < o.Cell;
+        }
+        if (this->Radius != o.Radius)
+        {
+          return this->Radius > o.Radius;
+        }
+        return this->Center < o.Center;
+      }
+    };
+    std::vector<Proposal> proposals;
+    for (const Finding& f : findings)
+    {
+      if (f.Found)
+      {
+        Proposal proposal{ {}, f.Disc.Radius, f.Disc.Center };
+        for (int a = 0; a < 3; ++a)
+        {
+          proposal.Cell[a] = static_cast<std::int64_t>(std::floor(f.Disc.Center[a] / (0.5 * l)));
+        }
+        proposals.push_back(proposal);
+      }
+    }
+    if (proposals.empty())
+    {
+      break;
+    }
+    std::sort(proposals.begin(), proposals.end());
+    for (std::size_t i = 0; i < proposals.size(); ++i)
+    {
+      if (i == 0 || proposals[i].Cell != proposals[i - 1].Cell)
+      {
+        rel.insert(rel.end(), proposals[i].Center.begin(), proposals[i].Center.end());
+        look.push_back(1);
+      }
+    }
+  }
+
+  // The holes left open: every disc wider than l up to the measured radius.
+  const bool bridged = this->Radius > 0.0;
+  if (!FindHoles(this->GridNodes, rel, l, l, this->Measured, bridged ? &look : nullptr, !bridged, findings, monitor))
+  {
+    return false;
+  }
+  this->Open.clear();
+  const std::int64_t all = static_cast<std::int64_t>(rel.size() / 3);
+  for (std::int64_t p = 0; p < all; ++p)
+  {
+    if (!findings[p].Found)
+    {
+      continue;
+    }
+    double x[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      x[a] = origin[a] + rel[3 * p + a];
+    }
+    if (!owned || owned(x))
+    {
+      Hole hole = findings[p].Disc;
+      for (int a = 0; a < 3; ++a)
+      {
+        hole.Center[a] += origin[a];
+      }
+      this->Open.push_back(hole);
+    }
+  }
+  this->Added = all - given;
+  for (std::size_t i = xyz.size(); i < rel.size(); ++i)
+  {
+    xyz.push_back(origin[i % 3] + rel[i]);
+  }
+  return true;
+}
+
+GapReport SummarizeHoles(std::vector<Hole> holes, double offset)
+{
+  // Group the circles whose centres lie within 2 l of each other (one hole,
+  // seen from its rim's points): union-find over the pairs, found by sorting
+  // the centres along x.
+  GapReport report;
+  std::sort(holes.begin(), holes.end(), [](const Hole& a, const Hole& b) {
+    return a.Center < b.Center || (a.Center == b.Center && a.Radius < b.Radius);
+  });
+  const std::size_t n = holes.size();
+  std::vector<std::size_t> parent(n);
+  std::iota(parent.begin(), parent.end(), std::size_t(0));
+  auto root = [&](std::size_t i) {
+    while (parent[i] != i)
+    {
+      i = parent[i] = parent[parent[i]];
+    }
+    return i;
+  };
+  const double reach = 2.0 * offset;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    for (std::size_t j = i + 1; j < n && holes[j].Center[0] - holes[i].Center[0] <= reach; ++j)
+    {
+      double d2 = 0.0;
+      for (int a = 0; a < 3; ++a)
+      {
+        const double d = holes[j].Center[a] - holes[i].Center[a];
+        d2 += d * d;
+      }
+      if (d2 <= reach * reach)
+      {
+        parent[root(i)] = root(j);
+      }
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    if (root(i) == i)
+    {
+      ++report.Gaps;
+    }
+    if (holes[i].Radius > report.LargestGap)
+    {
+      report.LargestGap = holes[i].Radius;
+      report.LargestGapCenter = holes[i].Center;
+    }
+  }
+  report.GapPoints = static_cast<std::int64_t>(n);
+  return report;
+}
+
+} // namespace nv

@@ -1,0 +1,66 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+# SPDX-License-Identifier: BSD-3-Clause
+"""Benchmark: what gap closing (CloseGaps, nvGapClosing.h) costs on the scans,
+with nothing else set (the first Apply), the surface only (OutputVolume off).
+
+    PYTHONPATH=build/lib/python3.11/dist-packages \\
+        pvpython benchmarks/gap_closing.py [--repeat 5] [--scans DIR]
+
+Runs Update() with CloseGaps off and on in turn, in one process, and prints a
+Markdown table: per scan the points added, the gaps reported without and with
+closing, the median Update() of each and their ratio (the medians of the
+pairs' ratios).
+"""
+import argparse
+import os
+import statistics
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+SCANS = ("armadillo", "armadillo_decimated", "dragon", "teapot", "teacup", "bunny", "demosthenes",
+         "bunny_rangescan_bun000")
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--repeat", type=int, default=5)
+    parser.add_argument("--scans", default=os.path.join(HERE, "..", "..", "shared", "data", "scans"))
+    args = parser.parse_args()
+    if not os.path.isfile(os.path.join(args.scans, "armadillo.ply")):
+        print("skipped: no scans in %s (they are read from ../shared)" % args.scans)
+        return 0
+
+    from vtkmodules.vtkIOPLY import vtkPLYReader
+    from narrowvolume import vtkNarrowVolumeReconstruction
+
+    print("| scan | points | points added | gaps without / with | Update() without (s) | with (s) | ratio |")
+    print("|---|---|---|---|---|---|---|")
+    for name in SCANS:
+        reader = vtkPLYReader()
+        reader.SetFileName(os.path.join(args.scans, name + ".ply"))
+        reader.Update()
+        cloud = reader.GetOutput()
+        times = {False: [], True: []}
+        figures = {}
+        for _ in range(args.repeat):
+            for close in (False, True):
+                f = vtkNarrowVolumeReconstruction()
+                f.SetInputData(cloud)
+                f.SetOutputVolume(False)
+                f.SetCloseGaps(close)
+                f.GlobalWarningDisplayOff()
+                start = time.perf_counter()
+                f.Update()
+                times[close].append(time.perf_counter() - start)
+                field = f.GetOutput(0).GetFieldData()
+                figures[close] = (field.GetArray("AddedPoints").GetValue(0), field.GetArray("NumberOfGaps").GetValue(0))
+        ratios = [b / a for a, b in zip(times[False], times[True])]
+        print("| %s | %d | %d | %d / %d | %.3f | %.3f | %.2f |" % (
+            name, cloud.GetNumberOfPoints(), figures[True][0], figures[False][1], figures[True][1],
+            statistics.median(times[False]), statistics.median(times[True]), statistics.median(ratios)))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
