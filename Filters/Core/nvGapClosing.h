@@ -19,13 +19,19 @@
 //    t <= |v|^2 / (2 v.u) for every neighbour projected to v with v.u > 0;
 //  - such a circle is a hole when the points around it (within t + l of its
 //    centre) surround the centre (their directions from it leave no gap of
-//    pi or more); otherwise it opens onto an edge of the surface (a scan's
-//    border, the mouth of a cup) and is left alone.
+//    2 pi / 3 or more), when, lifted to the mean height of its rim, its
+//    centre is farther than l from every point (the shell is pierced there:
+//    on a curved or thin part points off the plane may cover it), and when
+//    the points around that empty ball lie in directions near the tangent
+//    plane (a hole's rim in the surface, not a crevice between toes or two
+//    facing sheets, which the shell fills as it should); an open circle
+//    belongs to an edge of the surface (a scan's border, the mouth of a cup)
+//    and is left alone. Its radius is the empty ball's.
 //
 // Bridging: the centre of each hole of radius in (l, ClosingRadius] becomes a
-// new point, at the mean height of the hole's rim above the plane (so that
-// it lies on a curved surface too), and the rims are measured again with the
-// target 3/4 l, at most MaximumRounds times. Where a hole is bridged, no
+// new point (so that it lies on a curved surface too), and the rims are
+// measured again with the target 3/4 l, at most three times (each round
+// about halves the discs left). Where a hole is bridged, no
 // empty disc is wider than 3/4 l: the wall over it is at least
 // sqrt(1 - 0.75^2) l = 0.66 l on each side of the surface, against l where
 // the sampling is dense. Holes wider than ClosingRadius are left open and
