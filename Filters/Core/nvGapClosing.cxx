@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <numeric>
 
 namespace nv
@@ -39,14 +40,14 @@ public:
     : Points(rel)
   {
     // The cells cover the grid's box (every point lies in it); at most
-    // about 2^24 of them, whatever the offset, the same on every process.
+    // about 2^22 of them, whatever the offset, the same on every process.
     double extent[3], volume = 1.0;
     for (int a = 0; a < 3; ++a)
     {
       extent[a] = std::max(1.0, static_cast<double>(grid.Dims[a] - 1)) * grid.Spacing;
       volume *= extent[a];
     }
-    this->Size = std::max(cellSize, std::cbrt(volume / 16777216.0));
+    this->Size = std::max(cellSize, std::cbrt(volume / 4194304.0));
     std::int64_t cells = 1;
     for (int a = 0; a < 3; ++a)
     {
@@ -505,24 +506,47 @@ private:
   std::vector<double> Angles;
 };
 
+/// The holes found, each with the point that sees it, in ascending point order.
+using Found = std::vector<std::pair<std::int64_t, Hole>>;
+
 /// Looks at points [0, n) (or only those marked in `look`) for holes
-/// (HoleFinder::Examine); false if the monitor stopped it.
+/// (HoleFinder::Examine); with `suspects`, first the cheap test of each
+/// point, whose outcome it gets. False if the monitor stopped it.
 bool FindHoles(const Grid& grid, const std::vector<double>& rel, double offset, double threshold, double limit,
-  const std::vector<char>* look, bool prefilter, std::vector<Finding>& findings, Monitor* monitor)
+  const std::vector<char>* look, std::vector<char>* suspects, Found& found, Monitor* monitor)
 {
   const PointCells cells(grid, 2.0 * offset, rel);
   const std::int64_t n = static_cast<std::int64_t>(rel.size() / 3);
-  findings.assign(static_cast<std::size_t>(n), Finding{});
-  return MonitoredFor(0, n, 256, monitor, [&](std::int64_t begin, std::int64_t end) {
+  if (suspects)
+  {
+    suspects->assign(static_cast<std::size_t>(n), 0);
+  }
+  found.clear();
+  std::mutex lock;
+  const bool done = MonitoredFor(0, n, 256, monitor, [&](std::int64_t begin, std::int64_t end) {
     HoleFinder finder(cells, rel, offset);
+    Found mine;
     for (std::int64_t p = begin; p < end; ++p)
     {
       if (!look || (*look)[p])
       {
-        findings[p] = finder.Examine(p, threshold, limit, prefilter);
+        const Finding finding = finder.Examine(p, threshold, limit, suspects != nullptr);
+        if (suspects)
+        {
+          (*suspects)[p] = finding.Suspect;
+        }
+        if (finding.Found)
+        {
+          mine.emplace_back(p, finding.Disc);
+        }
       }
     }
+    const std::lock_guard<std::mutex> guard(lock);
+    found.insert(found.end(), mine.begin(), mine.end());
   });
+  std::sort(found.begin(), found.end(),
+    [](const Found::value_type& a, const Found::value_type& b) { return a.first < b.first; });
+  return done;
 }
 } // namespace
 
@@ -554,7 +578,7 @@ bool GapClosing::Run(std::vector<double>& xyz, const std::function<bool(const do
     rel[i] = xyz[i] - origin[i % 3];
   }
   const std::int64_t given = static_cast<std::int64_t>(xyz.size() / 3);
-  std::vector<Finding> findings;
+  Found found;
   // Points that can border a hole: those with an empty circle wider than l
   // within 2 l (adding points only shrinks the circles), and the added ones.
   std::vector<char> look;
@@ -562,21 +586,9 @@ bool GapClosing::Run(std::vector<double>& xyz, const std::function<bool(const do
   {
     const bool first = round == 0;
     if (!FindHoles(this->GridNodes, rel, l, first ? l : BridgeTarget * l, this->Measured, first ? nullptr : &look,
-          first, findings, monitor))
+          first ? &look : nullptr, found, monitor))
     {
       return false;
-    }
-    if (first)
-    {
-      look.resize(findings.size());
-      for (std::size_t p = 0; p < findings.size(); ++p)
-      {
-        look[p] = findings[p].Suspect;
-      }
-    }
-    for (Finding& f : findings) // wider holes are left open
-    {
-      f.Found = f.Found && f.Disc.Radius <= this->Radius;
     }
     // One new point per cell of l / 2 (the rim's points find nearly the same
     // centre): the widest disc's, the lowest centre on ties.
@@ -599,14 +611,14 @@ bool GapClosing::Run(std::vector<double>& xyz, const std::function<bool(const do
       }
     };
     std::vector<Proposal> proposals;
-    for (const Finding& f : findings)
+    for (const auto& f : found)
     {
-      if (f.Found)
+      if (f.second.Radius <= this->Radius) // wider holes are left open
       {
-        Proposal proposal{ {}, f.Disc.Radius, f.Disc.Center };
+        Proposal proposal{ {}, f.second.Radius, f.second.Center };
         for (int a = 0; a < 3; ++a)
         {
-          proposal.Cell[a] = static_cast<std::int64_t>(std::floor(f.Disc.Center[a] / (0.5 * l)));
+          proposal.Cell[a] = static_cast<std::int64_t>(std::floor(f.second.Center[a] / (0.5 * l)));
         }
         proposals.push_back(proposal);
       }
@@ -628,26 +640,23 @@ bool GapClosing::Run(std::vector<double>& xyz, const std::function<bool(const do
 
   // The holes left open: every disc wider than l up to the measured radius.
   const bool bridged = this->Radius > 0.0;
-  if (!FindHoles(this->GridNodes, rel, l, l, this->Measured, bridged ? &look : nullptr, !bridged, findings, monitor))
+  if (!FindHoles(this->GridNodes, rel, l, l, this->Measured, bridged ? &look : nullptr, bridged ? nullptr : &look,
+        found, monitor))
   {
     return false;
   }
   this->Open.clear();
   const std::int64_t all = static_cast<std::int64_t>(rel.size() / 3);
-  for (std::int64_t p = 0; p < all; ++p)
+  for (const auto& f : found)
   {
-    if (!findings[p].Found)
-    {
-      continue;
-    }
     double x[3];
     for (int a = 0; a < 3; ++a)
     {
-      x[a] = origin[a] + rel[3 * p + a];
+      x[a] = origin[a] + rel[3 * f.first + a];
     }
     if (!owned || owned(x))
     {
-      Hole hole = findings[p].Disc;
+      Hole hole = f.second;
       for (int a = 0; a < 3; ++a)
       {
         hole.Center[a] += origin[a];
