@@ -21,6 +21,8 @@ constexpr int Directions = 32;
 /// l: the wall over a bridged hole keeps sqrt(1 - 0.75^2) = 0.66 of its
 /// half-thickness.
 constexpr double BridgeTarget = 0.75;
+/// The holes are looked for among one point per cube of this side (in l).
+constexpr double ThinCells = 0.5;
 /// Rounds of bridging points; each about halves the empty discs left.
 constexpr int MaximumRounds = 3;
 /// A circle is a hole when the points around it leave no direction gap of
@@ -36,7 +38,8 @@ constexpr double FlatRim = 0.1;
 class PointCells
 {
 public:
-  PointCells(const Grid& grid, double cellSize, const std::vector<double>& rel)
+  /// canonical: each cell's points sorted by their coordinates (below).
+  PointCells(const Grid& grid, double cellSize, const std::vector<double>& rel, bool canonical = true)
     : Points(rel)
   {
     // The cells cover the grid's box (every point lies in it); at most
@@ -75,6 +78,10 @@ public:
     // points in an order that does not depend on the order they came in
     // (distributed runs hold them in another), and every sum over them
     // comes out the same.
+    if (!canonical)
+    {
+      return;
+    }
     const auto before = [&rel](std::int64_t a, std::int64_t b) {
       return std::lexicographical_compare(&rel[3 * a], &rel[3 * a] + 3, &rel[3 * b], &rel[3 * b] + 3);
     };
@@ -224,9 +231,14 @@ struct Finding
 class HoleFinder
 {
 public:
-  HoleFinder(const PointCells& cells, const std::vector<double>& rel, double offset)
+  /// cells, rel: the points looked at (the thinned cloud); all, allRel:
+  /// every point, for the empty balls.
+  HoleFinder(const PointCells& cells, const std::vector<double>& rel, const PointCells& all,
+    const std::vector<double>& allRel, double offset)
     : Cells(cells)
     , Rel(rel)
+    , All(all)
+    , AllRel(allRel)
     , Offset(offset)
   {
     for (int k = 0; k < Directions; ++k)
@@ -366,13 +378,25 @@ public:
         empty = std::min(empty, dx * dx + dy * dy + dz * dz);
       }
       empty = std::sqrt(empty);
+      const double* x = &this->Rel[3 * p];
+      const double centre[3] = { x[0] + offset[0], x[1] + offset[1], x[2] + offset[2] };
+      if (empty > threshold)
+      {
+        // The points the thinning left out, within that ball.
+        double nearest = empty * empty;
+        this->All.ForEachWithin(centre, empty, [&](std::int64_t q) {
+          const double* y = &this->AllRel[3 * q];
+          const double dx = y[0] - centre[0], dy = y[1] - centre[1], dz = y[2] - centre[2];
+          nearest = std::min(nearest, dx * dx + dy * dy + dz * dz);
+        });
+        empty = std::sqrt(nearest);
+      }
       if (empty > threshold && this->Flat(offset, empty))
       {
         finding.Found = true;
-        const double* x = &this->Rel[3 * p];
         for (int a = 0; a < 3; ++a)
         {
-          finding.Disc.Center[a] = x[a] + offset[a];
+          finding.Disc.Center[a] = centre[a];
         }
         finding.Disc.Radius = empty;
         break;
@@ -498,6 +522,8 @@ private:
 
   const PointCells& Cells;
   const std::vector<double>& Rel;
+  const PointCells& All;
+  const std::vector<double>& AllRel;
   double Offset;
   double Cos[Directions], Sin[Directions];
   double Normal[3], Tangent[2][3];
@@ -506,16 +532,64 @@ private:
   std::vector<double> Angles;
 };
 
+/// One point per cube of side `size` anchored at the grid's origin (the
+/// one with the lowest coordinates, whatever order the points came in): the
+/// cloud the holes are looked for in. A dense cloud has thousands of points
+/// within 2 l of each; one per l / 4 keeps the empty discs near l and wider
+/// (no point lies farther than sqrt(3) l / 4 from the one kept in its cube).
+std::vector<double> Thin(const Grid& grid, const std::vector<double>& rel, double size)
+{
+  std::int64_t dims[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    dims[a] = static_cast<std::int64_t>(static_cast<double>(grid.Dims[a]) * grid.Spacing / size) + 2;
+  }
+  const std::int64_t n = static_cast<std::int64_t>(rel.size() / 3);
+  std::vector<std::pair<std::int64_t, std::int64_t>> keyed(static_cast<std::size_t>(n));
+  ParallelFor(0, n, 4096, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t p = begin; p < end; ++p)
+    {
+      std::int64_t c[3];
+      for (int a = 0; a < 3; ++a)
+      {
+        c[a] = std::min(dims[a] - 1, std::max<std::int64_t>(0, static_cast<std::int64_t>(rel[3 * p + a] / size)));
+      }
+      keyed[p] = { c[0] + dims[0] * (c[1] + dims[1] * c[2]), p };
+    }
+  });
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<double> thin;
+  for (std::size_t i = 0; i < keyed.size();)
+  {
+    // The cube's point with the lowest coordinates.
+    const double* kept = &rel[3 * keyed[i].second];
+    std::size_t j = i + 1;
+    for (; j < keyed.size() && keyed[j].first == keyed[i].first; ++j)
+    {
+      const double* other = &rel[3 * keyed[j].second];
+      if (std::lexicographical_compare(other, other + 3, kept, kept + 3))
+      {
+        kept = other;
+      }
+    }
+    thin.insert(thin.end(), kept, kept + 3);
+    i = j;
+  }
+  return thin;
+}
+
 /// The holes found, each with the point that sees it, in ascending point order.
 using Found = std::vector<std::pair<std::int64_t, Hole>>;
 
 /// Looks at points [0, n) (or only those marked in `look`) for holes
 /// (HoleFinder::Examine); with `suspects`, first the cheap test of each
 /// point, whose outcome it gets. False if the monitor stopped it.
-bool FindHoles(const Grid& grid, const std::vector<double>& rel, double offset, double threshold, double limit,
-  const std::vector<char>* look, std::vector<char>* suspects, Found& found, Monitor* monitor)
+bool FindHoles(const Grid& grid, const std::vector<double>& rel, const std::vector<double>& allRel, double offset,
+  double threshold, double limit, const std::vector<char>* look, std::vector<char>* suspects, Found& found,
+  Monitor* monitor)
 {
   const PointCells cells(grid, 2.0 * offset, rel);
+  const PointCells all(grid, 0.5 * offset, allRel, false); // for minima only
   const std::int64_t n = static_cast<std::int64_t>(rel.size() / 3);
   if (suspects)
   {
@@ -524,7 +598,7 @@ bool FindHoles(const Grid& grid, const std::vector<double>& rel, double offset, 
   found.clear();
   std::mutex lock;
   const bool done = MonitoredFor(0, n, 256, monitor, [&](std::int64_t begin, std::int64_t end) {
-    HoleFinder finder(cells, rel, offset);
+    HoleFinder finder(cells, rel, all, allRel, offset);
     Found mine;
     for (std::int64_t p = begin; p < end; ++p)
     {
@@ -578,6 +652,7 @@ bool GapClosing::Run(std::vector<double>& xyz, const std::function<bool(const do
     rel[i] = xyz[i] - origin[i % 3];
   }
   const std::int64_t given = static_cast<std::int64_t>(xyz.size() / 3);
+  std::vector<double> thin = Thin(this->GridNodes, rel, ThinCells * l);
   Found found;
   // Points that can border a hole: those with an empty circle wider than l
   // within 2 l (adding points only shrinks the circles), and the added ones.
@@ -585,8 +660,8 @@ bool GapClosing::Run(std::vector<double>& xyz, const std::function<bool(const do
   for (int round = 0; this->Radius > 0.0 && round < MaximumRounds; ++round)
   {
     const bool first = round == 0;
-    if (!FindHoles(this->GridNodes, rel, l, first ? l : BridgeTarget * l, this->Measured, first ? nullptr : &look,
-          first ? &look : nullptr, found, monitor))
+    if (!FindHoles(this->GridNodes, thin, rel, l, first ? l : BridgeTarget * l, this->Measured,
+          first ? nullptr : &look, first ? &look : nullptr, found, monitor))
     {
       return false;
     }
@@ -633,6 +708,7 @@ bool GapClosing::Run(std::vector<double>& xyz, const std::function<bool(const do
       if (i == 0 || proposals[i].Cell != proposals[i - 1].Cell)
       {
         rel.insert(rel.end(), proposals[i].Center.begin(), proposals[i].Center.end());
+        thin.insert(thin.end(), proposals[i].Center.begin(), proposals[i].Center.end());
         look.push_back(1);
       }
     }
@@ -640,8 +716,8 @@ bool GapClosing::Run(std::vector<double>& xyz, const std::function<bool(const do
 
   // The holes left open: every disc wider than l up to the measured radius.
   const bool bridged = this->Radius > 0.0;
-  if (!FindHoles(this->GridNodes, rel, l, l, this->Measured, bridged ? &look : nullptr, bridged ? nullptr : &look,
-        found, monitor))
+  if (!FindHoles(this->GridNodes, thin, rel, l, l, this->Measured, bridged ? &look : nullptr,
+        bridged ? nullptr : &look, found, monitor))
   {
     return false;
   }
@@ -652,7 +728,7 @@ bool GapClosing::Run(std::vector<double>& xyz, const std::function<bool(const do
     double x[3];
     for (int a = 0; a < 3; ++a)
     {
-      x[a] = origin[a] + rel[3 * f.first + a];
+      x[a] = origin[a] + thin[3 * f.first + a];
     }
     if (!owned || owned(x))
     {

@@ -409,70 +409,6 @@ std::int64_t QuantileIndex(double q, std::int64_t count)
   return std::min(count - 1, static_cast<std::int64_t>(q * static_cast<double>(count - 1) + 0.5));
 }
 
-/// Values per gap point in GapFigures' input: the point, its distance to its
-/// nearest neighbour, and that neighbour (the point again if it has none).
-constexpr int GapValues = 7;
-
-/**
- * figures: gaps, gap points, largest, its centre (x, y, z), from the gap
- * points of the whole cloud, GapValues each, in any order.
- */
-void GapFigures(const std::vector<double>& gaps, double offset, double figures[6])
-{
-  const std::size_t n = gaps.size() / GapValues;
-  auto at = [&](std::size_t g) { return &gaps[GapValues * g]; };
-  std::int64_t widest = -1;
-  for (std::size_t g = 0; g < n; ++g)
-  {
-    // The widest gap; ties go to the lowest coordinates (independent of the points' order).
-    if (widest < 0 || at(g)[3] > at(widest)[3] || (at(g)[3] == at(widest)[3] && Before(at(g), at(widest))))
-    {
-      widest = static_cast<std::int64_t>(g);
-    }
-  }
-  // Groups: gap points closer than 2 l to each other (union-find; there are
-  // few gap points, and past 20,000 each counts as a group of its own).
-  std::vector<std::size_t> parent(n);
-  std::iota(parent.begin(), parent.end(), 0);
-  auto root = [&](std::size_t a) {
-    while (parent[a] != a)
-    {
-      a = parent[a] = parent[parent[a]];
-    }
-    return a;
-  };
-  const double reach = 2.0 * offset;
-  for (std::size_t a = 0; a < n && n < 20000; ++a)
-  {
-    for (std::size_t b = a + 1; b < n; ++b)
-    {
-      double d2 = 0.0;
-      for (int c = 0; c < 3; ++c)
-      {
-        d2 += (at(a)[c] - at(b)[c]) * (at(a)[c] - at(b)[c]);
-      }
-      if (d2 < reach * reach)
-      {
-        parent[root(a)] = root(b);
-      }
-    }
-  }
-  std::int64_t groups = 0;
-  for (std::size_t a = 0; a < n; ++a)
-  {
-    groups += root(a) == a ? 1 : 0;
-  }
-  figures[0] = static_cast<double>(groups);
-  figures[1] = static_cast<double>(n);
-  if (widest >= 0)
-  {
-    figures[2] = at(widest)[3];
-    for (int c = 0; c < 3; ++c)
-    {
-      figures[3 + c] = 0.5 * (at(widest)[c] + at(widest)[4 + c]);
-    }
-  }
-}
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -482,14 +418,12 @@ bool Sampling::Measure(const std::vector<double>& xyz, Communicator* communicato
   {
     return this->MeasureDistributed(xyz, *communicator, monitor);
   }
-  // The caller's points are measured where they are (Gaps reads them there
-  // again): no copy of the cloud is kept.
-  this->Distributed = false;
-  this->Points.clear();
-  this->Owned = static_cast<std::int64_t>(xyz.size() / 3);
-  const std::int64_t n = this->Owned;
-  this->Nearest.assign(static_cast<std::size_t>(n), 0.0); // unmeasured: no gaps
-  this->Partner.assign(static_cast<std::size_t>(n), -1);
+  // The caller's points are measured where they are: no copy of the cloud
+  // is made, and only the figures are kept.
+  this->Held = 0;
+  const std::int64_t n = static_cast<std::int64_t>(xyz.size() / 3);
+  std::vector<double> nearest(static_cast<std::size_t>(n), 0.0);
+  std::vector<std::int64_t> partner(static_cast<std::size_t>(n), -1);
   this->Stats = SamplingStatistics{};
   this->Stats.Points = n;
   double bounds[6];
@@ -499,15 +433,16 @@ bool Sampling::Measure(const std::vector<double>& xyz, Communicator* communicato
   }
   std::vector<std::int64_t> every(static_cast<std::size_t>(n));
   std::iota(every.begin(), every.end(), 0);
-  if (!FindNearest(xyz, xyz, std::move(every), this->Nearest, this->Partner, monitor))
+  if (!FindNearest(xyz, xyz, std::move(every), nearest, partner, monitor))
   {
     return false;
   }
+  std::vector<std::int64_t>().swap(partner);
   // Quantiles of the finite distances (a point whose every neighbour
   // coincides with it has none).
   std::vector<double> sorted;
-  sorted.reserve(this->Nearest.size());
-  for (double d : this->Nearest)
+  sorted.reserve(nearest.size());
+  for (double d : nearest)
   {
     if (std::isfinite(d))
     {
@@ -547,11 +482,7 @@ bool Sampling::MeasureDistributed(const std::vector<double>& xyz, Communicator& 
   double total = static_cast<double>(xyz.size() / 3);
   communicator.SumAll(&total, 1);
   this->Stats.Points = static_cast<std::int64_t>(total);
-  this->Distributed = true;
-  this->Points.clear();
-  this->Owned = 0;
-  this->Nearest.clear();
-  this->Partner.clear();
+  this->Held = 0;
   if (figures[0] > 0.0 || total < 2.0)
   {
     return true; // non-finite points (the run refuses them), or nothing to measure
@@ -594,15 +525,15 @@ bool Sampling::MeasureDistributed(const std::vector<double>& xyz, Communicator& 
     auto& to = slabPoints[static_cast<std::size_t>(owner(xyz[p + 2]))];
     to.insert(to.end(), &xyz[p], &xyz[p] + 3);
   }
-  this->Points = communicator.Exchange(slabPoints);
-  this->Owned = static_cast<std::int64_t>(this->Points.size() / 3);
-  const std::int64_t owned = this->Owned;
-  this->Nearest.assign(static_cast<std::size_t>(owned), std::numeric_limits<double>::infinity());
-  this->Partner.assign(static_cast<std::size_t>(owned), -1);
+  const std::vector<double> points = communicator.Exchange(slabPoints);
+  std::vector<std::vector<double>>().swap(slabPoints);
+  const std::int64_t owned = static_cast<std::int64_t>(points.size() / 3);
+  this->Held = owned;
+  std::vector<double> nearest(static_cast<std::size_t>(owned), std::numeric_limits<double>::infinity());
+  std::vector<std::int64_t> partner(static_cast<std::size_t>(owned), -1);
   std::vector<std::int64_t> every(static_cast<std::size_t>(owned));
   std::iota(every.begin(), every.end(), 0);
-  const bool stopped =
-    owned > 1 && !FindNearest(this->Points, this->Points, std::move(every), this->Nearest, this->Partner, monitor);
+  const bool stopped = owned > 1 && !FindNearest(points, points, std::move(every), nearest, partner, monitor);
   if (communicator.MaxAll(stopped ? 1.0 : 0.0) > 0.0) // every process stops, or none
   {
     return false;
@@ -617,8 +548,8 @@ bool Sampling::MeasureDistributed(const std::vector<double>& xyz, Communicator& 
   std::vector<std::vector<double>> asks(static_cast<std::size_t>(size));
   for (std::int64_t p = 0; p < owned; ++p)
   {
-    const double* x = &this->Points[3 * p];
-    const double d = this->Nearest[p];
+    const double* x = &points[3 * p];
+    const double d = nearest[p];
     for (int q = 0; q < size; ++q)
     {
       if (q != rank && faces[q] <= x[2] + d && x[2] - d < faces[q + 1])
@@ -640,14 +571,14 @@ bool Sampling::MeasureDistributed(const std::vector<double>& xyz, Communicator& 
   {
     std::vector<std::int64_t> all(static_cast<std::size_t>(asked));
     std::iota(all.begin(), all.end(), 0);
-    FindNearest(this->Points, where, std::move(all), found, foundPoint);
+    FindNearest(points, where, std::move(all), found, foundPoint);
   }
   std::vector<std::vector<double>> answers(static_cast<std::size_t>(size));
   for (std::int64_t i = 0; i < asked; ++i)
   {
     if (foundPoint[i] >= 0 && found[i] <= questions[6 * i + 3])
     {
-      const double* y = &this->Points[3 * foundPoint[i]];
+      const double* y = &points[3 * foundPoint[i]];
       answers[static_cast<std::size_t>(questions[6 * i + 4])].insert(
         answers[static_cast<std::size_t>(questions[6 * i + 4])].end(),
         { y[0], y[1], y[2], found[i], questions[6 * i + 4], questions[6 * i + 5] });
@@ -657,21 +588,12 @@ bool Sampling::MeasureDistributed(const std::vector<double>& xyz, Communicator& 
   for (std::size_t i = 0; i + 5 < replies.size(); i += 6)
   {
     const std::int64_t p = static_cast<std::int64_t>(replies[i + 5]);
-    const double d = replies[i + 3];
-    const double* y = &replies[i];
-    const std::int64_t current = this->Partner[p];
-    if (d < this->Nearest[p] || (d == this->Nearest[p] && (current < 0 || Before(y, &this->Points[3 * current]))))
-    {
-      // The partner joins the held points (for the gaps' centres).
-      this->Nearest[p] = d;
-      this->Partner[p] = static_cast<std::int64_t>(this->Points.size() / 3);
-      this->Points.insert(this->Points.end(), y, y + 3);
-    }
+    nearest[p] = std::min(nearest[p], replies[i + 3]);
   }
 
   // 4. The quantiles of all processes' finite distances.
   std::vector<double> sorted;
-  for (double d : this->Nearest)
+  for (double d : nearest)
   {
     if (std::isfinite(d))
     {
@@ -688,47 +610,6 @@ bool Sampling::MeasureDistributed(const std::vector<double>& xyz, Communicator& 
     this->Stats.WideSpacing = GlobalKth(sorted, QuantileIndex(0.999, finiteCount), communicator);
   }
   return true;
-}
-
-//------------------------------------------------------------------------------
-GapReport Sampling::Gaps(double offset, Communicator* communicator, const std::vector<double>& xyz) const
-{
-  // This process's gap points, then all of them on process 0, which counts.
-  // (A serial run's points must be the ones measured: other points have none.)
-  const std::vector<double>& points = this->Distributed ? this->Points : xyz;
-  const std::int64_t measured =
-    this->Distributed || xyz.size() == 3 * static_cast<std::size_t>(this->Owned) ? this->Owned : 0;
-  std::vector<double> gaps;
-  for (std::int64_t p = 0; p < measured; ++p)
-  {
-    if (this->Nearest[p] > offset)
-    {
-      const double* x = &points[3 * p];
-      const std::int64_t other = this->Partner[p];
-      const double* y = other >= 0 ? &points[3 * other] : x;
-      gaps.insert(gaps.end(), { x[0], x[1], x[2], this->Nearest[p], y[0], y[1], y[2] });
-    }
-  }
-  double figures[6] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 };
-  const bool distributed = communicator && communicator->Size() > 1;
-  if (distributed)
-  {
-    gaps = communicator->Gather(gaps, 0);
-  }
-  if (!distributed || communicator->Rank() == 0)
-  {
-    GapFigures(gaps, offset, figures);
-  }
-  if (distributed)
-  {
-    communicator->SumAll(figures, 6); // only process 0 holds non-zero figures
-  }
-  GapReport report;
-  report.Gaps = static_cast<std::int64_t>(figures[0]);
-  report.GapPoints = static_cast<std::int64_t>(figures[1]);
-  report.LargestGap = figures[2];
-  report.LargestGapCenter = { { figures[3], figures[4], figures[5] } };
-  return report;
 }
 
 } // namespace nv

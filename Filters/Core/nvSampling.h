@@ -16,15 +16,14 @@
 //   l, and l stays near the sampling scale, so that detail survives;
 // - the automatic spacing is the paper's h = l / 4 (section 4), unless the
 //   grid's longest side would then exceed AutomaticMaximumDimension cells:
-//   then h is that side over AutomaticMaximumDimension and l at least 4 h;
-// - a gap is a group of points whose nearest neighbour is farther than l: the
-//   run reports how many there are and where the widest is.
+//   then h is that side over AutomaticMaximumDimension and l at least 4 h.
+//
+// The nearest-neighbour distance does not see a hole in the sampled surface
+// (its rim's points have near neighbours along the rim): nvGapClosing.h
+// measures and bridges those.
 #ifndef nvSampling_h
 #define nvSampling_h
 
-#include "nvGapClosing.h"
-
-#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -60,24 +59,15 @@ public:
   /// are not to be used.
   bool Measure(const std::vector<double>& xyz, Communicator* communicator, Monitor* monitor = nullptr);
   const SamplingStatistics& Statistics() const { return this->Stats; }
-  /// Collective. The gaps the shell of offset l may not bridge. xyz: in a
-  /// serial run, the points measured (not kept: the sampling holds their
-  /// nearest distances and partners only); a distributed run reads the
-  /// copies it holds instead.
-  GapReport Gaps(double offset, Communicator* communicator, const std::vector<double>& xyz) const;
-  /// The copies of points this process holds: none in a serial run; in a
-  /// distributed run, its slab's and those it borrowed from the slabs next
-  /// to it.
-  std::int64_t HeldPoints() const { return static_cast<std::int64_t>(this->Points.size() / 3); }
+  /// The points this process held while measuring: all of them in a
+  /// serial run (the caller's, not copied); in a distributed run, its slab's.
+  /// None is kept after the measurement, only the figures.
+  std::int64_t HeldPoints() const { return this->Held; }
 
 private:
   bool MeasureDistributed(const std::vector<double>& xyz, Communicator& communicator, Monitor* monitor);
 
-  bool Distributed = false;
-  std::vector<double> Points;        ///< distributed: the measured points first, then the borrowed ones
-  std::int64_t Owned = 0;            ///< the measured points
-  std::vector<double> Nearest;       ///< distance from each measured point to the nearest other point
-  std::vector<std::int64_t> Partner; ///< that point, an index into Points (-1: none)
+  std::int64_t Held = 0;
   SamplingStatistics Stats;
 };
 
