@@ -356,8 +356,8 @@ public:
    * the relative change of each step, and wall-clock seconds of the set-up
    * (distance and band), the evolution and the output (volume and surface)
    * on this process. SamplingTime: seconds spent measuring the points'
-   * spacing (nearest neighbours, for the automatic offset, the gap warning
-   * and MedianPointSpacing) in the last update; 0 when the points had not
+   * spacing (nearest neighbours, for the automatic offset and
+   * MedianPointSpacing) in the last update; 0 when the points had not
    * changed and the last measurement served.
    */
   int GetNumberOfIterations() const { return static_cast<int>(this->RelativeChanges.size()); }

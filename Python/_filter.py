@@ -137,8 +137,7 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
 
     def GetSamplingTime(self):
         """Wall-clock seconds spent measuring the points' spacing (nearest
-        neighbours, for the automatic offset, the gap warning and
-        MedianPointSpacing) in the last update; 0 when the points had not
+        neighbours, for the automatic offset and MedianPointSpacing) in the last update; 0 when the points had not
         changed and the last measurement served."""
         return self._sampling_time
 
