@@ -57,6 +57,16 @@ def boundary_edges(surface):
     return edges.GetOutput().GetNumberOfCells()
 
 
+def volume_of(surface):
+    """The signed volume a closed surface encloses (divergence theorem; normals point out of the shell)."""
+    if surface.GetNumberOfPolys() == 0:
+        return 0.0
+    xyz = vtk_to_numpy(surface.GetPoints().GetData()).astype(float)
+    triangles = vtk_to_numpy(surface.GetPolys().GetConnectivityArray()).reshape(-1, 3)
+    a, b, c = xyz[triangles[:, 0]], xyz[triangles[:, 1]], xyz[triangles[:, 2]]
+    return float(np.einsum("ij,ij->i", a, np.cross(b, c)).sum() / 6.0)
+
+
 def merged_surface(surface):
     """Merges the coincident points of surface pieces (exactly); returns
     (triangles, open edges, area)."""

@@ -67,20 +67,10 @@ def run(xyz_or_cloud, **settings):
     return f, figures, texts
 
 
-def volume_of(surface):
-    """The signed volume the surface encloses (normals point out of the shell)."""
-    if surface.GetNumberOfPolys() == 0:
-        return 0.0
-    xyz = vtk_to_numpy(surface.GetPoints().GetData()).astype(float)
-    triangles = vtk_to_numpy(surface.GetPolys().GetConnectivityArray()).reshape(-1, 3)
-    a, b, c = xyz[triangles[:, 0]], xyz[triangles[:, 1]], xyz[triangles[:, 2]]
-    return float(np.einsum("ij,ij->i", a, np.cross(b, c)).sum() / 6.0)
-
-
 def hollow(cloud, **settings):
     """Inner over outer sheet's enclosed volume (0: no cavity), and the outer volume."""
-    outer = volume_of(run(cloud, Sheets=1, **settings)[0].GetOutput(1))
-    inner = -volume_of(run(cloud, Sheets=2, **settings)[0].GetOutput(1))
+    outer = nvtesting.volume_of(run(cloud, Sheets=1, **settings)[0].GetOutput(1))
+    inner = -nvtesting.volume_of(run(cloud, Sheets=2, **settings)[0].GetOutput(1))
     return (inner / outer if outer > 0 else 0.0), outer
 
 
@@ -210,8 +200,8 @@ radius = 0.3 * np.sqrt(rng.uniform(0.0, 1.0, 6000))
 angle = rng.uniform(0.0, 2.0 * math.pi, 6000)
 cup = np.vstack([wall, np.c_[radius * np.cos(angle), radius * np.sin(angle), np.zeros(6000)]])
 on, figures_on, _ = run(cup, OffsetDistance=l)
-volume_on = volume_of(run(cup, OffsetDistance=l, Sheets=1)[0].GetOutput(1))
-volume_off = volume_of(run(cup, OffsetDistance=l, Sheets=1, CloseGaps=False)[0].GetOutput(1))
+volume_on = nvtesting.volume_of(run(cup, OffsetDistance=l, Sheets=1)[0].GetOutput(1))
+volume_off = nvtesting.volume_of(run(cup, OffsetDistance=l, Sheets=1, CloseGaps=False)[0].GetOutput(1))
 print("cup: %d points added, outer volume %.4f with closing, %.4f without" % (
     figures_on["AddedPoints"][0], volume_on, volume_off))
 t.check(phi_at(on, (0.0, 0.0, 0.25)) < 0.0 and phi_at(on, (0.0, 0.0, 0.45)) < 0.0,
@@ -270,7 +260,7 @@ else:
             t.check(after >= 0.75 * dense, "armadillo_decimated: cavity %.2f, at least 3/4 of the full armadillo's "
                     "%.2f at the same offset and spacing" % (after, dense))
         if name == "bunny_rangescan_bun000":
-            growth = volume_of(run(cloud, Sheets=1)[0].GetOutput(1)) / volume_of(
+            growth = nvtesting.volume_of(run(cloud, Sheets=1)[0].GetOutput(1)) / nvtesting.volume_of(
                 run(cloud, Sheets=1, CloseGaps=False)[0].GetOutput(1))
             t.check(growth < 1.02, "the range scan stays open, not blobbed (volume x %.4f)" % growth)
 t.finish()

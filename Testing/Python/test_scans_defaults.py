@@ -16,7 +16,6 @@ import os
 import sys
 import time
 
-import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkCommand
 from vtkmodules.vtkFiltersCore import vtkFlyingEdges3D, vtkProbeFilter
@@ -68,16 +67,6 @@ def run(cloud, **settings):
     return f, figures, warnings, seconds
 
 
-def volume_of(surface):
-    """The enclosed volume (divergence theorem; normals point out of the shell)."""
-    if surface.GetNumberOfPolys() == 0:
-        return 0.0
-    xyz = vtk_to_numpy(surface.GetPoints().GetData()).astype(float)
-    triangles = vtk_to_numpy(surface.GetPolys().GetConnectivityArray()).reshape(-1, 3)
-    a, b, c = xyz[triangles[:, 0]], xyz[triangles[:, 1]], xyz[triangles[:, 2]]
-    return float(np.einsum("ij,ij->i", a, np.cross(b, c)).sum() / 6.0)
-
-
 def contour_parts(f):
     """The parts of phi = 0 contoured from the Volume output, as a user would."""
     contour = vtkFlyingEdges3D()
@@ -113,8 +102,8 @@ for name in ("armadillo", "armadillo_decimated", "dragon", "teapot", "teacup", "
     l, median = figures["OffsetDistance"][0], figures["MedianPointSpacing"][0]
     hollow = float("nan")
     if name in STATUES:
-        outer = volume_of(run(cloud, Sheets=1)[0].GetOutput(1))
-        inner = volume_of(run(cloud, Sheets=2)[0].GetOutput(1))
+        outer = nvtesting.volume_of(run(cloud, Sheets=1)[0].GetOutput(1))
+        inner = nvtesting.volume_of(run(cloud, Sheets=2)[0].GetOutput(1))
         hollow = -inner / outer  # the inner sheet faces the cavity: negative volume
     dims = f.GetOutput(0).GetDimensions()
     print("%-24s %8d %10.4g %10.4g %6.2f %9s %7s %7.4f %5d %6.2f %8.2f" % (
