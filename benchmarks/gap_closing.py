@@ -4,12 +4,13 @@
 with nothing else set (the first Apply), the surface only (OutputVolume off).
 
     PYTHONPATH=build/lib/python3.11/dist-packages \\
-        pvpython benchmarks/gap_closing.py [--repeat 5] [--scans DIR]
+        pvpython benchmarks/gap_closing.py [--repeat 5] [--scans DIR] [--dense 1000000]
 
 Runs Update() with CloseGaps off and on in turn, in one process, and prints a
 Markdown table: per scan the points added, the gaps reported without and with
 closing, the median Update() of each and their ratio (the medians of the
-pairs' ratios).
+pairs' ratios). --dense N adds a row for N points scattered over the demo's
+trefoil tube (clouds.py), a cloud far denser than its automatic offset.
 """
 import argparse
 import os
@@ -18,6 +19,10 @@ import sys
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+
+import numpy as np  # noqa: E402
+import clouds  # noqa: E402
 SCANS = ("armadillo", "armadillo_decimated", "dragon", "teapot", "teacup", "bunny", "demosthenes",
          "bunny_rangescan_bun000")
 
@@ -26,21 +31,35 @@ def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--repeat", type=int, default=5)
     parser.add_argument("--scans", default=os.path.join(HERE, "..", "..", "shared", "data", "scans"))
+    parser.add_argument("--dense", type=int, default=0)
     args = parser.parse_args()
-    if not os.path.isfile(os.path.join(args.scans, "armadillo.ply")):
-        print("skipped: no scans in %s (they are read from ../shared)" % args.scans)
-        return 0
+    scans = os.path.isfile(os.path.join(args.scans, "armadillo.ply"))
+    if not scans:
+        print("no scans in %s (they are read from ../shared): scan rows skipped" % args.scans)
 
+    from vtkmodules.util.numpy_support import numpy_to_vtk
+    from vtkmodules.vtkCommonCore import vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkPolyData
     from vtkmodules.vtkIOPLY import vtkPLYReader
     from narrowvolume import vtkNarrowVolumeReconstruction
 
-    print("| scan | points | points added | gaps without / with | Update() without (s) | with (s) | ratio |")
-    print("|---|---|---|---|---|---|---|")
-    for name in SCANS:
+    def read(name):
+        if name.startswith("trefoil:"):
+            points = vtkPoints()
+            points.SetData(numpy_to_vtk(np.ascontiguousarray(clouds.load(dict(source=name)), dtype=float), deep=1))
+            cloud = vtkPolyData()
+            cloud.SetPoints(points)
+            return cloud
         reader = vtkPLYReader()
         reader.SetFileName(os.path.join(args.scans, name + ".ply"))
         reader.Update()
-        cloud = reader.GetOutput()
+        return reader.GetOutput()
+
+    print("| scan | points | points added | gaps without / with | Update() without (s) | with (s) | ratio |")
+    print("|---|---|---|---|---|---|---|")
+    names = (SCANS if scans else ()) + (("trefoil:%d" % args.dense,) if args.dense else ())
+    for name in names:
+        cloud = read(name)
         times = {False: [], True: []}
         figures = {}
         for _ in range(args.repeat):
