@@ -137,8 +137,9 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
 
     def GetSamplingTime(self):
         """Wall-clock seconds spent measuring the points' spacing (nearest
-        neighbours, for the automatic offset and MedianPointSpacing) in the last update; 0 when the points had not
-        changed and the last measurement served."""
+        neighbours, for the automatic offset and MedianPointSpacing) in the
+        last update; 0 when the points had not changed and the last
+        measurement served."""
         return self._sampling_time
 
     def GetSetupTime(self):
