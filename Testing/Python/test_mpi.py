@@ -12,7 +12,9 @@ triangles at the seams) with the serial area and triangles; ParaView's Slice,
 Clip, Threshold, Contour, ResampleToImage and PlotOverLine on the distributed
 volume give the cells of the 1-rank run. Also with OutputVolume off (surface
 by slabs), with PreserveOffset on (10 steps; phi bit for bit the serial
-phi, whose multiplier sums bricks across the slabs), the plain VTK filter
+phi, whose multiplier sums bricks across the slabs), a sphere with holes
+(gap closing: the serial points added, gaps, surface and phi on 2 and 3
+ranks), the plain VTK filter
 with 3 ranks and ghost levels, pvserver with a pvpython client, and the
 example script."""
 import ast
