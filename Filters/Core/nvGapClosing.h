@@ -11,7 +11,9 @@
 // (nvSampling.h) does not see these discs: the points along a hole's rim
 // have near neighbours along the rim.
 //
-// The measure, per point p:
+// The measure, per point p of a thinned copy of the cloud (one point per
+// cube of side l / 2: a dense cloud has thousands of points within 2 l of
+// each, and the holes that matter are wider than l):
 //  - the tangent plane at p: the principal directions of p's neighbours
 //    within 2 l;
 //  - in that plane, the largest empty circle through p in each of
@@ -20,8 +22,9 @@
 //  - such a circle is a hole when the points around it (within t + l of its
 //    centre) surround the centre (their directions from it leave no gap of
 //    2 pi / 3 or more), when, lifted to the mean height of its rim, its
-//    centre is farther than l from every point (the shell is pierced there:
-//    on a curved or thin part points off the plane may cover it), and when
+//    centre is farther than l from every point of the whole cloud (the
+//    shell is pierced there: on a curved or thin part points off the plane
+//    may cover it), and when
 //    the points around that empty ball lie in directions near the tangent
 //    plane (a hole's rim in the surface, not a crevice between toes or two
 //    facing sheets, which the shell fills as it should); an open circle
@@ -29,7 +32,7 @@
 //    and is left alone. Its radius is the empty ball's.
 //
 // Bridging: the centre of each hole of radius in (l, ClosingRadius] becomes a
-// new point (so that it lies on a curved surface too), and the rims are
+// new point (on a curved surface too, lifted to its rim), and the rims are
 // measured again with the target 3/4 l, at most three times (each round
 // about halves the discs left). Where a hole is bridged, no
 // empty disc is wider than 3/4 l: the wall over it is at least
