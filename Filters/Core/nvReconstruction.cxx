@@ -103,6 +103,20 @@ Settings ResolveAutomatic(const Settings& settings, const SamplingStatistics& sa
   return values;
 }
 
+/// The brick layers along z of a grid (nvPartition.h splits them).
+std::int64_t BrickLayers(const Grid& grid)
+{
+  return (grid.Dims[2] + BrickSize - 1) >> BrickShift;
+}
+
+/// The brick layer of a point at height z (the first or the last for one
+/// beyond them).
+std::int64_t BrickLayerOf(const Grid& grid, double z, std::int64_t layers)
+{
+  const std::int64_t k = static_cast<std::int64_t>((z - grid.Origin[2]) / grid.Spacing);
+  return std::min(layers - 1, std::max<std::int64_t>(0, k >> BrickShift));
+}
+
 std::string MiB(double bytes)
 {
   std::ostringstream text;
@@ -352,7 +366,7 @@ bool Reconstruction::RunSteps(std::vector<double> xyz, std::shared_ptr<const Sam
     return this->Fail(this->ThePlan.Error);
   }
   const Grid& grid = this->ThePlan.TheGrid;
-  const std::int64_t layers = (grid.Dims[2] + BrickSize - 1) >> BrickShift;
+  const std::int64_t layers = BrickLayers(grid);
 
   // 3. This process's slab, and the points within its reach: the band's,
   // and the gap closing's around it.
@@ -524,14 +538,11 @@ bool Reconstruction::CloseGaps(std::vector<double>& xyz, GapClosing& closing)
   }
   const Grid& grid = this->ThePlan.TheGrid;
   const LayerRange owned = this->Part.Owned;
-  const std::int64_t layers = (grid.Dims[2] + BrickSize - 1) >> BrickShift;
+  const std::int64_t layers = BrickLayers(grid);
   std::function<bool(const double*)> owns;
   if (this->Comm)
   {
-    owns = [&grid, owned, layers](const double* x) {
-      const std::int64_t k = static_cast<std::int64_t>(std::floor((x[2] - grid.Origin[2]) / grid.Spacing)) >> BrickShift;
-      return owned.Contains(std::min(std::max<std::int64_t>(k, 0), layers - 1));
-    };
+    owns = [&grid, owned, layers](const double* x) { return owned.Contains(BrickLayerOf(grid, x[2], layers)); };
   }
   const std::size_t given = xyz.size();
   const bool stopped = !closing.Run(xyz, owns, this->TheMonitor);
@@ -579,8 +590,7 @@ void Reconstruction::Partition(const std::vector<double>& xyz, std::int64_t laye
     std::vector<double> weights(static_cast<std::size_t>(layers), 0.0);
     for (std::size_t p = 0; p + 2 < xyz.size(); p += 3)
     {
-      const std::int64_t k = static_cast<std::int64_t>((xyz[p + 2] - grid.Origin[2]) / grid.Spacing);
-      weights[static_cast<std::size_t>(std::min(layers - 1, std::max<std::int64_t>(0, k >> BrickShift)))] += 1.0;
+      weights[static_cast<std::size_t>(BrickLayerOf(grid, xyz[p + 2], layers))] += 1.0;
     }
     this->Comm->SumAll(weights.data(), static_cast<int>(layers));
     this->Owners = SplitLayers(weights, this->Comm->Size());
