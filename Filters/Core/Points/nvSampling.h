@@ -71,6 +71,13 @@ private:
   SamplingStatistics Stats;
 };
 
+/// Bounds of xyz triples (empty: xmin > xmax). Returns the index of the first
+/// point with a non-finite coordinate, or -1.
+std::int64_t PointBounds(const std::vector<double>& xyz, double bounds[6]);
+
+/// The bounds of all processes' points (in place), collective.
+void GlobalBounds(Communicator& communicator, double bounds[6]);
+
 } // namespace nv
 
 #endif

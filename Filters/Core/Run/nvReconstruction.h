@@ -111,13 +111,6 @@ struct Plan
  */
 Plan MakePlan(const Settings& settings, const double bounds[6], const SamplingStatistics& sampling);
 
-/// Bounds of xyz triples (empty: xmin > xmax). Returns the index of the first
-/// point with a non-finite coordinate, or -1.
-std::int64_t PointBounds(const std::vector<double>& xyz, double bounds[6]);
-
-/// The bounds of all processes' points (in place), collective.
-void GlobalBounds(Communicator& communicator, double bounds[6]);
-
 /// The share of a run's progress that the measurement of the points'
 /// spacing shows, when it is made for the run (the set-up's stage starts at
 /// 0 as well, and shows once past it).

@@ -5,7 +5,6 @@
 #include "nvCommunicator.h"
 #include "nvGrid.h"
 #include "nvParallel.h"
-#include "nvReconstruction.h"
 
 #include <algorithm>
 #include <cmath>
@@ -610,6 +609,44 @@ bool Sampling::MeasureDistributed(const std::vector<double>& xyz, Communicator& 
     this->Stats.WideSpacing = GlobalKth(sorted, QuantileIndex(0.999, finiteCount), communicator);
   }
   return true;
+}
+
+std::int64_t PointBounds(const std::vector<double>& xyz, double bounds[6])
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    bounds[2 * a] = std::numeric_limits<double>::max();
+    bounds[2 * a + 1] = -std::numeric_limits<double>::max();
+  }
+  for (std::size_t p = 0; p + 2 < xyz.size(); p += 3)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      const double x = xyz[p + a];
+      if (!std::isfinite(x))
+      {
+        return static_cast<std::int64_t>(p / 3);
+      }
+      bounds[2 * a] = std::min(bounds[2 * a], x);
+      bounds[2 * a + 1] = std::max(bounds[2 * a + 1], x);
+    }
+  }
+  return -1;
+}
+
+void GlobalBounds(Communicator& communicator, double bounds[6])
+{
+  // Maxima of (-xmin, xmax, -ymin, ...).
+  double box[6];
+  for (int a = 0; a < 6; ++a)
+  {
+    box[a] = a % 2 ? bounds[a] : -bounds[a];
+  }
+  communicator.MaxAll(box, 6);
+  for (int a = 0; a < 6; ++a)
+  {
+    bounds[a] = a % 2 ? box[a] : -box[a];
+  }
 }
 
 } // namespace nv

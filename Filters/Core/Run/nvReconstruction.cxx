@@ -237,44 +237,6 @@ Plan MakePlan(const Settings& chosen, const double bounds[6], const SamplingStat
   return plan;
 }
 
-std::int64_t PointBounds(const std::vector<double>& xyz, double bounds[6])
-{
-  for (int a = 0; a < 3; ++a)
-  {
-    bounds[2 * a] = std::numeric_limits<double>::max();
-    bounds[2 * a + 1] = -std::numeric_limits<double>::max();
-  }
-  for (std::size_t p = 0; p + 2 < xyz.size(); p += 3)
-  {
-    for (int a = 0; a < 3; ++a)
-    {
-      const double x = xyz[p + a];
-      if (!std::isfinite(x))
-      {
-        return static_cast<std::int64_t>(p / 3);
-      }
-      bounds[2 * a] = std::min(bounds[2 * a], x);
-      bounds[2 * a + 1] = std::max(bounds[2 * a + 1], x);
-    }
-  }
-  return -1;
-}
-
-void GlobalBounds(Communicator& communicator, double bounds[6])
-{
-  // Maxima of (-xmin, xmax, -ymin, ...).
-  double box[6];
-  for (int a = 0; a < 6; ++a)
-  {
-    box[a] = a % 2 ? bounds[a] : -bounds[a];
-  }
-  communicator.MaxAll(box, 6);
-  for (int a = 0; a < 6; ++a)
-  {
-    bounds[a] = a % 2 ? box[a] : -box[a];
-  }
-}
-
 //------------------------------------------------------------------------------
 Reconstruction::Reconstruction(const Settings& settings, Communicator* communicator, Monitor* monitor)
   : TheSettings(settings)
