@@ -99,6 +99,11 @@ struct vtkNarrowVolumeReconstruction::DenseArrays
 //------------------------------------------------------------------------------
 vtkNarrowVolumeReconstruction::vtkNarrowVolumeReconstruction()
 {
+  // The properties' defaults are the core's (the property table's).
+  const nv::Settings defaults;
+#define NV_DEFAULT(Type, Name, Default) this->Name = static_cast<decltype(this->Name)>(defaults.Name);
+  NV_SETTINGS(NV_DEFAULT)
+#undef NV_DEFAULT
   this->SetNumberOfInputPorts(1);
   this->SetNumberOfOutputPorts(2);
   this->SetController(vtkMultiProcessController::GetGlobalController());
@@ -185,28 +190,9 @@ bool vtkNarrowVolumeReconstruction::IsDistributed(vtkInformationVector* outputVe
 nv::Settings vtkNarrowVolumeReconstruction::GetSettings() const
 {
   nv::Settings settings;
-  settings.OffsetDistance = this->OffsetDistance;
-  settings.CloseGaps = this->CloseGaps;
-  settings.ClosingRadius = this->ClosingRadius;
-  settings.SampleSpacing = this->SampleSpacing;
-  settings.MaximumDimension = this->MaximumDimension;
-  settings.XiCells = this->XiCells;
-  settings.EpsilonCells = this->EpsilonCells;
-  settings.TimeStep = this->TimeStep;
-  settings.MaximumNumberOfIterations = this->MaximumNumberOfIterations;
-  settings.ConvergenceTolerance = this->ConvergenceTolerance;
-  settings.GaussSeidelTolerance = this->GaussSeidelTolerance;
-  settings.Mode = this->Domain == WHOLE_DOMAIN ? nv::Domain::WholeDomain : nv::Domain::NarrowBand;
-  settings.EdgeFunction = this->EdgeStoppingFunction == EQUATION_3 ? nv::EdgeStopping::Eq3 : nv::EdgeStopping::Eq4;
-  settings.PreserveOffset = this->PreserveOffset;
-  settings.RemoveSmallPieces = this->RemoveSmallPieces;
-  settings.KeptSheets = static_cast<nv::Sheets>(this->Sheets);
-  settings.OutputVolume = this->OutputVolume;
-  settings.OutputInitialPhi = this->OutputInitialPhi;
-  settings.OutputDistance = this->OutputDistance;
-  settings.OutputNarrowBand = this->OutputNarrowBand;
-  settings.NumberOfThreads = this->NumberOfThreads;
-  settings.MemoryLimit = this->MemoryLimit;
+#define NV_COPY(Type, Name, Default) settings.Name = static_cast<Type>(this->Name);
+  NV_SETTINGS(NV_COPY)
+#undef NV_COPY
   return settings;
 }
 
@@ -473,7 +459,7 @@ bool vtkNarrowVolumeReconstruction::ProduceOutputs(nv::Reconstruction& run, nv::
   bool done = true;
   if (!nv::SurfaceFromDenseCopy(settings, distributed))
   {
-    if (settings.KeptSheets != nv::Sheets::Both)
+    if (settings.Sheets != nv::Sheets::Both)
     {
       vtkWarningMacro(<< nv::OneSheetDistributedWarning());
     }
@@ -580,29 +566,8 @@ std::shared_ptr<const nv::Sampling> vtkNarrowVolumeReconstruction::MeasureSampli
 void vtkNarrowVolumeReconstruction::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "OffsetDistance: " << this->OffsetDistance << (this->OffsetDistance == 0.0 ? " (automatic)" : "")
-     << "\n";
-  os << indent << "CloseGaps: " << this->CloseGaps << "\n";
-  os << indent << "ClosingRadius: " << this->ClosingRadius << (this->ClosingRadius == 0.0 ? " (automatic)" : "")
-     << "\n";
-  os << indent << "SampleSpacing: " << this->SampleSpacing << "\n";
-  os << indent << "MaximumDimension: " << this->MaximumDimension << "\n";
-  os << indent << "XiCells: " << this->XiCells << "\n";
-  os << indent << "EpsilonCells: " << this->EpsilonCells << "\n";
-  os << indent << "TimeStep: " << this->TimeStep << "\n";
-  os << indent << "MaximumNumberOfIterations: " << this->MaximumNumberOfIterations << "\n";
-  os << indent << "ConvergenceTolerance: " << this->ConvergenceTolerance << "\n";
-  os << indent << "GaussSeidelTolerance: " << this->GaussSeidelTolerance << "\n";
-  os << indent << "Domain: " << (this->Domain == WHOLE_DOMAIN ? "Whole Domain" : "Narrow Band") << "\n";
-  os << indent << "EdgeStoppingFunction: eq. (" << this->EdgeStoppingFunction << ")\n";
-  os << indent << "PreserveOffset: " << this->PreserveOffset << "\n";
-  os << indent << "Sheets: " << this->Sheets << "\n";
-  os << indent << "RemoveSmallPieces: " << this->RemoveSmallPieces << "\n";
-  os << indent << "OutputVolume: " << this->OutputVolume << "\n";
-  os << indent << "OutputInitialPhi: " << this->OutputInitialPhi << "\n";
-  os << indent << "OutputDistance: " << this->OutputDistance << "\n";
-  os << indent << "OutputNarrowBand: " << this->OutputNarrowBand << "\n";
-  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
-  os << indent << "MemoryLimit: " << this->MemoryLimit << " MiB\n";
+#define NV_PRINT(Type, Name, Default) os << indent << #Name ": " << this->Name << "\n";
+  NV_SETTINGS(NV_PRINT)
+#undef NV_PRINT
   os << indent << "Controller: " << this->Controller << "\n";
 }

@@ -422,28 +422,30 @@ protected:
   std::shared_ptr<const nv::Sampling> MeasureSampling(
     vtkPointSet* input, nv::Communicator* communicator, nv::Monitor& monitor, bool* measured = nullptr);
 
-  double OffsetDistance = 0.0;
-  bool CloseGaps = true;
-  double ClosingRadius = 0.0;
-  double SampleSpacing = 0.0;
-  int MaximumDimension = 0;
-  double XiCells = 2.0;
-  double EpsilonCells = 6.0;
-  double TimeStep = 0.0;
-  int MaximumNumberOfIterations = 3;
-  double ConvergenceTolerance = 0.0;
-  double GaussSeidelTolerance = 1e-6;
-  int Domain = NARROW_BAND;
-  int EdgeStoppingFunction = EQUATION_4;
-  bool PreserveOffset = false;
-  int Sheets = BOTH_SHEETS;
-  bool RemoveSmallPieces = true;
-  bool OutputVolume = true;
-  bool OutputInitialPhi = false;
-  bool OutputDistance = false;
-  bool OutputNarrowBand = false;
-  int NumberOfThreads = 0;
-  double MemoryLimit = 0.0;
+  // The properties: their defaults come from the core's nv::Settings (the
+  // property table, Python/_properties.py), set by the constructor.
+  double OffsetDistance;
+  bool CloseGaps;
+  double ClosingRadius;
+  double SampleSpacing;
+  int MaximumDimension;
+  double XiCells;
+  double EpsilonCells;
+  double TimeStep;
+  int MaximumNumberOfIterations;
+  double ConvergenceTolerance;
+  double GaussSeidelTolerance;
+  int Domain;
+  int EdgeStoppingFunction;
+  bool PreserveOffset;
+  int Sheets;
+  bool RemoveSmallPieces;
+  bool OutputVolume;
+  bool OutputInitialPhi;
+  bool OutputDistance;
+  bool OutputNarrowBand;
+  int NumberOfThreads;
+  double MemoryLimit;
   vtkMultiProcessController* Controller = nullptr;
 
   vtkIdType NumberOfBandNodes = 0;

@@ -234,11 +234,11 @@ class Progress:
 
 
 def _option(prop):
-    return "--" + _properties.snake_case(prop.name).replace("_", "-")
+    return _properties.option(prop.name)
 
 
 def _choice_type(prop):
-    names = {_properties.snake_case(suffix).replace("_", "-"): value for _, suffix, value in prop.choices}
+    names = {_properties.snake_case(suffix).replace("_", "-"): value for _, suffix, value, _ in prop.choices}
 
     def parse(text):
         if text.lower() in names:
@@ -264,7 +264,7 @@ def make_parser(defaults):
     group = parser.add_argument_group("the filter's properties (vtkNarrowVolumeReconstruction)")
     for prop in _properties.PROPERTIES:
         default = defaults[prop.name]
-        help_text = "%s (default: %s)" % (prop.doc.replace("%", "%%"), default)
+        help_text = "%s (default: %s)" % (_properties.describe(prop, _properties.option).replace("%", "%%"), default)
         if prop.kind is bool:
             group.add_argument(_option(prop), dest=prop.name, action=argparse.BooleanOptionalAction,
                                default=None, help=help_text)

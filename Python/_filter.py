@@ -25,6 +25,7 @@ from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkDataObject, vtkImageD
 from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline as sddp
 
 from . import _core
+from . import _properties
 from ._properties import PROPERTIES
 
 _CLASS_NAME = "vtkNarrowVolumeReconstruction"
@@ -443,18 +444,18 @@ def _convert(prop, value):
 def _install_properties(cls):
     defaults = _core.Settings()
     for prop in PROPERTIES:
-        field_type = type(getattr(defaults, prop.field))
-        default = prop.kind(getattr(defaults, prop.field))
+        field_type = type(getattr(defaults, prop.name))
+        default = prop.kind(getattr(defaults, prop.name))
         clamp = "" if prop.low is None else " Clamped to [%g, %g]." % (prop.low, prop.high)
-        doc = "%s Default %r.%s" % (prop.doc, default, clamp)
+        doc = "%s Default %r.%s" % (_properties.describe(prop), default, clamp)
 
         def getter(self, prop=prop):
-            return prop.kind(getattr(self._settings, prop.field))
+            return prop.kind(getattr(self._settings, prop.name))
 
         def setter(self, value, prop=prop, field_type=field_type):
             value = _convert(prop, value)
             if getattr(self, "Get" + prop.name)() != value:
-                setattr(self._settings, prop.field, field_type(value))
+                setattr(self._settings, prop.name, field_type(value))
                 self.Modified()
 
         getter.__doc__ = "%s\n\n%s" % (prop.name, doc)
@@ -486,7 +487,7 @@ def _install_properties(cls):
             kind = type(prop.name + "Type", (int,), {"__doc__": "The values of %s." % prop.name,
                                                      "__module__": cls.__module__})
             setattr(cls, kind.__name__, kind)
-        for constant, suffix, value in prop.choices:
+        for constant, suffix, value, _ in prop.choices:
             def choose(self, prop=prop, value=value):
                 getattr(self, "Set" + prop.name)(value)
             choose.__doc__ = "Sets %s to %s (%d)." % (prop.name, constant, value)

@@ -1,107 +1,195 @@
 # SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
 # SPDX-License-Identifier: BSD-3-Clause
-"""The filter's properties, in one table.
+"""The filter's properties, in one table: the home of every property.
 
-Each row is one property of vtkNarrowVolumeReconstruction: its Set/Get name,
-the field of the core's nv::Settings it fills, its type, the range its setter
-clamps to (vtkSetClampMacro in the C++ header), the named values of an
-enumerated property, and what it means. From this table:
+Each row is one property of vtkNarrowVolumeReconstruction: its name (Set/Get
+name, the field of the core's nv::Settings, the ParaView property, the
+keyword of reconstruct()), the label of the ParaView panel, its type, its
+default, the range its setter clamps to, the named values of an enumerated
+property, the panel's group, whether the panel shows it only in advanced
+mode, and what it means.
 
-- the Python filter of the wheel (_filter.py) makes its Set/Get methods,
-  with the defaults of a default-constructed nv::Settings
-  (narrowvolume._core.Settings(): the C++ defaults, not a copy of them);
-- reconstruct() takes the names as keyword arguments;
-- the command line makes one option per row.
+Everything else is made from this table (cmake/generate-properties.py, run
+when CMake configures, writes the generated files into the build):
 
-Adding a property to the core (a field of nv::Settings, bound in
-nvBindings.cxx) and to the C++ filter is one more row here. The tests
-check the table against the C++ class (test_python_api.py: PythonApi reads
-the wrapped class; PipVtkOldest and PipVtkNewest compare the wheel's filter
-with the C++ filter's record): the same names, defaults and clamping.
+- the core's nv::Settings: its fields and their defaults
+  (nvSettingsTable.h, read by Filters/Core/Run/nvSettings.h), which the VTK
+  filter copies (its constructor, GetSettings, PrintSelf) and the binding
+  binds (Python/nvBindings.cxx), field by field through one macro;
+- the ParaView server-manager XML of the filter
+  (Plugin/NarrowVolumeReconstruction.xml.in holds the rest of the proxy);
+- the parameter reference (Markdown), and the README's table of the
+  parameters, which the ctest PropertyTable checks;
+- at run time: the wheel's Python filter (its Set/Get methods and their
+  docstrings, _filter.py), reconstruct()'s keywords and the command line's
+  options (_cli.py).
+
+Adding a property: a row here, the core code that uses it, and its Set/Get
+(with its doc comment and its member) in Filters/vtkNarrowVolumeReconstruction.h,
+as VTK's wrapping needs real declarations; then rewrite the README's table
+with `python3 cmake/generate-properties.py --readme README.md`. The tests
+check the table against the wrapped C++ class (PythonApi: names, defaults,
+clamping) and the wheel's filter against the C++ filter (PipVtkOldest,
+PipVtkNewest).
+
+In `doc`, {OtherProperty} names another property: each place writes it in
+its own words (the panel's label in ParaView, the option on the command
+line, the property's name in Python).
 """
 from collections import namedtuple
 import re
 
-Property = namedtuple("Property", "name field kind low high choices doc")
+Property = namedtuple("Property", "name label kind default low high choices enum group advanced widget doc")
 Property.__doc__ = """One property of the filter.
 
-name: the Set/Get name (SetOffsetDistance, GetOffsetDistance).
-field: the field of nv::Settings (narrowvolume._core.Settings) it fills.
+name: the Set/Get name (SetOffsetDistance), the field of nv::Settings and
+    the ParaView property's name.
+label: the ParaView panel's label.
 kind: float, int or bool (bool also has <name>On() and <name>Off()).
-low, high: the range the setter clamps to, or None.
-choices: for an enumerated property, (CONSTANT, Suffix, value) triples: the
-    class constant and the setter Set<name>To<Suffix>().
-doc: what it means, its unit and default."""
+default: the default value (for an enumerated property, one of its values).
+low, high: the range the setter clamps to (vtkSetClampMacro), or None.
+choices: for an enumerated property, its Choice values, in the panel's order.
+enum: for an enumerated property, the core's C++ enum (nv::<enum>) its field has.
+group: the panel's group of properties.
+advanced: whether the panel shows it only in advanced mode (the gear).
+widget: None, or how the panel edits it beyond its type: ("bounds", f), a
+    value field whose reset button takes f times the input's smallest
+    extent; ("slider", low, high), a slider over that range (any value can
+    still be typed).
+doc: what it means, its unit and its default, with {OtherProperty} for the
+    names of other properties."""
 
-# Rows in the order of the C++ header.
+Choice = namedtuple("Choice", "constant suffix value label")
+Choice.__doc__ = """One value of an enumerated property: the class constant
+(NARROW_BAND), the setter's suffix (SetDomainToNarrowBand), the value, and
+the panel's text for it."""
+
+# Rows in the panel's order.
 PROPERTIES = (
-    Property("OffsetDistance", "OffsetDistance", float, None, None, (),
-             "Offset distance l in world units: the half-thickness of the shell, the distance of both "
-             "phi = 0 sheets from the points. 0 chooses it from the cloud: l = max(1.5 m, q), m the median "
-             "and q the 99.9th percentile of the distances from each point to its nearest neighbour."),
-    Property("CloseGaps", "CloseGaps", bool, None, None, (),
-             "Bridge the holes of the sampling: empty discs on the sampled surface wider than l (radius), "
-             "where the wall is pierced, are filled with points before the distance is computed, up to "
-             "ClosingRadius; wider openings (a scan's border, a cup's mouth) are left open and reported. "
-             "Off: the points as given (the paper's method)."),
-    Property("ClosingRadius", "ClosingRadius", float, None, None, (),
-             "The widest hole CloseGaps bridges, as the radius of its empty disc, in world units; 0 "
-             "chooses 3 l."),
-    Property("SampleSpacing", "SampleSpacing", float, None, None, (),
-             "Grid spacing h in world units. When <= 0, h comes from MaximumDimension, or, when that is 0 "
-             "too, h = l / 4 (the paper's ratio) with at most 320 cells along the padded box's longest side."),
-    Property("MaximumDimension", "MaximumDimension", int, 0, 100000, (),
-             "Number of cells along the longest side of the padded box when SampleSpacing <= 0 (at least "
-             "16); 0: h follows l, see SampleSpacing."),
-    Property("XiCells", "XiCells", float, None, None, (),
-             "xi = eps_m with m = XiCells (eq. 2): the width of the initial profile and of the band, "
-             "2 m cells. Larger values close small holes and thin gaps. Range [1, 64], checked when the "
-             "filter runs."),
-    Property("EpsilonCells", "EpsilonCells", float, None, None, (),
-             "eps = eps_m with m = EpsilonCells (eq. 1, 12): the interface width of the Allen-Cahn "
-             "evolution. Larger values smooth more. Range [0.5, 256], checked when the filter runs."),
-    Property("TimeStep", "TimeStep", float, None, None, (),
-             "Time step dt. When <= 0, dt = eps^2 (the paper's)."),
-    Property("MaximumNumberOfIterations", "MaximumNumberOfIterations", int, 0, 100000, (),
-             "Largest number of time steps (see ConvergenceTolerance)."),
-    Property("ConvergenceTolerance", "ConvergenceTolerance", float, 0.0, 1.0, (),
-             "Stop when ||phi^{n+1} - phi^n||_2 / ||phi^n||_2 drops below this value (the paper's rule "
-             "with 1e-5); 0 runs exactly MaximumNumberOfIterations steps."),
-    Property("GaussSeidelTolerance", "GaussSeidelTolerance", float, 1e-14, 1.0, (),
-             "Tolerance of the Gauss-Seidel iteration of the implicit step (10): sweeps stop when no "
-             "node changes by this much or more."),
-    Property("Domain", "Mode", int, 0, 1, (("NARROW_BAND", "NarrowBand", 0), ("WHOLE_DOMAIN", "WholeDomain", 1)),
-             "Where the scheme runs: NARROW_BAND (0), on band nodes only; or WHOLE_DOMAIN (1), on every "
-             "node of the grid, for comparison."),
-    Property("EdgeStoppingFunction", "EdgeFunction", int, 3, 4,
-             (("EQUATION_3", "Equation3", 3), ("EQUATION_4", "Equation4", 4)),
-             "Edge-stopping function g: EQUATION_4 (4), (1 - |phi0|) |phi0|; or EQUATION_3 (3), "
-             "1 - phi0^2."),
-    Property("PreserveOffset", "PreserveOffset", bool, None, None, (),
-             "Keep the sheets at the offset distance while they are smoothed: after each step the local "
-             "mean translation of the sheets (mean-curvature drift) is cancelled. Off: the paper's scheme."),
-    Property("Sheets", "KeptSheets", int, 0, 2,
-             (("BOTH_SHEETS", "Both", 0), ("OUTER_SHEET", "Outer", 1), ("INNER_SHEETS", "Inner", 2)),
-             "Which phi = 0 sheets the surface output holds: BOTH_SHEETS (0); OUTER_SHEET (1), the one "
-             "facing the outside (for a closed input, its dilation by OffsetDistance); or INNER_SHEETS "
-             "(2), those facing cavities enclosed by the shell (its erosion). phi is the same."),
-    Property("OutputVolume", "OutputVolume", bool, None, None, (),
-             "Whether output port 0 carries the phase field on the grid. Off: the volume keeps only its "
-             "geometry, and memory follows the band."),
-    Property("RemoveSmallPieces", "RemoveSmallPieces", bool, None, None, (),
-             "Remove loose pieces smaller than a ball of radius 2 l and voids inside the wall smaller than "
-             "a ball of radius l; field data RemovedPieces and RemovedVoids count them."),
-    Property("OutputInitialPhi", "OutputInitialPhi", bool, None, None, (),
-             "Adds the point array \"InitialPhi\" (phi0 of eq. 2) to output port 0."),
-    Property("OutputDistance", "OutputDistance", bool, None, None, (),
-             "Adds the point array \"Distance\" (the truncated distance of eq. 6) to output port 0."),
-    Property("OutputNarrowBand", "OutputNarrowBand", bool, None, None, (),
-             "Adds the point array \"NarrowBand\" (1 on band nodes) to output port 0."),
-    Property("NumberOfThreads", "NumberOfThreads", int, 0, 1024, (),
-             "Threads for the parallel loops; 0 uses all cores. phi is the same for any number."),
-    Property("MemoryLimit", "MemoryLimit", float, 0.0, 1e12, (),
-             "Largest memory, in MiB, one run may allocate; a grid that needs more is refused before "
-             "any large allocation. 0 means half of the machine's physical memory."),
+    # --- Offset distance
+    Property(
+        "OffsetDistance", "Offset Distance", float, 0.0, None, None, (), None, "Offset Distance", False,
+        ("bounds", 0.25),
+        "Half-thickness l of the shell in world units: both phi = 0 sheets lie at this distance from the "
+        "points. 0 (the default) chooses it from the cloud: l = max(1.5 m, q), m the median and q the 99.9th "
+        "percentile of the distances from each point to its nearest neighbour, so that the shell closes where "
+        "the sampling allows and keeps detail near its scale. The value used is in the Volume output's field "
+        "data \"OffsetDistance\"."),
+    Property(
+        "CloseGaps", "Close Gaps", bool, True, None, None, (), None, "Offset Distance", False, None,
+        "Bridge the holes of the sampling (on by default). A hole is an empty disc on the sampled surface "
+        "wider than the offset distance (as a radius): the shell's wall is pierced there, and one such tunnel "
+        "joins its outer and inner sheets, so a closed scan gives no cavity. Holes up to {ClosingRadius} are "
+        "filled with points before the distance is computed, so that the wall over them stays at least 0.66 "
+        "of the offset thick on each side; wider openings (a scan's border, the mouth of a cup, an open base) "
+        "are left open, and a warning reports them. Concavities and thin parts are not filled. Off: the points "
+        "as given (the paper's method). Field data \"AddedPoints\" counts the points added; \"NumberOfGaps\", "
+        "\"LargestGap\" (a radius) and \"LargestGapCenter\" describe the holes left open."),
+    Property(
+        "ClosingRadius", "Closing Radius", float, 0.0, None, None, (), None, "Offset Distance", True, None,
+        "The widest hole {CloseGaps} bridges, as the radius of its empty disc, in world units. 0 (the "
+        "default): 3 times the offset distance. Raise it to bridge a wider hole that the warning names (if it "
+        "is a hole, not an opening of the surface). Field data \"ClosingRadius\" shows the value used (0 with "
+        "{CloseGaps} off)."),
+    # --- Grid
+    Property(
+        "SampleSpacing", "Sample Spacing", float, 0.0, None, None, (), None, "Grid", True, None,
+        "Grid spacing h in world units. 0 (the default) takes h from {MaximumDimension}, or when that is 0 "
+        "too, h = l / 4 (the paper's ratio) with at most 320 cells along the longest side of the padded box "
+        "(then an automatic l is at least 4 h). Finer spacing gives more detail and costs time and memory as "
+        "1/h^2 to 1/h^3. The value used is in field data \"SampleSpacing\"."),
+    Property(
+        "MaximumDimension", "Maximum Dimension", int, 0, 0, 100000, (), None, "Grid", True, None,
+        "Number of grid cells along the longest side of the padded box, used when {SampleSpacing} is 0 (at "
+        "least 16). 0 (the default): the spacing follows the offset, h = l / 4."),
+    # --- Phase field
+    Property(
+        "XiCells", "Xi Cells", float, 2.0, None, None, (), None, "Phase field", True, None,
+        "Width m of the initial profile, xi = eps_m (eq. 2), in cells; the band is 2 m cells wide. From 1 to "
+        "64 (other values are refused when the filter runs). Small values leave holes where the points are "
+        "sparse; large ones close thin gaps. Default 2 (the paper's)."),
+    Property(
+        "EpsilonCells", "Epsilon Cells", float, 6.0, None, None, (), None, "Phase field", True, None,
+        "Interface width m of the Allen-Cahn evolution, eps = eps_m (eq. 1, 12), in cells. From 0.5 to 256 "
+        "(other values are refused when the filter runs). Larger values smooth the wrinkles of sparse or "
+        "noisy points more. Default 6 (the paper's)."),
+    Property(
+        "EdgeStoppingFunction", "Edge Stopping Function", int, 4, 3, 4,
+        (Choice("EQUATION_4", "Equation4", 4, "Eq. (4): (1-|phi0|)|phi0|"),
+         Choice("EQUATION_3", "Equation3", 3, "Eq. (3): 1-phi0^2")),
+        "EdgeStopping", "Phase field", True, None,
+        "The edge-stopping function g that confines the evolution to the band: EQUATION_4 (4, the default), "
+        "g = (1 - |phi0|) |phi0|, the paper's; or EQUATION_3 (3), g = 1 - phi0^2, the earlier paper's."),
+    # --- Solver
+    Property(
+        "Domain", "Domain", int, 0, 0, 1,
+        (Choice("NARROW_BAND", "NarrowBand", 0, "Narrow Band"),
+         Choice("WHOLE_DOMAIN", "WholeDomain", 1, "Whole Domain")),
+        "Domain", "Solver", True, None,
+        "Where the scheme runs: NARROW_BAND (0, the default) updates only the band around the shell's "
+        "boundary; WHOLE_DOMAIN (1) updates every grid node, for comparison (slower, more memory)."),
+    Property(
+        "MaximumNumberOfIterations", "Maximum Number Of Iterations", int, 3, 0, 100000, (), None, "Solver",
+        False, ("slider", 0, 20),
+        "Largest number of time steps. Each step smooths the sheets a little more, and moves them inward a "
+        "little on curved parts (motion by mean curvature): the default 3 keeps the paper's Table 1 accuracy. "
+        "See {ConvergenceTolerance} and {PreserveOffset}."),
+    Property(
+        "PreserveOffset", "Preserve Offset", bool, False, None, None, (), None, "Solver", False, None,
+        "Keep the sheets at the offset distance while more steps smooth them: after each step, the local mean "
+        "translation of the sheets (their drift by mean-curvature motion, which shrinks curved parts) is "
+        "cancelled, while wrinkles and noise are still smoothed. With it, 10 to 20 steps keep the Table 1 "
+        "accuracy. Off (the default): exactly the paper's scheme. Costs about a third of a step more."),
+    Property(
+        "ConvergenceTolerance", "Convergence Tolerance", float, 0.0, 0.0, 1.0, (), None, "Solver", True, None,
+        "Stop when the relative change ||phi^{n+1} - phi^n||_2 / ||phi^n||_2 drops below this value (the "
+        "paper's rule uses 1e-5). 0 (the default) runs exactly {MaximumNumberOfIterations} steps."),
+    Property(
+        "TimeStep", "Time Step", float, 0.0, None, None, (), None, "Solver", True, None,
+        "Time step dt. 0 (the default): dt = eps^2 (the paper's)."),
+    Property(
+        "GaussSeidelTolerance", "Gauss-Seidel Tolerance", float, 1e-06, 1e-14, 1.0, (), None, "Solver", True,
+        None,
+        "Tolerance of the Gauss-Seidel iteration of the implicit step (10): its red-black sweeps stop when no "
+        "node changes by this much or more. Default 1e-6 (the paper's)."),
+    Property(
+        "NumberOfThreads", "Number Of Threads", int, 0, 0, 1024, (), None, "Solver", True, None,
+        "Threads for the parallel loops; 0 (the default) uses all cores. phi is the same for any number."),
+    Property(
+        "MemoryLimit", "Memory Limit", float, 0.0, 0.0, 1e12, (), None, "Solver", True, None,
+        "Largest memory one run may allocate, in MiB; a grid that needs more is refused with a message before "
+        "any large allocation. 0 (the default): half of the machine's physical memory."),
+    # --- Output
+    Property(
+        "Sheets", "Sheets", int, 0, 0, 2,
+        (Choice("BOTH_SHEETS", "Both", 0, "Both"),
+         Choice("OUTER_SHEET", "Outer", 1, "Outer"),
+         Choice("INNER_SHEETS", "Inner", 2, "Inner")),
+        "Sheets", "Output", False, None,
+        "Which phi = 0 sheets the Surface output holds: BOTH_SHEETS (0, the default); OUTER_SHEET (1), the "
+        "one facing the outside (for a closed input, its dilation by the offset distance); or INNER_SHEETS "
+        "(2), those facing cavities enclosed by the shell (its erosion). An open scan has only an outer sheet. "
+        "phi is the same; choosing one sheet needs the dense grid even when {OutputVolume} is off."),
+    Property(
+        "RemoveSmallPieces", "Remove Small Pieces", bool, True, None, None, (), None, "Output", False, None,
+        "Remove loose pieces smaller than a ball of radius 2 l (the balls around lone points) and voids "
+        "inside the wall smaller than a ball of radius l (on by default). Field data \"RemovedPieces\" and "
+        "\"RemovedVoids\" count them. Not applied in a distributed (MPI) run."),
+    Property(
+        "OutputVolume", "Output Volume", bool, True, None, None, (), None, "Output", False, None,
+        "Produce the phase field phi on the grid, the Volume output (on by default). Off: the Volume output "
+        "keeps only the grid's geometry and the surface is extracted slab by slab, so memory follows the band "
+        "instead of the whole box: use it for very fine grids. The extra arrays below need it."),
+    Property(
+        "OutputInitialPhi", "Output Initial Phi", bool, False, None, None, (), None, "Output", True, None,
+        "Add the initial profile phi0 (eq. 2) to the Volume output as the point array \"InitialPhi\"."),
+    Property(
+        "OutputDistance", "Output Distance", bool, False, None, None, (), None, "Output", True, None,
+        "Add the truncated distance to the points (eq. 6) to the Volume output as the point array "
+        "\"Distance\"."),
+    Property(
+        "OutputNarrowBand", "Output Narrow Band", bool, False, None, None, (), None, "Output", True, None,
+        "Add the point array \"NarrowBand\" (1 on the nodes the scheme updates) to the Volume output."),
 )
 
 BY_NAME = {p.name: p for p in PROPERTIES}
@@ -112,6 +200,11 @@ def snake_case(name):
     return re.sub(r"(?<!^)(?=[A-Z])", "_", name).lower()
 
 
+def option(name):
+    """OffsetDistance -> --offset-distance (the command line's option)."""
+    return "--" + snake_case(name).replace("_", "-")
+
+
 _BY_SNAKE = {snake_case(p.name): p for p in PROPERTIES}
 
 
@@ -120,6 +213,14 @@ def find(keyword):
     if keyword in BY_NAME:
         return BY_NAME[keyword]
     return _BY_SNAKE[keyword]
+
+
+def describe(prop, name_of=lambda name: name):
+    """The property's documentation with the names of other properties as
+    name_of(name) gives them: BY_NAME[name].label in the panel, option(name)
+    on the command line, the name itself in Python (the default)."""
+    return re.sub(r"\{([A-Za-z]+)\}", lambda m: name_of(m.group(1)) if m.group(1) in BY_NAME else m.group(0),
+                  prop.doc)
 
 
 def defaults_of(filter_object):

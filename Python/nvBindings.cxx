@@ -372,33 +372,15 @@ NB_MODULE(_core, m)
     .value("Outer", nv::Sheets::Outer)
     .value("Inner", nv::Sheets::Inner);
 
-  // Every field of nv::Settings; a default-constructed one holds the defaults.
-  nb::class_<nv::Settings>(m, "Settings", "What the user chooses (nv::Settings): the filter's properties.")
-    .def(nb::init<>())
-    .def_rw("OffsetDistance", &nv::Settings::OffsetDistance)
-    .def_rw("CloseGaps", &nv::Settings::CloseGaps)
-    .def_rw("ClosingRadius", &nv::Settings::ClosingRadius)
-    .def_rw("SampleSpacing", &nv::Settings::SampleSpacing)
-    .def_rw("MaximumDimension", &nv::Settings::MaximumDimension)
-    .def_rw("XiCells", &nv::Settings::XiCells)
-    .def_rw("EpsilonCells", &nv::Settings::EpsilonCells)
-    .def_rw("TimeStep", &nv::Settings::TimeStep)
-    .def_rw("MaximumNumberOfIterations", &nv::Settings::MaximumNumberOfIterations)
-    .def_rw("ConvergenceTolerance", &nv::Settings::ConvergenceTolerance)
-    .def_rw("GaussSeidelTolerance", &nv::Settings::GaussSeidelTolerance)
-    .def_rw("Mode", &nv::Settings::Mode)
-    .def_rw("EdgeFunction", &nv::Settings::EdgeFunction)
-    .def_rw("PreserveOffset", &nv::Settings::PreserveOffset)
-    .def_rw("RemoveSmallPieces", &nv::Settings::RemoveSmallPieces)
-    .def_rw("KeptSheets", &nv::Settings::KeptSheets)
-    .def_rw("OutputVolume", &nv::Settings::OutputVolume)
-    .def_rw("OutputInitialPhi", &nv::Settings::OutputInitialPhi)
-    .def_rw("OutputDistance", &nv::Settings::OutputDistance)
-    .def_rw("OutputNarrowBand", &nv::Settings::OutputNarrowBand)
-    .def_rw("NumberOfThreads", &nv::Settings::NumberOfThreads)
-    .def_rw("MemoryLimit", &nv::Settings::MemoryLimit)
+  // Every field of nv::Settings (the property table's, NV_SETTINGS); a
+  // default-constructed one holds the defaults.
+  nb::class_<nv::Settings> settings(m, "Settings", "What the user chooses (nv::Settings): the filter's properties.");
+  settings.def(nb::init<>())
     .def("MemoryLimitBytes", &nv::Settings::MemoryLimitBytes)
     .def("OutputBytesPerNode", &nv::Settings::OutputBytesPerNode);
+#define NV_BIND(Type, Name, Default) settings.def_rw(#Name, &nv::Settings::Name);
+  NV_SETTINGS(NV_BIND)
+#undef NV_BIND
 
   nb::class_<nv::Grid>(m, "Grid", "The uniform grid: nodes Origin + (i, j, k) Spacing.")
     .def_prop_ro("Origin", [](const nv::Grid& g) { return g.Origin; })

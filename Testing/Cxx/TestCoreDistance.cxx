@@ -108,7 +108,7 @@ void TestBand(nv::Domain mode)
   parameters.OffsetDistance = 2.0;
   parameters.Spacing = 1.0;
   parameters.XiCells = 1.0;
-  parameters.Mode = mode;
+  parameters.Domain = mode;
   NV_CHECK_NEAR(parameters.HalfBandWidth(), 1.0, 1e-12);
   NV_CHECK_NEAR(parameters.Reach(), 3.0, 1e-12);
   const nv::Grid grid = TinyGrid();

@@ -170,7 +170,7 @@ void TestDistributedSolve(nv::Domain mode, int ranks, std::vector<double> weight
   parameters.OffsetDistance = 0.08;
   parameters.Spacing = 0.02;
   parameters.MaximumNumberOfIterations = preserve ? 6 : 3;
-  parameters.Mode = mode;
+  parameters.Domain = mode;
   parameters.PreserveOffset = preserve;
   const double bounds[6] = { -0.5, 0.5, -0.4, 0.6, -0.55, 0.45 };
   const nv::Grid grid = nv::MakeGrid(bounds, parameters.Spacing, nv::GridPadding(parameters.Reach(), parameters.Spacing));

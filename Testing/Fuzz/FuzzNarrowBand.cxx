@@ -39,7 +39,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   p.Spacing = 0.05 + 0.01 * (data[0] % 20);
   p.OffsetDistance = p.Spacing * (0.25 + 0.25 * (data[1] % 24));
   p.XiCells = 1.0 + 0.5 * (data[2] % 7);
-  p.Mode = (data[3] & 1) ? nv::Domain::WholeDomain : nv::Domain::NarrowBand;
+  p.Domain = (data[3] & 1) ? nv::Domain::WholeDomain : nv::Domain::NarrowBand;
   std::vector<double> points;
   for (std::size_t at = 4; at + 6 <= size && points.size() < 600; at += 6)
   {
@@ -93,7 +93,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const std::int64_t s = slotOfNode[grid.Index(i, j, k)];
         const bool clearlyIn = lower + 1e-9 < best && best < upper - 1e-9;
         const bool clearlyOut = best < lower - 1e-9 || best > upper + 1e-9;
-        if (p.Mode == nv::Domain::WholeDomain)
+        if (p.Domain == nv::Domain::WholeDomain)
         {
           Require(s >= 0);
         }

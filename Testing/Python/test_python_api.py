@@ -86,6 +86,7 @@ def test_property_methods(prop):
     f = narrowvolume.vtkNarrowVolumeReconstruction()
     default = getattr(f, "Get" + prop.name)()
     assert isinstance(default, prop.kind) or (prop.kind is float and isinstance(default, int))
+    assert default == prop.default, "the filter's default is the table's"
     if prop.low is not None:
         getattr(f, "Set" + prop.name)(prop.low - 1)
         assert getattr(f, "Get" + prop.name)() == prop.low
@@ -98,7 +99,7 @@ def test_property_methods(prop):
         assert getattr(f, "Get" + prop.name)() is True
         getattr(f, prop.name + "Off")()
         assert getattr(f, "Get" + prop.name)() is False
-    for constant, suffix, value in prop.choices:
+    for constant, suffix, value, _ in prop.choices:
         assert getattr(narrowvolume.vtkNarrowVolumeReconstruction, constant) == value
         getattr(f, "Set%sTo%s" % (prop.name, suffix))()
         assert getattr(f, "Get" + prop.name)() == value

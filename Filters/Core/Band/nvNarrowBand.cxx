@@ -28,7 +28,7 @@ void ForEachBandNode(const TruncatedDistance& distance, const Parameters& parame
   const BrickVisitor& visitor, double scratch[BrickNodes], std::uint64_t inside[BrickNodes / 64], Fn&& fn)
 {
   const Grid& grid = distance.GetGrid();
-  const bool whole = parameters.Mode == Domain::WholeDomain;
+  const bool whole = parameters.Domain == Domain::WholeDomain;
   const double lower = parameters.OffsetDistance - parameters.HalfBandWidth();
   const double upper = distance.GetReach();
   std::fill(inside, inside + BrickNodes / 64, std::uint64_t(0));
@@ -126,7 +126,7 @@ NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& 
   // Step 1: the bricks to visit, in the computed layers. Whole domain mode
   // visits all of them.
   std::vector<std::int64_t> bricks;
-  if (parameters.Mode == Domain::WholeDomain)
+  if (parameters.Domain == Domain::WholeDomain)
   {
     for (std::int64_t b = part->Computed.Begin * bricksPerLayer; b < part->Computed.End * bricksPerLayer; ++b)
     {

@@ -59,8 +59,8 @@ struct Parameters
   double Relaxation = 0.0;
   double Delta = 0.01;                ///< delta of eq. (5): band is |phi0| < 1 - delta
   std::int64_t MaximumBandNodes = -1; ///< refuse a larger band (memory budget); < 0: no limit
-  Domain Mode = Domain::NarrowBand;
-  EdgeStopping EdgeFunction = EdgeStopping::Eq4;
+  nv::Domain Domain = nv::Domain::NarrowBand;
+  EdgeStopping EdgeStoppingFunction = EdgeStopping::Eq4;
   /// After each step, cancel the local mean translation of the sheets
   /// (nvDriftCorrection.h); false: exactly the paper's scheme.
   bool PreserveOffset = false;

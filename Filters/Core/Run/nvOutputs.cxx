@@ -14,12 +14,12 @@ namespace nv
 
 bool NeedsDenseVolume(const Settings& settings, bool distributed)
 {
-  return settings.OutputVolume || (settings.KeptSheets != Sheets::Both && !distributed);
+  return settings.OutputVolume || (settings.Sheets != Sheets::Both && !distributed);
 }
 
 bool SurfaceFromDenseCopy(const Settings& settings, bool distributed)
 {
-  return settings.KeptSheets != Sheets::Both && !distributed;
+  return settings.Sheets != Sheets::Both && !distributed;
 }
 
 bool ContourDense(
@@ -28,7 +28,7 @@ bool ContourDense(
   const Grid& grid = run.GetGrid();
   bool done = false;
   WithThreads(run.GetSettings().NumberOfThreads, [&]() {
-    cavities = KeepSheets(grid, phi, run.GetSettings().KeptSheets);
+    cavities = KeepSheets(grid, phi, run.GetSettings().Sheets);
     const DenseField field(grid, phi, 0, grid.Dims[2], run.GetParameters());
     done = ContourBricks(grid, field, sink, 0, -1, monitor);
   });
@@ -37,7 +37,7 @@ bool ContourDense(
 
 bool NoInnerSheet(const Settings& settings, std::int64_t cavities)
 {
-  return settings.KeptSheets == Sheets::Inner && cavities == 0;
+  return settings.Sheets == Sheets::Inner && cavities == 0;
 }
 
 std::vector<SummaryArray> RunSummary(const Reconstruction& run, const RemovedPieces& removed)

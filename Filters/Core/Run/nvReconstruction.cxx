@@ -196,8 +196,8 @@ Plan MakePlan(const Settings& chosen, const double bounds[6], const SamplingStat
   parameters.MaximumNumberOfIterations = settings.MaximumNumberOfIterations;
   parameters.ConvergenceTolerance = settings.ConvergenceTolerance;
   parameters.GaussSeidelTolerance = settings.GaussSeidelTolerance;
-  parameters.Mode = settings.Mode;
-  parameters.EdgeFunction = settings.EdgeFunction;
+  parameters.Domain = settings.Domain;
+  parameters.EdgeStoppingFunction = settings.EdgeStoppingFunction;
   parameters.PreserveOffset = settings.PreserveOffset;
   parameters.Spacing = settings.SampleSpacing > 0.0
     ? settings.SampleSpacing
@@ -577,7 +577,7 @@ bool Reconstruction::CheckMemory(double gridNodes, double points)
   const double layerNodes = static_cast<double>(grid.Dims[0] * grid.Dims[1]);
   const double computedNodes = layerNodes * static_cast<double>(this->Computed[1] - this->Computed[0]);
   const double pieceNodes = layerNodes * static_cast<double>(this->Piece[1] - this->Piece[0]);
-  const bool whole = this->ThePlan.Scheme.Mode == Domain::WholeDomain;
+  const bool whole = this->ThePlan.Scheme.Domain == Domain::WholeDomain;
   const double bytes = pieceNodes * this->TheSettings.OutputBytesPerNode() + gridNodes * BytesPerGridNode +
     (whole ? computedNodes * BytesPerBandNode : 0.0) + points * BytesPerPoint;
   const double limit = this->TheSettings.MemoryLimitBytes();

@@ -35,7 +35,7 @@
 #include "nvParameters.h"
 #include "nvPartition.h"
 #include "nvSampling.h"
-#include "nvSheets.h"
+#include "nvSettings.h"
 #include "nvVolume.h"
 
 #include <cstdint>
@@ -49,45 +49,6 @@ namespace nv
 class Communicator;
 class Monitor;
 class SurfaceSink;
-
-/// What the user chooses (the filter's properties), before the grid is known.
-/// The VTK filter and the Python filter of the wheel both fill one from
-/// their properties; a default-constructed one holds their defaults.
-struct Settings
-{
-  // The method (section 3, 4).
-  double OffsetDistance = 0.0; ///< l, world units; 0: automatic (nvSampling.h)
-  double SampleSpacing = 0.0;  ///< h, world units; <= 0: from MaximumDimension
-  int MaximumDimension = 0;    ///< cells along the padded box's longest side; 0: automatic
-  double XiCells = 2.0;
-  double EpsilonCells = 6.0;
-  double TimeStep = 0.0;
-  int MaximumNumberOfIterations = 3;
-  double ConvergenceTolerance = 0.0;
-  double GaussSeidelTolerance = 1e-6;
-  Domain Mode = Domain::NarrowBand;
-  EdgeStopping EdgeFunction = EdgeStopping::Eq4;
-  bool PreserveOffset = false;
-  // The points (nvGapClosing.h).
-  bool CloseGaps = true;      ///< add points inside the holes of the sampling, up to ClosingRadius
-  double ClosingRadius = 0.0; ///< the widest hole bridged (radius, world units); 0: 3 l
-  // The outputs (nvOutputs.h).
-  bool RemoveSmallPieces = true;    ///< drop loose pieces and tiny voids (nvPieces.h)
-  Sheets KeptSheets = Sheets::Both; ///< the phi = 0 sheets the surface keeps
-  bool OutputVolume = true;         ///< phi on the grid (RequestVolume); off: the surface only
-  bool OutputInitialPhi = false;    ///< phi0 (eq. 2) on the grid too
-  bool OutputDistance = false;      ///< d (eq. 6) on the grid too
-  bool OutputNarrowBand = false;    ///< 1 on band nodes, on the grid too
-  // The machine.
-  int NumberOfThreads = 0;  ///< threads of the loops; 0: all cores
-  double MemoryLimit = 0.0; ///< MiB a run may allocate; 0: half the physical memory
-
-  /// MemoryLimit in bytes (> 0).
-  double MemoryLimitBytes() const;
-  /// Bytes per node of the dense output piece: the arrays asked for and the
-  /// isosurfacer's working memory; 0 with OutputVolume off.
-  double OutputBytesPerNode() const;
-};
 
 /// The grid that points with given bounds get, and the scheme's parameters on
 /// it (with the automatic offset and spacing filled in).

@@ -77,7 +77,7 @@ AllenCahnSolver::AllenCahnSolver(
   const double h = parameters.Spacing;
   const double dt = parameters.EffectiveTimeStep();
   const double eps = parameters.Epsilon();
-  const EdgeStopping function = parameters.EdgeFunction;
+  const EdgeStopping function = parameters.EdgeStoppingFunction;
   // Over-relaxation: a fixed factor if given, else estimated during the
   // first sweeps (see Diffuse).
   this->Omega = parameters.Relaxation > 0.0 ? parameters.Relaxation : 1.0;

@@ -1,0 +1,37 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+// SPDX-License-Identifier: BSD-3-Clause
+// What the user chooses: the filter's properties, as the core takes them.
+//
+// The fields, their types and defaults come from the property table,
+// Python/_properties.py, through NV_SETTINGS (nvSettingsTable.h, which
+// cmake/generate-properties.py writes into the build): one field per
+// property, named as the property (OffsetDistance, Domain, Sheets, ...).
+// The VTK filter and the Python filter of the wheel both fill one from their
+// properties; a default-constructed one holds their defaults. The table
+// says what each means; the code that uses a field says how.
+#ifndef nvSettings_h
+#define nvSettings_h
+
+#include "nvParameters.h"    // Domain, EdgeStopping
+#include "nvSettingsTable.h" // NV_SETTINGS, generated
+#include "nvSheets.h"        // Sheets
+
+namespace nv
+{
+
+struct Settings
+{
+#define NV_SETTINGS_FIELD(Type, Name, Default) Type Name = Default;
+  NV_SETTINGS(NV_SETTINGS_FIELD)
+#undef NV_SETTINGS_FIELD
+
+  /// MemoryLimit in bytes (> 0).
+  double MemoryLimitBytes() const;
+  /// Bytes per node of the dense output piece: the arrays asked for and the
+  /// isosurfacer's working memory; 0 with OutputVolume off.
+  double OutputBytesPerNode() const;
+};
+
+} // namespace nv
+
+#endif

@@ -1,0 +1,246 @@
+#!/usr/bin/env python3
+# SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+# SPDX-License-Identifier: BSD-3-Clause
+"""Makes the files that follow the property table (Python/_properties.py).
+
+CMake runs it when it configures (CMakeLists.txt); by hand it rewrites or
+checks the README's table of the parameters:
+
+    generate-properties.py --header nvSettingsTable.h     the core's settings
+    generate-properties.py --xml TEMPLATE OUT             the ParaView proxy
+    generate-properties.py --markdown OUT                 the parameter reference
+    generate-properties.py --readme README.md [--check]   the README's table
+
+Only the standard library: it runs in any Python 3 the build finds.
+"""
+import argparse
+import importlib.util
+import os
+import re
+import sys
+from xml.sax.saxutils import escape, quoteattr
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+TABLE = os.path.join(HERE, "..", "Python", "_properties.py")
+README_BEGIN = "<!-- The parameters: made from Python/_properties.py by cmake/generate-properties.py --readme -->"
+README_END = "<!-- end of the parameters -->"
+
+
+def load_table(path=TABLE):
+    """The table module, loaded from its file (it imports nothing of the package)."""
+    spec = importlib.util.spec_from_file_location("narrowvolume_properties", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def number(value):
+    """A number as C++, XML and Markdown all read it: 0 rather than 0.0, 1e-06 as is."""
+    text = repr(value)
+    return text[:-2] if text.endswith(".0") else text
+
+
+def write(path, text):
+    """Writes text unless the file already holds it (so that builds do not redo what depends on it)."""
+    if os.path.exists(path):
+        with open(path, encoding="utf-8") as old:
+            if old.read() == text:
+                return
+    os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
+    with open(path, "w", encoding="utf-8") as new:
+        new.write(text)
+
+
+# --- The core: NV_SETTINGS(X), one X(Type, Name, Default) per property.
+def cpp_type(prop):
+    if prop.enum:
+        return "nv::" + prop.enum
+    return {float: "double", int: "int", bool: "bool"}[prop.kind]
+
+
+def cpp_default(prop):
+    if prop.enum:
+        return "nv::%s(%d)" % (prop.enum, prop.default)
+    if prop.kind is bool:
+        return "true" if prop.default else "false"
+    return repr(float(prop.default)) if prop.kind is float else str(prop.default)
+
+
+def header(table):
+    lines = [
+        "// Generated from Python/_properties.py (the property table) by",
+        "// cmake/generate-properties.py when CMake configures: edit the table, not this file.",
+        "//",
+        "// NV_SETTINGS(X) calls X(Type, Name, Default) for each property of the",
+        "// filter, in the table's order: nv::Settings declares its fields with it",
+        "// (nvSettings.h), the VTK filter copies them, the binding binds them.",
+        "#ifndef nvSettingsTable_h",
+        "#define nvSettingsTable_h",
+        "",
+        "#define NV_SETTINGS(X) \\",
+    ]
+    rows = ["  X(%s, %s, %s)" % (cpp_type(p), p.name, cpp_default(p)) for p in table.PROPERTIES]
+    lines += [row + " \\" for row in rows[:-1]] + [rows[-1], "", "#endif", ""]
+    return "\n".join(lines)
+
+
+# --- ParaView: the proxy's properties and groups.
+def xml_properties(table, indent="      "):
+    out = []
+    label = lambda name: table.BY_NAME[name].label  # noqa: E731
+    for prop in table.PROPERTIES:
+        element = "DoubleVectorProperty" if prop.kind is float else "IntVectorProperty"
+        default = int(prop.default) if prop.kind is bool else number(prop.default)
+        attributes = 'name="%s" command="Set%s" label=%s number_of_elements="1" default_values="%s"' % (
+            prop.name, prop.name, quoteattr(prop.label), default)
+        if prop.advanced:
+            attributes += ' panel_visibility="advanced"'
+        out.append("%s<%s %s>" % (indent, element, attributes))
+        inner = indent + "  "
+        if prop.kind is bool:
+            out.append('%s<BooleanDomain name="bool"/>' % inner)
+        if prop.choices:
+            out.append('%s<EnumerationDomain name="enum">' % inner)
+            for choice in prop.choices:
+                out.append("%s  <Entry value=\"%d\" text=%s/>" % (inner, choice.value, quoteattr(choice.label)))
+            out.append("%s</EnumerationDomain>" % inner)
+        if prop.widget and prop.widget[0] == "bounds":
+            out.append('%s<BoundsDomain name="bounds" mode="scaled_extent" scale_factor="%s" default_mode="min">'
+                       % (inner, number(prop.widget[1])))
+            out.append('%s  <RequiredProperties>' % inner)
+            out.append('%s    <Property function="Input" name="Input"/>' % inner)
+            out.append('%s  </RequiredProperties>' % inner)
+            out.append('%s</BoundsDomain>' % inner)
+        elif prop.widget and prop.widget[0] == "slider":
+            kind = "DoubleRangeDomain" if prop.kind is float else "IntRangeDomain"
+            out.append('%s<%s name="range" min="%s" max="%s"/>' % (inner, kind, number(prop.widget[1]),
+                                                                     number(prop.widget[2])))
+        out.append("%s<Documentation>%s</Documentation>" % (inner, escape(table.describe(prop, label))))
+        out.append("%s</%s>" % (indent, element))
+    groups = []
+    for prop in table.PROPERTIES:
+        if not groups or groups[-1][0] != prop.group:
+            groups.append((prop.group, []))
+        groups[-1][1].append(prop.name)
+    for group, names in groups:
+        out.append("%s<PropertyGroup label=%s>" % (indent, quoteattr(group)))
+        out += ['%s  <Property name="%s"/>' % (indent, name) for name in names]
+        out.append("%s</PropertyGroup>" % indent)
+    return "\n".join(out)
+
+
+def xml(table, template):
+    with open(template, encoding="utf-8") as f:
+        text = f.read()
+    marker = re.search(r"^[ \t]*@NARROWVOLUME_PROPERTIES@[ \t]*\n", text, re.M)
+    if not marker:
+        sys.exit("generate-properties: no @NARROWVOLUME_PROPERTIES@ line in %s" % template)
+    head = "<!-- Generated from %s and Python/_properties.py by cmake/generate-properties.py. -->\n" % (
+        os.path.basename(template))
+    return head + text[:marker.start()] + xml_properties(table) + "\n" + text[marker.end():]
+
+
+# --- Markdown: the reference, and the README's table.
+def markdown_cell(text):
+    return text.replace("|", "\\|")
+
+
+def default_text(prop):
+    if prop.kind is bool:
+        return "on" if prop.default else "off"
+    for choice in prop.choices:
+        if choice.value == prop.default:
+            return "%s (%d)" % (choice.constant, choice.value)
+    return number(prop.default)
+
+
+def range_text(prop):
+    if prop.choices:
+        return ", ".join("%s (%d)" % (c.constant, c.value) for c in prop.choices)
+    if prop.low is not None:
+        return "clamped to [%s, %s]" % (number(prop.low), number(prop.high))
+    return ""
+
+
+def first_sentence(text):
+    match = re.search(r"(?<![Ee]q)\.\s+(?=[A-Z0-9(])", text)
+    return text[:match.start() + 1] if match else text
+
+
+def code(name):
+    return "`%s`" % name
+
+
+def markdown(table):
+    out = ["# Parameters", "",
+           "The properties of vtkNarrowVolumeReconstruction: the same names in C++, Python (`reconstruct()` "
+           "also takes them in snake_case), pvpython and the command line (as `--offset-distance`); the "
+           "ParaView panel shows the labels. Made from the property table, `Python/_properties.py`.", ""]
+    group = None
+    for prop in table.PROPERTIES:
+        if prop.group != group:
+            group = prop.group
+            out += ["## %s" % group, ""]
+        out += ["### %s" % prop.name, ""]
+        facts = ["panel label *%s*%s" % (prop.label, " (advanced)" if prop.advanced else ""),
+                 "type %s" % ("enumeration" if prop.choices else prop.kind.__name__),
+                 "default %s" % default_text(prop)]
+        if range_text(prop):
+            facts.append(range_text(prop))
+        facts.append("command line `%s`" % table.option(prop.name))
+        out += ["; ".join(facts) + ".", "", table.describe(prop, code), ""]
+    return "\n".join(out)
+
+
+def readme_table(table):
+    out = [README_BEGIN, "", "| property | panel label | default | meaning |", "|---|---|---|---|"]
+    for prop in table.PROPERTIES:
+        out.append("| `%s` | %s | %s | %s |" % (prop.name, prop.label, markdown_cell(default_text(prop)),
+                                                markdown_cell(first_sentence(table.describe(prop, code)))))
+    out += ["", README_END]
+    return "\n".join(out)
+
+
+def readme(table, path, check):
+    with open(path, encoding="utf-8") as f:
+        text = f.read()
+    begin, end = text.find(README_BEGIN), text.find(README_END)
+    if begin < 0 or end < begin:
+        print("generate-properties: %s has no table of the parameters between the lines\n%s\n%s" % (
+            path, README_BEGIN, README_END))
+        return 1
+    new = text[:begin] + readme_table(table) + text[end + len(README_END):]
+    if check:
+        if new != text:
+            print("FAILED: the README's table of the parameters differs from the property table; rewrite it "
+                  "with\n    python3 cmake/generate-properties.py --readme README.md")
+            return 1
+        print("generate-properties: the README's table is the property table's (%d rows)" % len(table.PROPERTIES))
+        return 0
+    write(path, new)
+    return 0
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--table", default=TABLE, help="the property table (default: Python/_properties.py)")
+    parser.add_argument("--header", metavar="OUT", help="write nvSettingsTable.h")
+    parser.add_argument("--xml", nargs=2, metavar=("TEMPLATE", "OUT"), help="write the ParaView proxy")
+    parser.add_argument("--markdown", metavar="OUT", help="write the parameter reference")
+    parser.add_argument("--readme", metavar="README", help="rewrite the README's table of the parameters")
+    parser.add_argument("--check", action="store_true", help="with --readme: only check it, exit 1 if it differs")
+    args = parser.parse_args()
+    table = load_table(args.table)
+    if args.header:
+        write(args.header, header(table))
+    if args.xml:
+        write(args.xml[1], xml(table, args.xml[0]))
+    if args.markdown:
+        write(args.markdown, markdown(table))
+    if args.readme:
+        return readme(table, args.readme, args.check)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
