@@ -59,6 +59,21 @@ private:
   bool Abortable;
 };
 
+/// Ends the share of the progress that the information pass's measurement
+/// took (vtkAlgorithm::SetProgressShiftScale) when the data pass ends.
+class ProgressReset
+{
+public:
+  explicit ProgressReset(vtkAlgorithm* filter)
+    : Filter(filter)
+  {
+  }
+  ~ProgressReset() { this->Filter->SetProgressShiftScale(0.0, 1.0); }
+
+private:
+  vtkAlgorithm* Filter;
+};
+
 /// The points of a point set as xyz triples in double precision.
 std::vector<double> PointsOf(vtkPointSet* input)
 {
@@ -87,13 +102,41 @@ vtkSmartPointer<ArrayType> NewArray(const char* name, vtkIdType nodes)
 
 } // namespace
 
-/// The dense arrays of the volume piece (null: not asked for).
+/// The dense arrays of the volume piece (null: not asked for), which the
+/// run fills (nv::VolumeRequest).
 struct vtkNarrowVolumeReconstruction::DenseArrays
 {
   vtkSmartPointer<vtkFloatArray> Phi;
   vtkSmartPointer<vtkFloatArray> InitialPhi;
   vtkSmartPointer<vtkFloatArray> Distance;
   vtkSmartPointer<vtkUnsignedCharArray> Band;
+
+  /// The run's request: these arrays on the node layers it asks for.
+  nv::VolumeRequest Request(const nv::Reconstruction& run, vtkIdType ghostLayers)
+  {
+    nv::VolumeRequest request;
+    request.GhostLayers = ghostLayers;
+    request.Allocate = [this, &run](std::int64_t kBegin, std::int64_t kEnd) {
+      const nv::Grid& grid = run.GetGrid();
+      return this->Allocate(grid.Dims[0] * grid.Dims[1] * (kEnd - kBegin), nv::DenseArraysAsked(run.GetSettings()));
+    };
+    return request;
+  }
+
+  /// phi and the arrays the settings ask for, on `nodes` nodes.
+  nv::VolumeArrays Allocate(vtkIdType nodes, const nv::VolumeContents& contents)
+  {
+    this->Phi = NewArray<vtkFloatArray>("phi", nodes);
+    this->InitialPhi = contents.InitialPhi ? NewArray<vtkFloatArray>("InitialPhi", nodes) : nullptr;
+    this->Distance = contents.Distance ? NewArray<vtkFloatArray>("Distance", nodes) : nullptr;
+    this->Band = contents.Band ? NewArray<vtkUnsignedCharArray>("NarrowBand", nodes) : nullptr;
+    nv::VolumeArrays arrays;
+    arrays.Phi = this->Phi->GetPointer(0);
+    arrays.InitialPhi = this->InitialPhi ? this->InitialPhi->GetPointer(0) : nullptr;
+    arrays.Distance = this->Distance ? this->Distance->GetPointer(0) : nullptr;
+    arrays.Band = this->Band ? this->Band->GetPointer(0) : nullptr;
+    return arrays;
+  }
 };
 
 //------------------------------------------------------------------------------
@@ -235,14 +278,11 @@ int vtkNarrowVolumeReconstruction::RequestInformation(
   // The measurement shows its progress (on a large cloud it takes seconds,
   // before the data pass begins) as the run's first stage; the data pass's
   // progress, which the pipeline starts again from 0, then fills the rest.
-  std::shared_ptr<const nv::Sampling> sampling;
   bool measured = false;
   this->SetProgressShiftScale(0.0, 1.0);
-  nv::WithThreads(this->NumberOfThreads, [&]() {
-    FilterMonitor progress(this, false);
-    progress.Stage(0.0, nv::SamplingStage);
-    sampling = this->MeasureSampling(input, communicator.get(), progress, &measured);
-  });
+  FilterMonitor progress(this, false);
+  const std::shared_ptr<const nv::Sampling> sampling =
+    this->MeasureSampling(input, communicator.get(), progress, &measured);
   if (measured)
   {
     this->SetProgressShiftScale(nv::SamplingStage, 1.0 - nv::SamplingStage);
@@ -288,207 +328,118 @@ int vtkNarrowVolumeReconstruction::RequestUpdateExtent(
 int vtkNarrowVolumeReconstruction::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  // The progress of the information pass's measurement (if any) ends here.
-  struct ProgressReset
-  {
-    vtkAlgorithm* Filter;
-    ~ProgressReset() { this->Filter->SetProgressShiftScale(0.0, 1.0); }
-  } progressReset{ this };
+  ProgressReset progressReset(this); // the information pass's measurement's share ends here
+  vtkPointSet* input = vtkPointSet::GetData(inputVector[0], 0);
   vtkImageData* volume = vtkImageData::GetData(outputVector, 0);
   vtkPolyData* surface = vtkPolyData::GetData(outputVector, 1);
   volume->Initialize();
   surface->Initialize();
-  this->RelativeChanges.clear();
-  this->OffsetDistanceUsed = this->SampleSpacingUsed = this->MedianPointSpacing = this->LargestGap = 0.0;
-  this->ClosingRadiusUsed = 0.0;
-  this->Gaps = this->RemovedPieces = this->RemovedVoids = 0;
-  this->NumberOfBandNodes = 0;
-  this->NumberOfGridNodes = 0;
-  this->SamplingTime = this->SetupTime = this->EvolutionTime = this->OutputTime = 0.0;
+  this->KeepResults(nullptr, nv::Outcome());
 
   // Distributed (see SetController), or one process computes everything:
   // then the requests for pieces other than 0 leave their outputs empty, so
   // that gathered pieces hold the serial result once.
   const bool distributed = this->IsDistributed(outputVector);
+  vtkInformation* volumeInfo = outputVector->GetInformationObject(0);
   if (!distributed &&
     outputVector->GetInformationObject(1)->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) > 0)
   {
     return 1;
   }
-  std::unique_ptr<vtkNarrowVolumeCommunicator> communicator;
-  if (distributed)
-  {
-    communicator.reset(new vtkNarrowVolumeCommunicator(this->Controller));
-  }
+  std::unique_ptr<vtkNarrowVolumeCommunicator> communicator(
+    distributed ? new vtkNarrowVolumeCommunicator(this->Controller) : nullptr);
 
-  bool ok = false;
-  std::vector<nv::SummaryArray> summary;
-  nv::WithThreads(this->NumberOfThreads, [&]() {
-    FilterMonitor monitor(this);
-    const nv::Settings settings = this->GetSettings();
-    nv::Reconstruction run(settings, communicator.get(), &monitor);
-    // The dense arrays, filled by the run: for output 0, or for keeping one
-    // sheet (KeepSheets works on the whole grid, so not when distributed).
-    DenseArrays dense;
-    if (nv::NeedsDenseVolume(settings, distributed))
-    {
-      const std::int64_t ghosts = distributed && this->OutputVolume
-        ? outputVector->GetInformationObject(0)->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS())
-        : 0;
-      run.RequestVolume(ghosts, [&](std::int64_t kBegin, std::int64_t kEnd) {
-        const vtkIdType nodes = static_cast<vtkIdType>(run.GetGrid().Dims[0] * run.GetGrid().Dims[1] * (kEnd - kBegin));
-        const bool volume = this->OutputVolume;
-        dense.Phi = NewArray<vtkFloatArray>("phi", nodes);
-        dense.InitialPhi = volume && this->OutputInitialPhi ? NewArray<vtkFloatArray>("InitialPhi", nodes) : nullptr;
-        dense.Distance = volume && this->OutputDistance ? NewArray<vtkFloatArray>("Distance", nodes) : nullptr;
-        dense.Band = volume && this->OutputNarrowBand ? NewArray<vtkUnsignedCharArray>("NarrowBand", nodes) : nullptr;
-        nv::VolumeArrays arrays;
-        arrays.Phi = dense.Phi->GetPointer(0);
-        arrays.InitialPhi = dense.InitialPhi ? dense.InitialPhi->GetPointer(0) : nullptr;
-        arrays.Distance = dense.Distance ? dense.Distance->GetPointer(0) : nullptr;
-        arrays.Band = dense.Band ? dense.Band->GetPointer(0) : nullptr;
-        return arrays;
-      });
-    }
-    vtkPointSet* input = vtkPointSet::GetData(inputVector[0], 0);
-    monitor.Stage(0.0, nv::SamplingStage);
-    const std::shared_ptr<const nv::Sampling> sampling = this->MeasureSampling(input, communicator.get(), monitor);
-    // The measurement's seconds go to the first run that uses it (it may
-    // have been made for this run's information pass).
-    this->SamplingTime = this->SamplingUnreported;
-    this->SamplingUnreported = 0.0;
-    if (!sampling) // stopped (AbortExecute)
-    {
-      return;
-    }
-    if (!run.Run(PointsOf(input), sampling))
-    {
-      if (!run.Error().empty())
-      {
-        vtkErrorMacro(<< run.Error());
-      }
-      return;
-    }
-    this->NumberOfGridNodes = static_cast<vtkIdType>(run.GetGrid().NumberOfNodes());
-    this->NumberOfBandNodes = static_cast<vtkIdType>(run.NumberOfBandNodes());
-    this->RelativeChanges = run.RelativeChanges();
-    this->SetupTime = run.SetupSeconds();
-    this->EvolutionTime = run.EvolutionSeconds();
-    this->OffsetDistanceUsed = run.GetParameters().OffsetDistance;
-    this->SampleSpacingUsed = run.GetGrid().Spacing;
-    this->ClosingRadiusUsed = run.GetPlan().ClosingRadius;
-    this->MedianPointSpacing = run.GetSampling().MedianSpacing;
-    this->Gaps = run.GetGaps().Gaps;
-    this->LargestGap = run.GetGaps().LargestGap;
-    std::copy(run.GetGaps().LargestGapCenter.begin(), run.GetGaps().LargestGapCenter.end(), this->LargestGapCenter);
-    const auto start = std::chrono::steady_clock::now();
-    bool explained = false;
-    nv::RemovedPieces removed;
-    ok = this->ProduceOutputs(run, monitor, dense, volume, surface, distributed, explained, removed);
-    this->RemovedPieces = removed.Pieces;
-    this->RemovedVoids = removed.Voids;
-    this->OutputTime = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    ok = !run.Anywhere(!ok); // every process, whatever stage it stopped in
-    const double surfacePoints = run.SumAll(static_cast<double>(surface->GetNumberOfPoints()));
-    const bool firstProcess = !communicator || communicator->Rank() == 0;
-    if (ok && run.GetGaps().Gaps > 0 && firstProcess)
-    {
-      vtkWarningMacro(<< nv::GapWarning(run.GetGaps(), this->OffsetDistanceUsed, this->ClosingRadiusUsed));
-    }
-    if (ok && surfacePoints == 0 && !explained && firstProcess)
-    {
-      vtkWarningMacro(<< nv::EmptySurfaceWarning(this->OffsetDistanceUsed, run.GetGrid().Spacing));
-    }
-    summary = nv::RunSummary(run, removed);
-  });
-  if (!ok)
+  // The run and its outputs (nvOutputs.h), into VTK's arrays.
+  FilterMonitor monitor(this);
+  nv::Reconstruction run(this->GetSettings(), communicator.get(), &monitor);
+  const std::shared_ptr<const nv::Sampling> sampling = this->MeasureSampling(input, communicator.get(), monitor);
+  DenseArrays dense;
+  nv::PolyDataSink sink;
+  const vtkIdType ghosts =
+    distributed ? volumeInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS()) : 0;
+  const nv::Outcome outcome = sampling // null: stopped (AbortExecute)
+    ? nv::Reconstruct(run, PointsOf(input), sampling, sink, dense.Request(run, ghosts), distributed)
+    : nv::Outcome();
+  this->KeepResults(&run, outcome);
+  if (!outcome.Error.empty())
   {
-    volume->Initialize();
-    surface->Initialize();
+    vtkErrorMacro(<< outcome.Error);
+  }
+  for (const std::string& warning : outcome.Warnings)
+  {
+    vtkWarningMacro(<< warning);
+  }
+  if (!outcome.Done)
+  {
     return 1;
   }
-  this->AddRunSummary(volume, summary);
+  this->MakeVolume(volume, run, outcome, dense);
+  surface->ShallowCopy(sink.Finish());
+  this->AddRunSummary(volume, outcome.Summary);
   this->UpdateProgress(1.0);
   return 1;
 }
 
 //------------------------------------------------------------------------------
-bool vtkNarrowVolumeReconstruction::ProduceOutputs(nv::Reconstruction& run, nv::Monitor& monitor,
-  const DenseArrays& dense, vtkImageData* volume, vtkPolyData* surface, bool distributed, bool& explained,
-  nv::RemovedPieces& removed)
+void vtkNarrowVolumeReconstruction::KeepResults(const nv::Reconstruction* run, const nv::Outcome& outcome)
 {
-  const nv::Grid& grid = run.GetGrid();
-  if (run.EmptyPiece())
+  // The figures of the last run for the Get...() methods; none when it did
+  // not run (MeasureSampling keeps the sampling's own seconds).
+  const bool ran = run && outcome.Ran;
+  this->NumberOfGridNodes = ran ? static_cast<vtkIdType>(run->GetGrid().NumberOfNodes()) : 0;
+  this->NumberOfBandNodes = ran ? static_cast<vtkIdType>(run->NumberOfBandNodes()) : 0;
+  this->RelativeChanges = ran ? run->RelativeChanges() : std::vector<double>();
+  this->OffsetDistanceUsed = ran ? run->GetParameters().OffsetDistance : 0.0;
+  this->SampleSpacingUsed = ran ? run->GetGrid().Spacing : 0.0;
+  this->ClosingRadiusUsed = ran ? run->GetPlan().ClosingRadius : 0.0;
+  this->SetupTime = ran ? run->SetupSeconds() : 0.0;
+  this->EvolutionTime = ran ? run->EvolutionSeconds() : 0.0;
+  this->OutputTime = ran ? outcome.OutputSeconds : 0.0;
+  // The measurement's seconds go to the first run that uses it (it may have
+  // been made for this run's information pass).
+  this->SamplingTime = run ? this->SamplingUnreported : 0.0;
+  if (run)
   {
-    return true;
+    this->SamplingUnreported = 0.0;
   }
-  // Output 0: the volume, this process's piece of it (its geometry always,
-  // its arrays on request), with ghost layers if the pipeline asked.
-  const std::int64_t volumeBegin = dense.Phi ? run.VolumeBegin() : run.PieceBegin();
-  const std::int64_t volumeEnd = dense.Phi ? run.VolumeEnd() : run.PieceEnd();
+}
+
+//------------------------------------------------------------------------------
+void vtkNarrowVolumeReconstruction::MakeVolume(
+  vtkImageData* volume, const nv::Reconstruction& run, const nv::Outcome& outcome, const DenseArrays& dense)
+{
+  // This process's piece of the grid (its geometry always, its arrays on
+  // request), with ghost layers if the pipeline asked; nothing without a piece.
+  if (outcome.VolumeEnd <= outcome.VolumeBegin)
+  {
+    return;
+  }
+  const nv::Grid& grid = run.GetGrid();
+  const int nx = static_cast<int>(grid.Dims[0] - 1);
+  const int ny = static_cast<int>(grid.Dims[1] - 1);
   volume->SetOrigin(grid.Origin[0], grid.Origin[1], grid.Origin[2]);
   volume->SetSpacing(grid.Spacing, grid.Spacing, grid.Spacing);
-  volume->SetExtent(0, static_cast<int>(grid.Dims[0] - 1), 0, static_cast<int>(grid.Dims[1] - 1),
-    static_cast<int>(volumeBegin), static_cast<int>(volumeEnd - 1));
-  if (run.GetSettings().OutputVolume)
+  volume->SetExtent(0, nx, 0, ny, static_cast<int>(outcome.VolumeBegin), static_cast<int>(outcome.VolumeEnd - 1));
+  if (!this->OutputVolume)
   {
-    volume->GetPointData()->SetScalars(dense.Phi);
-    for (vtkDataArray* array : { static_cast<vtkDataArray*>(dense.InitialPhi), static_cast<vtkDataArray*>(dense.Distance),
-           static_cast<vtkDataArray*>(dense.Band) })
+    return;
+  }
+  volume->GetPointData()->SetScalars(dense.Phi);
+  for (vtkDataArray* array : { static_cast<vtkDataArray*>(dense.InitialPhi),
+         static_cast<vtkDataArray*>(dense.Distance), static_cast<vtkDataArray*>(dense.Band) })
+  {
+    if (array)
     {
-      if (array)
-      {
-        volume->GetPointData()->AddArray(array);
-      }
-    }
-    if (volumeBegin < run.PieceBegin() || volumeEnd > run.PieceEnd())
-    {
-      // The piece without its ghost layers; the last node layer is shared
-      // with the next piece, which owns the cells above it.
-      int piece[6] = { 0, static_cast<int>(grid.Dims[0] - 1), 0, static_cast<int>(grid.Dims[1] - 1),
-        static_cast<int>(run.PieceBegin()), static_cast<int>(run.PieceEnd() - 1) };
-      volume->GenerateGhostArray(piece);
+      volume->GetPointData()->AddArray(array);
     }
   }
-
-  // Output 1: the phi = 0 surfaces of the piece, from the band; or, to keep
-  // some of them, from a copy of the dense phi (phi stays phi).
-  monitor.Stage(nv::OutputStage[0], nv::OutputStage[1]);
-  const nv::Settings& settings = run.GetSettings();
-  nv::PolyDataSink sink;
-  bool done = true;
-  if (!nv::SurfaceFromDenseCopy(settings, distributed))
+  if (outcome.VolumeBegin < run.PieceBegin() || outcome.VolumeEnd > run.PieceEnd())
   {
-    if (settings.Sheets != nv::Sheets::Both)
-    {
-      vtkWarningMacro(<< nv::OneSheetDistributedWarning());
-    }
-    done = run.ExtractSurface(sink);
+    // The piece without its ghost layers; the last node layer is shared
+    // with the next piece, which owns the cells above it.
+    int piece[6] = { 0, nx, 0, ny, static_cast<int>(run.PieceBegin()), static_cast<int>(run.PieceEnd() - 1) };
+    volume->GenerateGhostArray(piece);
   }
-  else
-  {
-    if (!settings.OutputVolume)
-    {
-      vtkWarningMacro(<< nv::OneSheetNeedsGridWarning());
-    }
-    std::vector<float> phi(dense.Phi->GetPointer(0), dense.Phi->GetPointer(0) + dense.Phi->GetNumberOfValues());
-    std::int64_t cavities = 0;
-    done = nv::ContourDense(run, phi.data(), sink, &monitor, cavities);
-    explained = nv::NoInnerSheet(settings, cavities);
-    if (explained)
-    {
-      vtkWarningMacro(<< nv::NoInnerSheetWarning());
-    }
-  }
-  run.ReleaseBand(); // the surface is made: what follows needs neither
-  if (done && settings.RemoveSmallPieces && !distributed && !monitor.Aborted())
-  {
-    // The surface's small parts go, and phi follows in the same regions.
-    removed = sink.RemoveSmallPieces(run.GetParameters().OffsetDistance, grid,
-      dense.Phi ? dense.Phi->GetPointer(0) : nullptr, volumeBegin, volumeEnd - volumeBegin);
-  }
-  surface->ShallowCopy(sink.Finish());
-  return done && !monitor.Aborted();
 }
 
 //------------------------------------------------------------------------------
@@ -542,7 +493,10 @@ std::shared_ptr<const nv::Sampling> vtkNarrowVolumeReconstruction::MeasureSampli
   {
     const auto start = std::chrono::steady_clock::now();
     auto sampling = std::make_shared<nv::Sampling>();
-    const bool complete = sampling->Measure(PointsOf(input), communicator, &monitor);
+    bool complete = false;
+    monitor.Stage(0.0, nv::SamplingStage);
+    nv::WithThreads(this->NumberOfThreads,
+      [&]() { complete = sampling->Measure(PointsOf(input), communicator, &monitor); });
     this->SamplingUnreported += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (measured)
     {

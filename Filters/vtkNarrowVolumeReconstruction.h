@@ -73,7 +73,7 @@ class Communicator;
 class Monitor;
 class Reconstruction;
 class Sampling;
-struct RemovedPieces;
+struct Outcome;
 struct Settings;
 struct SummaryArray;
 }
@@ -409,11 +409,12 @@ protected:
   bool IsDistributed(vtkInformationVector* outputVector) const;
   /// The properties, as the core takes them.
   nv::Settings GetSettings() const;
-  /// The volume piece and the surface of a finished run; false if aborted.
-  /// explained: a warning already said why the surface is empty.
+  /// The results of the last run (run null: none yet), for the Get...() methods.
+  void KeepResults(const nv::Reconstruction* run, const nv::Outcome& outcome);
+  /// Output 0 of a finished run: the grid's piece and the dense arrays.
   struct DenseArrays;
-  bool ProduceOutputs(nv::Reconstruction& run, nv::Monitor& monitor, const DenseArrays& dense,
-    vtkImageData* volume, vtkPolyData* surface, bool distributed, bool& explained, nv::RemovedPieces& removed);
+  void MakeVolume(
+    vtkImageData* volume, const nv::Reconstruction& run, const nv::Outcome& outcome, const DenseArrays& dense);
   /// The run's figures (nv::RunSummary) as the volume's field data.
   void AddRunSummary(vtkImageData* volume, const std::vector<nv::SummaryArray>& summary);
   /// The sampling of the input's points, measured once per input (collective
@@ -454,12 +455,6 @@ protected:
   double OffsetDistanceUsed = 0.0;
   double SampleSpacingUsed = 0.0;
   double ClosingRadiusUsed = 0.0;
-  double MedianPointSpacing = 0.0;
-  std::int64_t Gaps = 0;
-  double LargestGap = 0.0;
-  double LargestGapCenter[3] = { 0.0, 0.0, 0.0 };
-  std::int64_t RemovedPieces = 0;
-  std::int64_t RemovedVoids = 0;
   std::shared_ptr<const nv::Sampling> Sampled; ///< of the input at SampledTime
   vtkMTimeType SampledTime = 0;
   vtkIdType SampledPoints = -1;

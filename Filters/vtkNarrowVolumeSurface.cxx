@@ -55,8 +55,7 @@ VertexId* PolyDataSink::AddTriangles(std::int64_t n)
   return Extend(this->Connectivity.GetPointer(), 3 * n);
 }
 
-RemovedPieces PolyDataSink::RemoveSmallPieces(
-  double offset, const Grid& grid, float* phi, std::int64_t kBegin, std::int64_t layers)
+SurfaceArrays PolyDataSink::View()
 {
   SurfaceArrays arrays;
   arrays.Points = this->Points->GetPointer(0);
@@ -64,11 +63,14 @@ RemovedPieces PolyDataSink::RemoveSmallPieces(
   arrays.Triangles = this->Connectivity->GetPointer(0);
   arrays.NumberOfPoints = this->Points->GetNumberOfTuples();
   arrays.NumberOfTriangles = this->Connectivity->GetNumberOfTuples() / 3;
-  const RemovedPieces removed = nv::RemoveSmallPieces(arrays, offset, grid, phi, kBegin, layers);
-  this->Points->SetNumberOfTuples(arrays.NumberOfPoints);
-  this->Normals->SetNumberOfTuples(arrays.NumberOfPoints);
-  this->Connectivity->SetNumberOfTuples(3 * arrays.NumberOfTriangles);
-  return removed;
+  return arrays;
+}
+
+void PolyDataSink::Truncate(const SurfaceArrays& kept)
+{
+  this->Points->SetNumberOfTuples(kept.NumberOfPoints);
+  this->Normals->SetNumberOfTuples(kept.NumberOfPoints);
+  this->Connectivity->SetNumberOfTuples(3 * kept.NumberOfTriangles);
 }
 
 vtkSmartPointer<vtkPolyData> PolyDataSink::Finish()

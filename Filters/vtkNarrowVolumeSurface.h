@@ -7,7 +7,6 @@
 #ifndef vtkNarrowVolumeSurface_h
 #define vtkNarrowVolumeSurface_h
 
-#include "nvPieces.h"
 #include "nvSurface.h"
 
 #include "vtkNew.h"
@@ -28,10 +27,8 @@ public:
   ~PolyDataSink() override;
   void AddPoints(std::int64_t n, double*& xyz, float*& normals) override;
   VertexId* AddTriangles(std::int64_t n) override;
-  /// Removes the small pieces and voids of the surface received so far, in
-  /// place, and flips phi (may be null) in the same regions (nv::RemoveSmallPieces).
-  RemovedPieces RemoveSmallPieces(
-    double offset, const Grid& grid, float* phi, std::int64_t kBegin, std::int64_t layers);
+  SurfaceArrays View() override;
+  void Truncate(const SurfaceArrays& kept) override;
   /// The surface received so far.
   vtkSmartPointer<vtkPolyData> Finish();
 

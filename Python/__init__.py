@@ -35,9 +35,10 @@ else:
     FLAVOUR = "wheel"
 
 from ._reconstruct import ReconstructionError, ReconstructionWarning, reconstruct
+from ._version import __version__
 
 __all__ = ["vtkNarrowVolumeReconstruction", "vtkLASPointCloudReader", "vtkPCDPointCloudReader",
-           "vtkPointCloudTextReader", "reconstruct", "ReconstructionError", "ReconstructionWarning", "FLAVOUR"]
+           "vtkPointCloudTextReader", "reconstruct", "ReconstructionError", "ReconstructionWarning", "FLAVOUR", "__version__"]
 
 # With pyvista already imported, point sets get cloud.narrowvolume.reconstruct()
 # now (otherwise pyvista 0.48 and later load it through the wheel's entry point).

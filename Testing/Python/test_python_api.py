@@ -20,6 +20,7 @@ bit-identical outputs on the same points; NV_PYTHON runs the command line
 """
 import json
 import os
+import re
 import shutil
 import signal
 import subprocess
@@ -76,6 +77,16 @@ def test_flavour():
         assert narrowvolume.FLAVOUR == expected
     assert narrowvolume.FLAVOUR in ("vtk-module", "wheel")
     assert (narrowvolume.vtkPointCloudTextReader is None) == WHEEL
+
+
+def test_version():
+    """__version__ is the project's version (CMakeLists.txt's project(), which the wheel's metadata reads too)."""
+    with open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "CMakeLists.txt")) as f:
+        project = re.search(r"project\(NarrowVolume VERSION ([0-9.]+)", f.read()).group(1)
+    assert narrowvolume.__version__ == project
+    if WHEEL:
+        from importlib.metadata import version
+        assert version("narrowvolume") == project
 
 
 # --- The property table against the filter.

@@ -385,4 +385,13 @@ RemovedPieces RemoveSmallPieces(SurfaceArrays& surface, double offset, const Gri
   return removed;
 }
 
+RemovedPieces RemoveSmallPieces(SurfaceSink& sink, double offset, const Grid& grid, float* phi,
+  std::int64_t kBegin, std::int64_t layers)
+{
+  SurfaceArrays arrays = sink.View();
+  const RemovedPieces removed = RemoveSmallPieces(arrays, offset, grid, phi, kBegin, layers);
+  sink.Truncate(arrays);
+  return removed;
+}
+
 } // namespace nv

@@ -53,18 +53,6 @@ double SmallVoidVolume(double offset);
 bool FlipRegion(const Grid& grid, float* phi, std::int64_t kBegin, std::int64_t layers, const double* points,
   const std::vector<std::int64_t>& vertices, bool inside, double maximumVolume);
 
-/// A triangle surface in a sink's arrays: NumberOfPoints points (3 doubles
-/// each) with their normals (3 floats each), NumberOfTriangles triangles (3
-/// vertex ids each).
-struct SurfaceArrays
-{
-  double* Points = nullptr;
-  float* Normals = nullptr;
-  VertexId* Triangles = nullptr;
-  std::int64_t NumberOfPoints = 0;
-  std::int64_t NumberOfTriangles = 0;
-};
-
 /**
  * Removes the small pieces and voids from the surface, in place: each
  * connected part bounds a region whose signed volume (divergence theorem,
@@ -77,6 +65,10 @@ struct SurfaceArrays
  * (FlipRegion), so that contouring it gives the same surface.
  */
 RemovedPieces RemoveSmallPieces(SurfaceArrays& surface, double offset, const Grid& grid, float* phi,
+  std::int64_t kBegin, std::int64_t layers);
+
+/// The same on the surface a sink received, in its own arrays.
+RemovedPieces RemoveSmallPieces(SurfaceSink& sink, double offset, const Grid& grid, float* phi,
   std::int64_t kBegin, std::int64_t layers);
 
 } // namespace nv

@@ -511,6 +511,24 @@ VertexId* SurfaceMesh::AddTriangles(std::int64_t n)
   return this->Triangles.data() + this->Triangles.size() - 3 * n;
 }
 
+SurfaceArrays SurfaceMesh::View()
+{
+  SurfaceArrays arrays;
+  arrays.Points = this->Points.data();
+  arrays.Normals = this->Normals.data();
+  arrays.Triangles = this->Triangles.data();
+  arrays.NumberOfPoints = static_cast<std::int64_t>(this->Points.size() / 3);
+  arrays.NumberOfTriangles = static_cast<std::int64_t>(this->Triangles.size() / 3);
+  return arrays;
+}
+
+void SurfaceMesh::Truncate(const SurfaceArrays& kept)
+{
+  this->Points.resize(static_cast<std::size_t>(3 * kept.NumberOfPoints));
+  this->Normals.resize(static_cast<std::size_t>(3 * kept.NumberOfPoints));
+  this->Triangles.resize(static_cast<std::size_t>(3 * kept.NumberOfTriangles));
+}
+
 bool ContourBricks(const Grid& grid, const BrickField& field, SurfaceSink& sink, std::int64_t layerBegin,
   std::int64_t layerEnd, Monitor* monitor)
 {

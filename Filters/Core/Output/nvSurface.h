@@ -39,7 +39,21 @@ class Monitor;
 /// (vtkIdType), so that a sink can hand out a VTK array's own memory.
 using VertexId = long long;
 
-/// Receives the surface as it is made, brick layer by brick layer.
+/// A triangle surface in a sink's arrays: NumberOfPoints points (3 doubles
+/// each) with their normals (3 floats each), NumberOfTriangles triangles (3
+/// vertex ids each).
+struct SurfaceArrays
+{
+  double* Points = nullptr;
+  float* Normals = nullptr;
+  VertexId* Triangles = nullptr;
+  std::int64_t NumberOfPoints = 0;
+  std::int64_t NumberOfTriangles = 0;
+};
+
+/// Receives the surface as it is made, brick layer by brick layer, into
+/// arrays of its own (a VTK array's, a numpy array's), which later steps
+/// edit in place (nvPieces.h).
 class SurfaceSink
 {
 public:
@@ -50,6 +64,10 @@ public:
   /// Room for n more triangles, filled likewise: three vertex ids each
   /// (vertices numbered from 0 in the order of their room).
   virtual VertexId* AddTriangles(std::int64_t n) = 0;
+  /// The surface received so far, in the sink's arrays.
+  virtual SurfaceArrays View() = 0;
+  /// Keeps the first kept.NumberOfPoints points and kept.NumberOfTriangles triangles.
+  virtual void Truncate(const SurfaceArrays& kept) = 0;
 };
 
 /// A sink that keeps the surface in plain arrays.
@@ -58,6 +76,8 @@ class SurfaceMesh : public SurfaceSink
 public:
   void AddPoints(std::int64_t n, double*& xyz, float*& normals) override;
   VertexId* AddTriangles(std::int64_t n) override;
+  SurfaceArrays View() override;
+  void Truncate(const SurfaceArrays& kept) override;
   std::vector<double> Points;
   std::vector<float> Normals;
   std::vector<VertexId> Triangles;

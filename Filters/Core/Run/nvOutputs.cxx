@@ -7,10 +7,20 @@
 #include "nvSurface.h"
 #include "nvSurfaceField.h"
 
+#include <chrono>
 #include <sstream>
 
 namespace nv
 {
+
+VolumeContents DenseArraysAsked(const Settings& settings)
+{
+  VolumeContents contents;
+  contents.InitialPhi = settings.OutputVolume && settings.OutputInitialPhi;
+  contents.Distance = settings.OutputVolume && settings.OutputDistance;
+  contents.Band = settings.OutputVolume && settings.OutputNarrowBand;
+  return contents;
+}
 
 bool NeedsDenseVolume(const Settings& settings, bool distributed)
 {
@@ -38,6 +48,118 @@ bool ContourDense(
 bool NoInnerSheet(const Settings& settings, std::int64_t cavities)
 {
   return settings.Sheets == Sheets::Inner && cavities == 0;
+}
+
+namespace
+{
+/// Steps 3 and 4: the surface of this process's piece into the sink, and
+/// its small pieces removed. Returns false if the monitor stopped it.
+/// noInnerSheet: a warning said why the surface is empty.
+bool MakeSurface(Reconstruction& run, SurfaceSink& sink, const VolumeArrays& dense, bool distributed,
+  Outcome& outcome, bool& noInnerSheet)
+{
+  const Settings& settings = run.GetSettings();
+  Monitor* monitor = run.GetMonitor();
+  if (monitor)
+  {
+    monitor->Stage(OutputStage[0], OutputStage[1]);
+  }
+  bool done = true;
+  if (!SurfaceFromDenseCopy(settings, distributed))
+  {
+    if (settings.Sheets != Sheets::Both)
+    {
+      outcome.Warnings.push_back(OneSheetDistributedWarning());
+    }
+    done = run.ExtractSurface(sink);
+  }
+  else
+  {
+    // From a copy of the dense phi (phi stays phi), which KeepSheets rewrites.
+    if (!settings.OutputVolume)
+    {
+      outcome.Warnings.push_back(OneSheetNeedsGridWarning());
+    }
+    const std::int64_t nodes = run.GetGrid().NumberOfNodes();
+    std::vector<float> phi(dense.Phi, dense.Phi + nodes);
+    std::int64_t cavities = 0;
+    done = ContourDense(run, phi.data(), sink, monitor, cavities);
+    noInnerSheet = NoInnerSheet(settings, cavities);
+    if (noInnerSheet)
+    {
+      outcome.Warnings.push_back(NoInnerSheetWarning());
+    }
+  }
+  run.ReleaseBand(); // the surface is made: what follows needs neither
+  const bool stopped = monitor && monitor->Aborted();
+  if (done && settings.RemoveSmallPieces && !distributed && !stopped)
+  {
+    // The surface's small parts go, and phi follows in the same regions.
+    WithThreads(settings.NumberOfThreads, [&]() {
+      outcome.Removed = RemoveSmallPieces(sink, run.GetParameters().OffsetDistance, run.GetGrid(),
+        outcome.DenseArrays ? dense.Phi : nullptr, outcome.VolumeBegin, outcome.VolumeEnd - outcome.VolumeBegin);
+    });
+  }
+  return done && !(monitor && monitor->Aborted());
+}
+} // namespace
+
+Outcome Reconstruct(Reconstruction& run, std::vector<double> xyz, std::shared_ptr<const Sampling> sampling,
+  SurfaceSink& sink, const VolumeRequest& volume, bool distributed)
+{
+  Outcome outcome;
+  // 1. The dense arrays, filled by the run: for output 0, or for keeping
+  // one sheet (KeepSheets works on the whole grid, so not when distributed).
+  VolumeArrays dense;
+  if (NeedsDenseVolume(run.GetSettings(), distributed))
+  {
+    const std::int64_t ghosts = run.GetSettings().OutputVolume ? volume.GhostLayers : 0;
+    run.RequestVolume(ghosts, [&](std::int64_t kBegin, std::int64_t kEnd) {
+      dense = volume.Allocate(kBegin, kEnd);
+      outcome.DenseArrays = true;
+      return dense;
+    });
+  }
+  // 2. Steps 1-6.
+  if (!run.Run(std::move(xyz), std::move(sampling)))
+  {
+    outcome.Error = run.Error();
+    return outcome;
+  }
+  outcome.Ran = true;
+  // 3, 4. The surface of this process's piece, its small pieces removed.
+  const auto start = std::chrono::steady_clock::now();
+  bool done = true;
+  bool explained = false;
+  if (!run.EmptyPiece())
+  {
+    outcome.VolumeBegin = outcome.DenseArrays ? run.VolumeBegin() : run.PieceBegin();
+    outcome.VolumeEnd = outcome.DenseArrays ? run.VolumeEnd() : run.PieceEnd();
+    done = MakeSurface(run, sink, dense, distributed, outcome, explained);
+  }
+  outcome.OutputSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  // 5. Every process agrees whether the run is done, whatever stage it
+  // stopped in; the first speaks for the whole result.
+  outcome.Done = !run.Anywhere(!done);
+  const double surfacePoints = run.SumAll(static_cast<double>(sink.View().NumberOfPoints));
+  if (!outcome.Done)
+  {
+    return outcome;
+  }
+  if (run.FirstProcess())
+  {
+    const double offset = run.GetParameters().OffsetDistance;
+    if (run.GetGaps().Gaps > 0)
+    {
+      outcome.Warnings.push_back(GapWarning(run.GetGaps(), offset, run.GetPlan().ClosingRadius));
+    }
+    if (surfacePoints == 0 && !explained)
+    {
+      outcome.Warnings.push_back(EmptySurfaceWarning(offset, run.GetGrid().Spacing));
+    }
+  }
+  outcome.Summary = RunSummary(run, outcome.Removed);
+  return outcome;
 }
 
 std::vector<SummaryArray> RunSummary(const Reconstruction& run, const RemovedPieces& removed)

@@ -268,6 +268,11 @@ bool Reconstruction::Fail(const std::string& message)
 }
 
 //------------------------------------------------------------------------------
+bool Reconstruction::FirstProcess() const
+{
+  return !this->Comm || this->Comm->Rank() == 0;
+}
+
 bool Reconstruction::Run(std::vector<double> xyz, std::shared_ptr<const Sampling> measured)
 {
   bool ok = false;

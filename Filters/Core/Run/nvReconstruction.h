@@ -105,6 +105,12 @@ public:
   const std::string& Error() const { return this->Message; }
   bool Aborted() const { return this->Stopped; }
 
+  /// The monitor the run reports to (may be null).
+  Monitor* GetMonitor() const { return this->TheMonitor; }
+  /// Whether this is the first process (or the only one): the one that
+  /// speaks for the whole result.
+  bool FirstProcess() const;
+
   /// Collective: whether `flag` is true on any process (itself when serial).
   bool Anywhere(bool flag);
   /// Collective: the sum over processes (itself when serial).
