@@ -5,9 +5,10 @@
 The run is the core's (narrowvolume._core, the same C++ as the C++ filter's,
 its loops on std::threads), and so are the surface (marching cubes in the
 band's bricks, as in the C++ filter), the small pieces' removal, the
-warnings and the field data: this file only converts, as
-vtkNarrowVolumeReconstruction.cxx does, in the order of the core's
-nvOutputs.h. The arrays the core fills reach VTK without a copy.
+warnings and the field data: one call of the core's nv::Reconstruct
+(nvOutputs.h) makes them, and this file only converts, as
+vtkNarrowVolumeReconstruction.cxx does. The arrays the core fills reach VTK
+without a copy.
 
 Not in this flavour: SetController (distributed runs under MPI need the
 VTK-wrapped filter of the CMake build).
@@ -291,15 +292,10 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
 
     def _run(self, data, volume, surface):
         """The run and its outputs, as vtkNarrowVolumeReconstruction::RequestData:
-        the run's summary, or None when it failed or stopped."""
-        settings = self._settings
+        the core's nv::Reconstruct makes them; this converts. The run's
+        summary, or None when it failed or stopped."""
         monitor = _core.Monitor(report=self.UpdateProgress, poll=lambda: bool(self.GetAbortExecute()))
-        run = _core.Reconstruction(settings, monitor)
-        if _core.NeedsDenseVolume(settings):
-            # The optional arrays belong to the volume output: none without it.
-            volume_on = bool(settings.OutputVolume)
-            run.RequestVolume(volume_on and settings.OutputInitialPhi, volume_on and settings.OutputDistance,
-                              volume_on and settings.OutputNarrowBand)
+        run = _core.Reconstruction(self._settings, monitor)
         monitor.Stage(0.0, _core.SamplingStage)
         sampling, _ = self._measure_sampling(data, monitor)
         # The measurement's seconds go to the first run that uses it (it may
@@ -307,68 +303,45 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
         self._sampling_time, self._sampling_unreported = self._sampling_unreported, 0.0
         if sampling is None:  # stopped (AbortExecute)
             return None
-        if not run.Run(_points_of(data), sampling):
-            if run.Error():
-                self._error(run.Error())
-            return None
-        self._grid_nodes = run.GetGrid().NumberOfNodes()
-        self._band_nodes = run.NumberOfBandNodes()
-        self._changes = tuple(run.RelativeChanges())
-        offset = run.GetParameters().OffsetDistance
-        self._used = (offset, run.GetGrid().Spacing, run.GetPlan().ClosingRadius)
-        start = time.perf_counter()
-        done, explained, removed = self._produce_outputs(run, monitor, volume, surface)
-        self._times = (run.SetupSeconds(), run.EvolutionSeconds(), time.perf_counter() - start)
-        if not done:
-            return None
-        if run.GetGaps().Gaps > 0:
-            self._warning(_core.GapWarning(run.GetGaps(), offset, run.GetPlan().ClosingRadius))
-        if surface.GetNumberOfPoints() == 0 and not explained:
-            self._warning(_core.EmptySurfaceWarning(offset, run.GetGrid().Spacing))
-        return run.RunSummary(*removed)
-
-    def _produce_outputs(self, run, monitor, volume, surface):
-        """The volume and the surface of a finished run (nvOutputs.h):
-        (done, whether a warning explained an empty surface, (pieces, voids) removed)."""
-        settings = run.GetSettings()
-        grid = run.GetGrid()
-        nx, ny, nz = grid.Dims
-        dense = run.TakeVolume()  # {name: numpy array} of the layers VolumeBegin to VolumeEnd
-        begin, end = (run.VolumeBegin(), run.VolumeEnd()) if dense else (0, nz)
-        volume.SetOrigin(tuple(grid.Origin))
-        volume.SetSpacing((grid.Spacing,) * 3)
-        volume.SetExtent(0, nx - 1, 0, ny - 1, begin, end - 1)
-        if settings.OutputVolume:
-            for name, values in dense.items():
-                kind = vtkUnsignedCharArray if name == "NarrowBand" else vtkFloatArray
-                array = _vtk_array(kind, name, values)
-                if name == "phi":
-                    volume.GetPointData().SetScalars(array)
-                else:
-                    volume.GetPointData().AddArray(array)
-
-        # The surface, from the band; or, to keep some sheets, from a copy of
-        # the dense phi (phi stays phi).
-        monitor.Stage(*_core.OutputStage)
         sink = _core.MeshSink()
-        explained = False
-        if not _core.SurfaceFromDenseCopy(settings):
-            done = run.ExtractSurface(sink)
-        else:
-            if not settings.OutputVolume:
-                self._warning(_core.OneSheetNeedsGridWarning())
-            done, cavities = run.ContourDense(np.array(dense["phi"]), sink)
-            explained = _core.NoInnerSheet(settings, cavities)
-            if explained:
-                self._warning(_core.NoInnerSheetWarning())
-        run.ReleaseBand()  # the surface is made: what follows needs neither
-        removed = (0, 0)
-        if done and settings.RemoveSmallPieces and not monitor.Aborted():
-            # The surface's small parts go, and phi follows in the same regions.
-            removed = sink.RemoveSmallPieces(run.GetParameters().OffsetDistance, grid,
-                                             dense["phi"] if settings.OutputVolume else None, begin, end - begin)
+        outcome = run.Reconstruct(_points_of(data), sampling, sink)
+        if outcome.Ran:
+            self._grid_nodes = run.GetGrid().NumberOfNodes()
+            self._band_nodes = run.NumberOfBandNodes()
+            self._changes = tuple(run.RelativeChanges())
+            self._used = (run.GetParameters().OffsetDistance, run.GetGrid().Spacing, run.GetPlan().ClosingRadius)
+            self._times = (run.SetupSeconds(), run.EvolutionSeconds(), outcome.OutputSeconds)
+        if outcome.Error:
+            self._error(outcome.Error)
+        for warning in outcome.Warnings:
+            self._warning(warning)
+        if not outcome.Done:
+            return None
+        _make_volume(volume, run, outcome)
         surface.ShallowCopy(_polydata(*sink.Take()))
-        return done and not monitor.Aborted(), explained, removed
+        return outcome.Summary
+
+
+def _make_volume(volume, run, outcome):
+    """Output 0 of a finished run: the grid's geometry and the dense arrays
+    (as vtkNarrowVolumeReconstruction::MakeVolume), without copies."""
+    grid = run.GetGrid()
+    nx, ny, _ = grid.Dims
+    dense = run.TakeVolume()  # {name: numpy array} of the layers VolumeBegin to VolumeEnd
+    if outcome.VolumeEnd <= outcome.VolumeBegin:
+        return
+    volume.SetOrigin(tuple(grid.Origin))
+    volume.SetSpacing((grid.Spacing,) * 3)
+    volume.SetExtent(0, nx - 1, 0, ny - 1, outcome.VolumeBegin, outcome.VolumeEnd - 1)
+    if not run.GetSettings().OutputVolume:
+        return
+    for name, values in dense.items():
+        kind = vtkUnsignedCharArray if name == "NarrowBand" else vtkFloatArray
+        array = _vtk_array(kind, name, values)
+        if name == "phi":
+            volume.GetPointData().SetScalars(array)
+        else:
+            volume.GetPointData().AddArray(array)
 
 
 def _points_of(data):

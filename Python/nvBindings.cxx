@@ -5,8 +5,8 @@
 // through these names, which are the core's own (nvReconstruction.h,
 // nvOutputs.h, nvSampling.h): nothing of the method is decided here.
 //
-// The GIL is released while the core computes (Measure, Run, ExtractSurface,
-// ContourDense, RemoveSmallPieces). The core reports progress and asks
+// The GIL is released while the core computes (Sampling.Measure,
+// Reconstruction.Reconstruct: nv::Reconstruct, the run and its outputs). The core reports progress and asks
 // whether to stop on the calling thread only (nv::CallerMonitor): there the
 // monitor takes the GIL back, runs Python's signal handlers (Ctrl-C raises
 // KeyboardInterrupt) and calls the Python callbacks. An exception from
@@ -17,10 +17,8 @@
 // VTK without a copy either.
 #include "nvOutputs.h"
 #include "nvParallel.h"
-#include "nvPieces.h"
 #include "nvReconstruction.h"
 #include "nvSampling.h"
-#include "nvSheets.h"
 #include "nvSurface.h"
 
 #include <nanobind/nanobind.h>
@@ -202,7 +200,7 @@ public:
   {
     return this->Triangles.Extend(static_cast<std::size_t>(3 * n));
   }
-  nv::SurfaceArrays View()
+  nv::SurfaceArrays View() override
   {
     nv::SurfaceArrays arrays;
     arrays.Points = this->Points.Get();
@@ -212,7 +210,7 @@ public:
     arrays.NumberOfTriangles = static_cast<std::int64_t>(this->Triangles.GetSize() / 3);
     return arrays;
   }
-  void Truncate(const nv::SurfaceArrays& arrays)
+  void Truncate(const nv::SurfaceArrays& arrays) override
   {
     this->Points.Truncate(static_cast<std::size_t>(3 * arrays.NumberOfPoints));
     this->Normals.Truncate(static_cast<std::size_t>(3 * arrays.NumberOfPoints));
@@ -224,10 +222,11 @@ public:
   Buffer<nv::VertexId> Triangles;
 };
 
-/// The dense arrays a run fills, allocated when the run asks.
+/// The dense arrays a run fills (phi, and those the settings ask for),
+/// allocated when the run asks.
 struct VolumeBuffers
 {
-  bool InitialPhi = false, Distance = false, Band = false;
+  nv::VolumeContents Contents;
   Buffer<float> PhiValues, InitialPhiValues, DistanceValues;
   Buffer<unsigned char> BandValues;
 
@@ -235,9 +234,9 @@ struct VolumeBuffers
   {
     nv::VolumeArrays arrays;
     arrays.Phi = this->PhiValues.Extend(nodes);
-    arrays.InitialPhi = this->InitialPhi ? this->InitialPhiValues.Extend(nodes) : nullptr;
-    arrays.Distance = this->Distance ? this->DistanceValues.Extend(nodes) : nullptr;
-    arrays.Band = this->Band ? this->BandValues.Extend(nodes) : nullptr;
+    arrays.InitialPhi = this->Contents.InitialPhi ? this->InitialPhiValues.Extend(nodes) : nullptr;
+    arrays.Distance = this->Contents.Distance ? this->DistanceValues.Extend(nodes) : nullptr;
+    arrays.Band = this->Contents.Band ? this->BandValues.Extend(nodes) : nullptr;
     return arrays;
   }
 };
@@ -252,30 +251,25 @@ public:
   {
   }
 
-  void RequestVolume(bool initialPhi, bool distance, bool band)
-  {
-    this->Volume.reset(new VolumeBuffers);
-    this->Volume->InitialPhi = initialPhi;
-    this->Volume->Distance = distance;
-    this->Volume->Band = band;
-    VolumeBuffers* buffers = this->Volume.get();
-    const nv::Reconstruction& run = this->Run;
-    this->Run.RequestVolume(0, [buffers, &run](std::int64_t kBegin, std::int64_t kEnd) {
-      const nv::Grid& grid = run.GetGrid();
-      return buffers->Allocate(static_cast<std::size_t>(grid.Dims[0] * grid.Dims[1] * (kEnd - kBegin)));
-    });
-  }
-
-  bool Start(Points points, std::shared_ptr<const nv::Sampling> sampling)
+  /// The whole run and its outputs (nv::Reconstruct), without the GIL: the
+  /// surface into the sink, the dense arrays for TakeVolume.
+  nv::Outcome Reconstruct(Points points, std::shared_ptr<const nv::Sampling> sampling, MeshSink& sink)
   {
     std::vector<double> xyz(points.data(), points.data() + 3 * points.shape(0));
-    bool ok = false;
+    nv::VolumeRequest request;
+    request.Allocate = [this](std::int64_t kBegin, std::int64_t kEnd) {
+      const nv::Grid& grid = this->Run.GetGrid();
+      this->Volume.reset(new VolumeBuffers);
+      this->Volume->Contents = nv::DenseArraysAsked(this->Run.GetSettings());
+      return this->Volume->Allocate(static_cast<std::size_t>(grid.Dims[0] * grid.Dims[1] * (kEnd - kBegin)));
+    };
+    nv::Outcome outcome;
     {
       nb::gil_scoped_release release;
-      ok = this->Run.Run(std::move(xyz), std::move(sampling));
+      outcome = nv::Reconstruct(this->Run, std::move(xyz), std::move(sampling), sink, request, false);
     }
     this->RaisePending();
-    return ok;
+    return outcome;
   }
 
   /// {name: numpy array} of the filled dense arrays (once).
@@ -285,48 +279,21 @@ public:
     if (this->Volume)
     {
       arrays["phi"] = this->Volume->PhiValues.Release(1);
-      if (this->Volume->InitialPhi)
+      if (this->Volume->Contents.InitialPhi)
       {
         arrays["InitialPhi"] = this->Volume->InitialPhiValues.Release(1);
       }
-      if (this->Volume->Distance)
+      if (this->Volume->Contents.Distance)
       {
         arrays["Distance"] = this->Volume->DistanceValues.Release(1);
       }
-      if (this->Volume->Band)
+      if (this->Volume->Contents.Band)
       {
         arrays["NarrowBand"] = this->Volume->BandValues.Release(1);
       }
       this->Volume.reset();
     }
     return arrays;
-  }
-
-  bool ExtractSurface(MeshSink& sink)
-  {
-    bool done = false;
-    {
-      nb::gil_scoped_release release;
-      done = this->Run.ExtractSurface(sink);
-    }
-    this->RaisePending();
-    return done;
-  }
-
-  std::pair<bool, std::int64_t> ContourDense(FloatArray phi, MeshSink& sink)
-  {
-    if (static_cast<std::int64_t>(phi.size()) != this->Run.GetGrid().NumberOfNodes())
-    {
-      throw std::invalid_argument("ContourDense: phi must hold one value per grid node");
-    }
-    std::int64_t cavities = 0;
-    bool done = false;
-    {
-      nb::gil_scoped_release release;
-      done = nv::ContourDense(this->Run, phi.data(), sink, this->Watch.get(), cavities);
-    }
-    this->RaisePending();
-    return { done, cavities };
   }
 
   void RaisePending()
@@ -402,11 +369,6 @@ NB_MODULE(_core, m)
     .def_ro("MedianSpacing", &nv::SamplingStatistics::MedianSpacing)
     .def_ro("WideSpacing", &nv::SamplingStatistics::WideSpacing)
     .def("Valid", &nv::SamplingStatistics::Valid);
-  nb::class_<nv::GapReport>(m, "GapReport", "The holes of the sampling left open (nvGapClosing.h).")
-    .def_ro("Gaps", &nv::GapReport::Gaps)
-    .def_ro("GapPoints", &nv::GapReport::GapPoints)
-    .def_ro("LargestGap", &nv::GapReport::LargestGap)
-    .def_prop_ro("LargestGapCenter", [](const nv::GapReport& g) { return g.LargestGapCenter; });
   nb::class_<nv::Sampling>(m, "Sampling", "The sampling of a cloud (nv::Sampling), measured once per cloud.")
     .def_static(
       "Measure",
@@ -472,25 +434,6 @@ NB_MODULE(_core, m)
   nb::class_<MeshSink>(m, "MeshSink", "Receives the surface the core makes.")
     .def(nb::init<>())
     .def(
-      "RemoveSmallPieces",
-      [](MeshSink& sink, double offset, const nv::Grid& grid, std::optional<FloatArray> phi, std::int64_t kBegin,
-        std::int64_t layers) {
-        if (phi && static_cast<std::int64_t>(phi->size()) != grid.Dims[0] * grid.Dims[1] * layers)
-        {
-          throw std::invalid_argument("RemoveSmallPieces: phi must hold the given node layers");
-        }
-        nv::SurfaceArrays arrays = sink.View();
-        nv::RemovedPieces removed;
-        {
-          nb::gil_scoped_release release;
-          removed = nv::RemoveSmallPieces(arrays, offset, grid, phi ? phi->data() : nullptr, kBegin, layers);
-        }
-        sink.Truncate(arrays);
-        return std::make_pair(removed.Pieces, removed.Voids);
-      },
-      "offset"_a, "grid"_a, "phi"_a = nb::none(), "k_begin"_a = 0, "layers"_a = 0,
-      "Removes the small pieces and voids (nvPieces.h) and flips phi in the same regions; (pieces, voids).")
-    .def(
       "Take",
       [](MeshSink& sink) {
         return nb::make_tuple(sink.Points.Release(3), sink.Normals.Release(3), sink.Triangles.Release(3));
@@ -498,41 +441,20 @@ NB_MODULE(_core, m)
       "(points (n, 3) float64, normals (n, 3) float32, triangles (m, 3) int64), without a copy; the sink is "
       "empty afterwards.");
 
-  nb::class_<PythonRun>(m, "Reconstruction", "The whole run of the method (nv::Reconstruction), serial.")
-    .def(nb::init<const nv::Settings&, std::shared_ptr<PythonMonitor>>(), "settings"_a, "monitor"_a = nb::none())
-    .def("RequestVolume", &PythonRun::RequestVolume, "initial_phi"_a = false, "distance"_a = false,
-      "band"_a = false, "Asks the run to fill phi (and these arrays) on the grid.")
-    .def("Run", &PythonRun::Start, "points"_a, "sampling"_a = nb::none(),
-      "Steps 1-6 for the points ((n, 3) float64, C order), without the GIL. False when the run stops: "
-      "Error() says why, or Aborted(). sampling: the points' Sampling, if measured already.")
-    .def("TakeVolume", &PythonRun::TakeVolume, "{name: numpy array} of the dense arrays the run filled.")
-    .def("ExtractSurface", &PythonRun::ExtractSurface, "sink"_a, "Step 7: the phi = 0 surface from the band.")
-    .def("ReleaseBand", [](PythonRun& r) { r.Run.ReleaseBand(); },
-      "Frees the band and phi once the surface is made.")
-    .def("ContourDense", &PythonRun::ContourDense, "phi"_a, "sink"_a,
-      "The surface of the sheets the settings keep, from a copy of the dense phi: (done, cavities).")
-    .def("Error", [](const PythonRun& r) { return r.Run.Error(); })
-    .def("Aborted", [](const PythonRun& r) { return r.Run.Aborted(); })
-    .def("GetSettings", [](const PythonRun& r) { return r.Run.GetSettings(); })
-    .def("GetGrid", [](const PythonRun& r) { return r.Run.GetGrid(); })
-    .def("GetParameters", [](const PythonRun& r) { return r.Run.GetParameters(); })
-    .def("GetPlan", [](const PythonRun& r) { return r.Run.GetPlan(); })
-    .def("GetSampling", [](const PythonRun& r) { return r.Run.GetSampling(); })
-    .def("GetGaps", [](const PythonRun& r) { return r.Run.GetGaps(); })
-    .def("VolumeBegin", [](const PythonRun& r) { return r.Run.VolumeBegin(); })
-    .def("VolumeEnd", [](const PythonRun& r) { return r.Run.VolumeEnd(); })
-    .def("NumberOfBandNodes", [](const PythonRun& r) { return r.Run.NumberOfBandNodes(); })
-    .def("RelativeChanges", [](const PythonRun& r) { return r.Run.RelativeChanges(); })
-    .def("SetupSeconds", [](const PythonRun& r) { return r.Run.SetupSeconds(); })
-    .def("EvolutionSeconds", [](const PythonRun& r) { return r.Run.EvolutionSeconds(); })
-    .def(
-      "RunSummary",
-      [](const PythonRun& r, std::int64_t pieces, std::int64_t voids) {
-        nv::RemovedPieces removed;
-        removed.Pieces = pieces;
-        removed.Voids = voids;
+  nb::class_<nv::Outcome>(m, "Outcome", "What Reconstruction.Reconstruct made besides its arrays (nv::Outcome).")
+    .def_ro("Done", &nv::Outcome::Done)
+    .def_ro("Ran", &nv::Outcome::Ran)
+    .def_ro("Error", &nv::Outcome::Error)
+    .def_ro("Warnings", &nv::Outcome::Warnings)
+    .def_ro("VolumeBegin", &nv::Outcome::VolumeBegin)
+    .def_ro("VolumeEnd", &nv::Outcome::VolumeEnd)
+    .def_ro("DenseArrays", &nv::Outcome::DenseArrays)
+    .def_ro("OutputSeconds", &nv::Outcome::OutputSeconds)
+    .def_prop_ro(
+      "Summary",
+      [](const nv::Outcome& outcome) {
         nb::list summary;
-        for (const nv::SummaryArray& array : nv::RunSummary(r.Run, removed))
+        for (const nv::SummaryArray& array : outcome.Summary)
         {
           const char* kind = array.Kind == nv::SummaryArray::Int ? "int"
             : array.Kind == nv::SummaryArray::Id                 ? "id"
@@ -541,15 +463,24 @@ NB_MODULE(_core, m)
         }
         return summary;
       },
-      "pieces"_a, "voids"_a, "[(name, 'int' | 'id' | 'double', components, values)]: the volume's field data.");
+      "[(name, 'int' | 'id' | 'double', components, values)]: the volume's field data.");
 
-  m.def("NeedsDenseVolume", &nv::NeedsDenseVolume, "settings"_a, "distributed"_a = false);
-  m.def("SurfaceFromDenseCopy", &nv::SurfaceFromDenseCopy, "settings"_a, "distributed"_a = false);
-  m.def("NoInnerSheet", &nv::NoInnerSheet, "settings"_a, "cavities"_a);
-  m.def("GapWarning", &nv::GapWarning, "gaps"_a, "offset"_a, "closing_radius"_a);
-  m.def("EmptySurfaceWarning", &nv::EmptySurfaceWarning, "offset"_a, "spacing"_a);
-  m.def("NoInnerSheetWarning", &nv::NoInnerSheetWarning);
-  m.def("OneSheetNeedsGridWarning", &nv::OneSheetNeedsGridWarning);
-  m.attr("OutputStage") = nb::make_tuple(nv::OutputStage[0], nv::OutputStage[1]);
+  nb::class_<PythonRun>(m, "Reconstruction", "The whole run of the method (nv::Reconstruction), serial.")
+    .def(nb::init<const nv::Settings&, std::shared_ptr<PythonMonitor>>(), "settings"_a, "monitor"_a = nb::none())
+    .def("Reconstruct", &PythonRun::Reconstruct, "points"_a, "sampling"_a.none(), "sink"_a,
+      "The run on the points ((n, 3) float64, C order) and its outputs (nv::Reconstruct), without the GIL: "
+      "the surface into the sink, the dense arrays for TakeVolume; returns the Outcome. sampling: the "
+      "points' Sampling, if measured already (None: measured here).")
+    .def("TakeVolume", &PythonRun::TakeVolume, "{name: numpy array} of the dense arrays the run filled.")
+    .def("Aborted", [](const PythonRun& r) { return r.Run.Aborted(); })
+    .def("GetSettings", [](const PythonRun& r) { return r.Run.GetSettings(); })
+    .def("GetGrid", [](const PythonRun& r) { return r.Run.GetGrid(); })
+    .def("GetParameters", [](const PythonRun& r) { return r.Run.GetParameters(); })
+    .def("GetPlan", [](const PythonRun& r) { return r.Run.GetPlan(); })
+    .def("NumberOfBandNodes", [](const PythonRun& r) { return r.Run.NumberOfBandNodes(); })
+    .def("RelativeChanges", [](const PythonRun& r) { return r.Run.RelativeChanges(); })
+    .def("SetupSeconds", [](const PythonRun& r) { return r.Run.SetupSeconds(); })
+    .def("EvolutionSeconds", [](const PythonRun& r) { return r.Run.EvolutionSeconds(); });
+
   m.attr("SamplingStage") = nv::SamplingStage;
 }

@@ -349,7 +349,7 @@ def test_ctrl_c_from_progress():
 def test_ctrl_c_while_the_core_runs():
     """Ctrl-C from outside while the core computes (the GIL released), with
     no Python callback at all: the binding's monitor polls Python's signals
-    between the core's steps, the run stops, Run raises KeyboardInterrupt."""
+    between the core's steps, the run stops, Reconstruct raises KeyboardInterrupt."""
     from narrowvolume import _core
     settings = _core.Settings()
     settings.OffsetDistance, settings.SampleSpacing = 0.1, 0.01
@@ -365,7 +365,7 @@ def test_ctrl_c_while_the_core_runs():
     start = time.perf_counter()
     timer.start()
     with pytest.raises(KeyboardInterrupt):
-        run.Run(np.ascontiguousarray(SPHERE))
+        run.Reconstruct(np.ascontiguousarray(SPHERE), None, _core.MeshSink())
     end = time.perf_counter()
     timer.join()
     print("interrupted %.3f s after Ctrl-C, %.2f s into the run" % (end - sent[0], end - start))

@@ -22,16 +22,29 @@ VolumeContents DenseArraysAsked(const Settings& settings)
   return contents;
 }
 
+namespace
+{
+/// The progress stage of the outputs (the run itself takes [0, 0.65)): begin, width.
+constexpr double OutputStage[2] = { 0.65, 0.35 };
+
+/// Whether the run fills dense arrays (RequestVolume): for output 0, or to
+/// keep one sheet (KeepSheets needs the whole grid, which a distributed run
+/// does not have: there both sheets are kept).
 bool NeedsDenseVolume(const Settings& settings, bool distributed)
 {
   return settings.OutputVolume || (settings.Sheets != Sheets::Both && !distributed);
 }
 
+/// Whether the surface comes from a copy of the dense phi (one sheet kept)
+/// rather than from the band.
 bool SurfaceFromDenseCopy(const Settings& settings, bool distributed)
 {
   return settings.Sheets != Sheets::Both && !distributed;
 }
 
+/// The surface of the sheets the settings keep, from `phi`, a copy of the
+/// dense phi on the whole grid, which KeepSheets rewrites. Returns false if
+/// the monitor stopped it; `cavities`: KeepSheets' count (NoInnerSheet).
 bool ContourDense(
   const Reconstruction& run, float* phi, SurfaceSink& sink, Monitor* monitor, std::int64_t& cavities)
 {
@@ -45,13 +58,86 @@ bool ContourDense(
   return done;
 }
 
+/// Whether the chosen sheets left nothing because the shell encloses no
+/// cavity: an open input has no inner sheet.
 bool NoInnerSheet(const Settings& settings, std::int64_t cavities)
 {
   return settings.Sheets == Sheets::Inner && cavities == 0;
 }
 
-namespace
+// The warnings about the outputs.
+std::string GapWarning(const GapReport& gaps, double offset, double closingRadius)
 {
+  std::ostringstream text;
+  text << "The sampled surface has " << gaps.Gaps << (gaps.Gaps == 1 ? " gap" : " gaps")
+       << (closingRadius > 0.0 ? " left open" : "") << ": holes wider than the offset distance " << offset
+       << ", empty discs on the surface whose centre is farther than the offset from every point. The shell's wall "
+          "is pierced there, and its outer and inner sheets may join. The largest has radius "
+       << gaps.LargestGap << ", at (" << gaps.LargestGapCenter[0] << ", " << gaps.LargestGapCenter[1] << ", "
+       << gaps.LargestGapCenter[2] << "). ";
+  if (closingRadius > 0.0)
+  {
+    text << "Gaps up to ClosingRadius (" << closingRadius << ") are bridged with points; to bridge these too "
+         << "(if they are gaps, not the surface's own openings), set ClosingRadius to at least " << gaps.LargestGap
+         << ", or OffsetDistance above it.";
+  }
+  else
+  {
+    text << "Turn CloseGaps on to bridge gaps up to " << AutomaticClosingRadius << " times the offset with "
+         << "points, or set OffsetDistance to at least " << gaps.LargestGap << ".";
+  }
+  text << " Field data NumberOfGaps, LargestGap and LargestGapCenter hold these figures.";
+  return text.str();
+}
+
+std::string EmptySurfaceWarning(double offset, double spacing)
+{
+  std::ostringstream text;
+  text << "The surface is empty: the shell did not survive the evolution. The offset distance (" << offset
+       << ") is probably small against the gaps between points or the grid spacing (" << spacing
+       << "): increase OffsetDistance or XiCells, or refine the grid.";
+  return text.str();
+}
+
+std::string NoInnerSheetWarning()
+{
+  return "There is no inner sheet: the shell encloses no cavity, so its two sheets join into one. The input's "
+         "surface is open (a one-sided scan, or holes wider than twice the offset distance); its shell has "
+         "only an outer sheet.";
+}
+
+std::string OneSheetNeedsGridWarning()
+{
+  return "Keeping one sheet needs the dense grid: memory follows the box although OutputVolume is off.";
+}
+
+std::string OneSheetDistributedWarning()
+{
+  return "Keeping one sheet needs the whole grid on one process: both sheets are output in a distributed run.";
+}
+
+/// The run's figures, as the field data of output 0.
+std::vector<SummaryArray> RunSummary(const Reconstruction& run, const RemovedPieces& removed)
+{
+  const GapReport& gaps = run.GetGaps();
+  return {
+    { "NumberOfIterations", SummaryArray::Int, 1, { static_cast<double>(run.RelativeChanges().size()) } },
+    { "NarrowBandNodes", SummaryArray::Id, 1, { static_cast<double>(run.NumberOfBandNodes()) } },
+    { "RelativeChange", SummaryArray::Double, 1, run.RelativeChanges() },
+    { "OffsetDistance", SummaryArray::Double, 1, { run.GetParameters().OffsetDistance } },
+    { "SampleSpacing", SummaryArray::Double, 1, { run.GetGrid().Spacing } },
+    { "MedianPointSpacing", SummaryArray::Double, 1, { run.GetSampling().MedianSpacing } },
+    { "ClosingRadius", SummaryArray::Double, 1, { run.GetPlan().ClosingRadius } },
+    { "AddedPoints", SummaryArray::Id, 1, { static_cast<double>(run.AddedPoints()) } },
+    { "NumberOfGaps", SummaryArray::Double, 1, { static_cast<double>(gaps.Gaps) } },
+    { "LargestGap", SummaryArray::Double, 1, { gaps.LargestGap } },
+    { "LargestGapCenter", SummaryArray::Double, 3,
+      { gaps.LargestGapCenter[0], gaps.LargestGapCenter[1], gaps.LargestGapCenter[2] } },
+    { "RemovedPieces", SummaryArray::Double, 1, { static_cast<double>(removed.Pieces) } },
+    { "RemovedVoids", SummaryArray::Double, 1, { static_cast<double>(removed.Voids) } },
+  };
+}
+
 /// Steps 3 and 4: the surface of this process's piece into the sink, and
 /// its small pieces removed. Returns false if the monitor stopped it.
 /// noInnerSheet: a warning said why the surface is empty.
@@ -160,77 +246,6 @@ Outcome Reconstruct(Reconstruction& run, std::vector<double> xyz, std::shared_pt
   }
   outcome.Summary = RunSummary(run, outcome.Removed);
   return outcome;
-}
-
-std::vector<SummaryArray> RunSummary(const Reconstruction& run, const RemovedPieces& removed)
-{
-  const GapReport& gaps = run.GetGaps();
-  return {
-    { "NumberOfIterations", SummaryArray::Int, 1, { static_cast<double>(run.RelativeChanges().size()) } },
-    { "NarrowBandNodes", SummaryArray::Id, 1, { static_cast<double>(run.NumberOfBandNodes()) } },
-    { "RelativeChange", SummaryArray::Double, 1, run.RelativeChanges() },
-    { "OffsetDistance", SummaryArray::Double, 1, { run.GetParameters().OffsetDistance } },
-    { "SampleSpacing", SummaryArray::Double, 1, { run.GetGrid().Spacing } },
-    { "MedianPointSpacing", SummaryArray::Double, 1, { run.GetSampling().MedianSpacing } },
-    { "ClosingRadius", SummaryArray::Double, 1, { run.GetPlan().ClosingRadius } },
-    { "AddedPoints", SummaryArray::Id, 1, { static_cast<double>(run.AddedPoints()) } },
-    { "NumberOfGaps", SummaryArray::Double, 1, { static_cast<double>(gaps.Gaps) } },
-    { "LargestGap", SummaryArray::Double, 1, { gaps.LargestGap } },
-    { "LargestGapCenter", SummaryArray::Double, 3,
-      { gaps.LargestGapCenter[0], gaps.LargestGapCenter[1], gaps.LargestGapCenter[2] } },
-    { "RemovedPieces", SummaryArray::Double, 1, { static_cast<double>(removed.Pieces) } },
-    { "RemovedVoids", SummaryArray::Double, 1, { static_cast<double>(removed.Voids) } },
-  };
-}
-
-std::string GapWarning(const GapReport& gaps, double offset, double closingRadius)
-{
-  std::ostringstream text;
-  text << "The sampled surface has " << gaps.Gaps << (gaps.Gaps == 1 ? " gap" : " gaps")
-       << (closingRadius > 0.0 ? " left open" : "") << ": holes wider than the offset distance " << offset
-       << ", empty discs on the surface whose centre is farther than the offset from every point. The shell's wall "
-          "is pierced there, and its outer and inner sheets may join. The largest has radius "
-       << gaps.LargestGap << ", at (" << gaps.LargestGapCenter[0] << ", " << gaps.LargestGapCenter[1] << ", "
-       << gaps.LargestGapCenter[2] << "). ";
-  if (closingRadius > 0.0)
-  {
-    text << "Gaps up to ClosingRadius (" << closingRadius << ") are bridged with points; to bridge these too "
-         << "(if they are gaps, not the surface's own openings), set ClosingRadius to at least " << gaps.LargestGap
-         << ", or OffsetDistance above it.";
-  }
-  else
-  {
-    text << "Turn CloseGaps on to bridge gaps up to " << AutomaticClosingRadius << " times the offset with "
-         << "points, or set OffsetDistance to at least " << gaps.LargestGap << ".";
-  }
-  text << " Field data NumberOfGaps, LargestGap and LargestGapCenter hold these figures.";
-  return text.str();
-}
-
-std::string EmptySurfaceWarning(double offset, double spacing)
-{
-  std::ostringstream text;
-  text << "The surface is empty: the shell did not survive the evolution. The offset distance (" << offset
-       << ") is probably small against the gaps between points or the grid spacing (" << spacing
-       << "): increase OffsetDistance or XiCells, or refine the grid.";
-  return text.str();
-}
-
-std::string NoInnerSheetWarning()
-{
-  return "There is no inner sheet: the shell encloses no cavity, so its two sheets join into one. The input's "
-         "surface is open (a one-sided scan, or holes wider than twice the offset distance); its shell has "
-         "only an outer sheet.";
-}
-
-std::string OneSheetNeedsGridWarning()
-{
-  return "Keeping one sheet needs the dense grid: memory follows the box although OutputVolume is off.";
-}
-
-std::string OneSheetDistributedWarning()
-{
-  return "Keeping one sheet needs the whole grid on one process: both sheets are output in a distributed run.";
 }
 
 } // namespace nv

@@ -3,19 +3,19 @@
 // A whole reconstruction as a filter runs it, outputs included: both
 // filters, the VTK filter (vtkNarrowVolumeReconstruction) and the Python
 // filter of the wheel (Python/_filter.py), call Reconstruct and only convert
-// what it makes. In order:
+// what it makes. In order (the steps' helpers are in nvOutputs.cxx):
 //
-//   1. the dense arrays asked for (NeedsDenseVolume, VolumeContents), which
-//      the caller allocates when the run knows its piece (RequestVolume);
+//   1. the dense arrays asked for (output 0's phi and DenseArraysAsked, or
+//      phi alone to keep one sheet), which the caller allocates when the run
+//      knows its piece (VolumeRequest);
 //   2. the run itself, steps 1-6 (Reconstruction::Run);
-//   3. the surface, progress stage OutputStage: from the band
+//   3. the surface, into the caller's sink: from the band
 //      (Reconstruction::ExtractSurface), or, to keep one sheet, from a copy
-//      of the dense phi that KeepSheets rewrote (SurfaceFromDenseCopy,
-//      ContourDense);
+//      of the dense phi that KeepSheets rewrote (nvSheets.h);
 //   4. its small pieces removed, and phi flipped in the same regions
 //      (RemoveSmallPieces, nvPieces.h);
-//   5. the warnings below, and the run's figures for the volume's field
-//      data (RunSummary).
+//   5. the warnings (holes left open, an empty surface, no inner sheet) and
+//      the run's figures for the volume's field data.
 #ifndef nvOutputs_h
 #define nvOutputs_h
 
@@ -29,11 +29,7 @@
 
 namespace nv
 {
-class Monitor;
 class SurfaceSink;
-
-/// The progress stage of the outputs (the run itself takes [0, 0.65)): begin, width.
-constexpr double OutputStage[2] = { 0.65, 0.35 };
 
 /// The dense arrays of the volume output beside phi, as the settings ask
 /// (none without OutputVolume: phi alone then serves KeepSheets).
@@ -44,27 +40,6 @@ struct VolumeContents
   bool Band = false;
 };
 VolumeContents DenseArraysAsked(const Settings& settings);
-
-/// Whether the run fills dense arrays (RequestVolume): for output 0, or to
-/// keep one sheet (KeepSheets needs the whole grid, which a distributed run
-/// does not have: there both sheets are kept).
-bool NeedsDenseVolume(const Settings& settings, bool distributed);
-
-/// Whether the surface comes from a copy of the dense phi (one sheet kept)
-/// rather than from the band.
-bool SurfaceFromDenseCopy(const Settings& settings, bool distributed);
-
-/**
- * The surface of the sheets the settings keep, from `phi`, a copy of the
- * dense phi on the whole grid, which KeepSheets rewrites. Returns false if
- * the monitor stopped it; `cavities`: KeepSheets' count (NoInnerSheet).
- */
-bool ContourDense(const Reconstruction& run, float* phi, SurfaceSink& sink, Monitor* monitor,
-  std::int64_t& cavities);
-
-/// Whether the chosen sheets left nothing because the shell encloses no
-/// cavity: an open input has no inner sheet.
-bool NoInnerSheet(const Settings& settings, std::int64_t cavities);
 
 /// One array of the run's summary in the volume's field data.
 struct SummaryArray
@@ -80,9 +55,6 @@ struct SummaryArray
   int Components;
   std::vector<double> Values;
 };
-
-/// The run's figures, as the field data of output 0.
-std::vector<SummaryArray> RunSummary(const Reconstruction& run, const RemovedPieces& removed);
 
 /// What the caller of Reconstruct gets besides the arrays it owns (the
 /// dense arrays it allocated, the surface in its sink).
@@ -121,13 +93,6 @@ struct VolumeRequest
  */
 Outcome Reconstruct(Reconstruction& run, std::vector<double> xyz, std::shared_ptr<const Sampling> sampling,
   SurfaceSink& sink, const VolumeRequest& volume, bool distributed);
-
-/// The warnings a filter gives about its outputs.
-std::string GapWarning(const GapReport& gaps, double offset, double closingRadius);
-std::string EmptySurfaceWarning(double offset, double spacing);
-std::string NoInnerSheetWarning();
-std::string OneSheetNeedsGridWarning();
-std::string OneSheetDistributedWarning();
 
 } // namespace nv
 
