@@ -111,24 +111,33 @@ void NarrowBand::OwnedNodes(bool red, std::int64_t& begin, std::int64_t& end) co
   this->NodesInLayers(this->OwnedLayers, red, begin, end);
 }
 
-NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& parameters, Monitor* monitor,
-  const Subdomain* part, const BrickVisitor& visitor)
+namespace
 {
-  NarrowBand band;
-  band.GridNodes = distance.GetGrid();
-  const std::int64_t bricksPerLayer = distance.GetBrickDims()[0] * distance.GetBrickDims()[1];
-  const Subdomain whole = Subdomain::Whole(distance.GetBrickDims()[2]);
-  if (!part)
-  {
-    part = &whole;
-  }
 
-  // Step 1: the bricks to visit, in the computed layers. Whole domain mode
-  // visits all of them.
+/// One band node of a brick while the band is built: its place in the brick
+/// and its distance.
+struct BandEntry
+{
+  std::uint16_t Offset;
+  double Distance;
+};
+
+/// The band nodes of one brick, red and black apart, in ascending grid index.
+struct BrickBand
+{
+  std::vector<BandEntry> Red, Black;
+};
+
+/// Step 1: the bricks to visit, in the computed layers. Whole domain mode
+/// visits all of them.
+std::vector<std::int64_t> BricksToVisit(
+  const TruncatedDistance& distance, const Parameters& parameters, const Subdomain& part)
+{
+  const std::int64_t bricksPerLayer = distance.GetBrickDims()[0] * distance.GetBrickDims()[1];
   std::vector<std::int64_t> bricks;
   if (parameters.Domain == Domain::WholeDomain)
   {
-    for (std::int64_t b = part->Computed.Begin * bricksPerLayer; b < part->Computed.End * bricksPerLayer; ++b)
+    for (std::int64_t b = part.Computed.Begin * bricksPerLayer; b < part.Computed.End * bricksPerLayer; ++b)
     {
       bricks.push_back(b);
     }
@@ -137,44 +146,44 @@ NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& 
   {
     for (std::int64_t b : distance.ReachedBricks())
     {
-      if (part->Computed.Contains(b / bricksPerLayer))
+      if (part.Computed.Contains(b / bricksPerLayer))
       {
         bricks.push_back(b);
       }
     }
   }
-  const std::int64_t numberOfBricks = static_cast<std::int64_t>(bricks.size());
+  return bricks;
+}
 
-  // Distances brick by brick; each brick keeps its band nodes, red and black
-  // apart, in ascending grid index. This transient list grows with the band.
-  struct Entry
-  {
-    std::uint16_t Offset; // in the brick
-    double Distance;
-  };
-  struct BrickBand
-  {
-    std::vector<Entry> Red, Black;
-  };
-  std::vector<BrickBand> perBrick(static_cast<std::size_t>(numberOfBricks));
+/// Step 1, continued: the distances brick by brick, band.Bricks' band nodes
+/// into perBrick (a transient list that grows with the band) and the other
+/// nodes inside the shell into band.Inside. False if the monitor stopped it.
+bool CollectBandNodes(const TruncatedDistance& distance, const Parameters& parameters, Monitor* monitor,
+  const BrickVisitor& visitor, NarrowBand& band, std::vector<BrickBand>& perBrick)
+{
+  const std::int64_t numberOfBricks = static_cast<std::int64_t>(band.Bricks.size());
+  perBrick.resize(static_cast<std::size_t>(numberOfBricks));
   band.Inside.resize(static_cast<std::size_t>(numberOfBricks * BrickNodes / 64));
-  const bool done = MonitoredFor(0, numberOfBricks, 16, monitor, [&](std::int64_t begin, std::int64_t end) {
+  return MonitoredFor(0, numberOfBricks, 16, monitor, [&](std::int64_t begin, std::int64_t end) {
     double scratch[BrickNodes];
     for (std::int64_t a = begin; a < end; ++a)
     {
       BrickBand& out = perBrick[a];
-      ForEachBandNode(distance, parameters, bricks[a], visitor, scratch, &band.Inside[a * BrickNodes / 64],
+      ForEachBandNode(distance, parameters, band.Bricks[a], visitor, scratch, &band.Inside[a * BrickNodes / 64],
         [&](std::int64_t i, std::int64_t j, std::int64_t k, int n, double d) {
-          (IsRed(i, j, k) ? out.Red : out.Black).push_back(Entry{ static_cast<std::uint16_t>(n), d });
+          (IsRed(i, j, k) ? out.Red : out.Black).push_back(BandEntry{ static_cast<std::uint16_t>(n), d });
         });
     }
   });
-  if (!done)
-  {
-    return NarrowBand{};
-  }
+}
 
-  // Step 2: store the band nodes compactly, red ones first, in brick order.
+/// Step 2: the band nodes stored compactly, red ones first, in brick order
+/// (band.Offset, band.Distance, band.RedStart, band.BlackStart), perBrick
+/// emptied. Returns 0; or, when the band is over the limit, its size, and
+/// nothing is stored.
+std::int64_t StoreBandNodes(std::vector<BrickBand>& perBrick, const Parameters& parameters, NarrowBand& band)
+{
+  const std::int64_t numberOfBricks = static_cast<std::int64_t>(perBrick.size());
   std::vector<std::int64_t> redStart(static_cast<std::size_t>(numberOfBricks + 1), 0);
   std::vector<std::int64_t> blackStart(static_cast<std::size_t>(numberOfBricks + 1), 0);
   for (std::int64_t a = 0; a < numberOfBricks; ++a)
@@ -186,9 +195,7 @@ NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& 
   const std::int64_t size = band.RedCount + blackStart[numberOfBricks];
   if (size > MaximumBandSize || (parameters.MaximumBandNodes >= 0 && size > parameters.MaximumBandNodes))
   {
-    NarrowBand refused;
-    refused.RefusedSize = size;
-    return refused;
+    return size;
   }
   for (std::int64_t a = 0; a <= numberOfBricks; ++a)
   {
@@ -200,44 +207,64 @@ NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& 
     for (std::int64_t a = begin; a < end; ++a)
     {
       std::int64_t s = redStart[a];
-      for (const Entry& e : perBrick[a].Red)
+      for (const BandEntry& e : perBrick[a].Red)
       {
         band.Offset[s] = e.Offset;
         band.Distance[s++] = e.Distance;
       }
       s = blackStart[a];
-      for (const Entry& e : perBrick[a].Black)
+      for (const BandEntry& e : perBrick[a].Black)
       {
         band.Offset[s] = e.Offset;
         band.Distance[s++] = e.Distance;
       }
-      std::vector<Entry>().swap(perBrick[a].Red);
-      std::vector<Entry>().swap(perBrick[a].Black);
+      std::vector<BandEntry>().swap(perBrick[a].Red);
+      std::vector<BandEntry>().swap(perBrick[a].Black);
     }
   });
   std::vector<BrickBand>().swap(perBrick);
-  ReleaseFreedMemory(); // before the neighbour indices, the band's largest array
+  band.RedStart = std::move(redStart);
+  band.BlackStart = std::move(blackStart);
+  return 0;
+}
 
-  // Step 3: connect each band node to its six neighbours. Per brick, the
-  // bricks across its six faces, and per brick holding band nodes, a 512-bit
-  // mask of them and each one's rank among the brick's nodes of its colour (a
-  // byte a place, at most 256 of a colour), kept only for this step: a
-  // neighbour's index is then the start of its colour in its brick plus its
-  // rank, found within the node's brick or the one across the face it lies on.
-  band.Bricks = std::move(bricks);
+/// What step 3 knows of the band's bricks: for each, the bricks across its
+/// six faces (slots in band.Bricks, -1 for none); for each brick holding band
+/// nodes, a 512-bit mask of them and each one's rank among the brick's nodes
+/// of its colour (a byte a place, at most 256 of a colour).
+struct BrickIndex
+{
+  static constexpr int Words = BrickNodes / 64;
+  std::vector<std::int32_t> Adjacent;  ///< 6 per brick
+  std::vector<std::int32_t> BandBrick; ///< per brick: its number among those holding nodes, or -1
+  std::vector<std::uint64_t> Occupied; ///< Words per brick holding nodes
+  std::vector<std::uint8_t> Rank;      ///< BrickNodes per brick holding nodes
+
+  /// Whether node q of band brick b (a slot in band.Bricks, -1: none) is a band node.
+  bool Holds(std::int64_t b, int q) const
+  {
+    const std::int32_t t = b >= 0 ? this->BandBrick[b] : -1;
+    return t >= 0 && ((this->Occupied[static_cast<std::size_t>(t) * Words + q / 64] >> (q % 64)) & 1);
+  }
+};
+
+BrickIndex IndexBricks(const TruncatedDistance& distance, const NarrowBand& band)
+{
+  const std::int64_t numberOfBricks = static_cast<std::int64_t>(band.Bricks.size());
+  BrickIndex index;
   std::vector<std::int32_t> slotOfBrick(static_cast<std::size_t>(distance.GetNumberOfBricks()), -1);
-  std::vector<std::int32_t> bandBrick(static_cast<std::size_t>(numberOfBricks));
+  index.BandBrick.resize(static_cast<std::size_t>(numberOfBricks));
   std::int32_t bandBricks = 0;
   for (std::int64_t a = 0; a < numberOfBricks; ++a)
   {
     slotOfBrick[band.Bricks[a]] = static_cast<std::int32_t>(a);
-    const bool holdsNodes = redStart[a + 1] > redStart[a] || blackStart[a + 1] > blackStart[a];
-    bandBrick[a] = holdsNodes ? bandBricks++ : -1;
+    const bool holdsNodes =
+      band.RedStart[a + 1] > band.RedStart[a] || band.BlackStart[a + 1] > band.BlackStart[a];
+    index.BandBrick[a] = holdsNodes ? bandBricks++ : -1;
   }
-  constexpr int Words = BrickNodes / 64;
-  std::vector<std::int32_t> adjacent(static_cast<std::size_t>(6 * numberOfBricks));
-  std::vector<std::uint64_t> occupied(static_cast<std::size_t>(bandBricks) * Words, 0);
-  std::vector<std::uint8_t> rank(static_cast<std::size_t>(bandBricks) * BrickNodes, 0);
+  index.Adjacent.resize(static_cast<std::size_t>(6 * numberOfBricks));
+  index.Occupied.assign(static_cast<std::size_t>(bandBricks) * BrickIndex::Words, 0);
+  index.Rank.assign(static_cast<std::size_t>(bandBricks) * BrickNodes, 0);
   const auto& brickDims = distance.GetBrickDims();
   ParallelFor(0, numberOfBricks, 64, [&](std::int64_t begin, std::int64_t end) {
     for (std::int64_t a = begin; a < end; ++a)
@@ -250,23 +277,32 @@ NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& 
         std::int64_t next[3] = { at[0], at[1], at[2] };
         next[direction / 2] += (direction % 2) ? 1 : -1;
         const bool inGrid = next[direction / 2] >= 0 && next[direction / 2] < brickDims[direction / 2];
-        adjacent[6 * a + direction] =
+        index.Adjacent[6 * a + direction] =
           inGrid ? slotOfBrick[next[0] + brickDims[0] * (next[1] + brickDims[1] * next[2])] : -1;
       }
-      const std::int64_t t = bandBrick[a];
-      for (const auto* start : { &redStart, &blackStart })
+      const std::int64_t t = index.BandBrick[a];
+      for (const auto* start : { &band.RedStart, &band.BlackStart })
       {
         for (std::int64_t s = (*start)[a]; s < (*start)[a + 1]; ++s)
         {
           const int n = band.Offset[s];
-          occupied[t * Words + n / 64] |= std::uint64_t(1) << (n % 64);
-          rank[t * BrickNodes + n] = static_cast<std::uint8_t>(s - (*start)[a]);
+          index.Occupied[t * BrickIndex::Words + n / 64] |= std::uint64_t(1) << (n % 64);
+          index.Rank[t * BrickNodes + n] = static_cast<std::uint8_t>(s - (*start)[a]);
         }
       }
     }
   });
-  std::vector<std::int32_t>().swap(slotOfBrick);
-  band.Neighbor.resize(static_cast<std::size_t>(6 * size));
+  return index;
+}
+
+/// Step 3: each band node's six neighbours (band.Neighbor): a neighbour's
+/// index is the start of its colour in its brick plus its rank, found within
+/// the node's brick or the one across the face it lies on; a neighbour off
+/// the band is the Dirichlet value of the node's side (eq. 5).
+void ConnectNeighbours(const BrickIndex& index, const Parameters& parameters, NarrowBand& band)
+{
+  const std::int64_t numberOfBricks = static_cast<std::int64_t>(band.Bricks.size());
+  band.Neighbor.resize(6 * band.Offset.size());
   const double offset = parameters.OffsetDistance;
   constexpr int Last = BrickSize - 1;
   const int step[3] = { 1, BrickSize, BrickSize * BrickSize };
@@ -276,8 +312,8 @@ NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& 
       for (const bool red : { true, false })
       {
         // The neighbours have the other colour.
-        const std::vector<std::int64_t>& own = red ? redStart : blackStart;
-        const std::vector<std::int64_t>& other = red ? blackStart : redStart;
+        const std::vector<std::int64_t>& own = red ? band.RedStart : band.BlackStart;
+        const std::vector<std::int64_t>& other = red ? band.BlackStart : band.RedStart;
         for (std::int64_t s = own[a]; s < own[a + 1]; ++s)
         {
           const int n = band.Offset[s];
@@ -291,20 +327,49 @@ NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& 
             const int axis = direction / 2;
             const bool up = direction % 2 == 1;
             const bool across = up ? ijk[axis] == Last : ijk[axis] == 0;
-            const std::int64_t b = across ? adjacent[6 * a + direction] : a;
+            const std::int64_t b = across ? index.Adjacent[6 * a + direction] : a;
             const int q = n + (up ? step[axis] : -step[axis]) * (across ? -Last : 1);
-            const std::int32_t t = b >= 0 ? bandBrick[b] : -1;
-            const bool inBand = t >= 0 && ((occupied[static_cast<std::size_t>(t) * Words + q / 64] >> (q % 64)) & 1);
-            band.Neighbor[6 * s + direction] = inBand
-              ? static_cast<std::uint32_t>(other[b] + rank[static_cast<std::size_t>(t) * BrickNodes + q])
+            band.Neighbor[6 * s + direction] = index.Holds(b, q)
+              ? static_cast<std::uint32_t>(
+                  other[b] + index.Rank[static_cast<std::size_t>(index.BandBrick[b]) * BrickNodes + q])
               : dirichlet;
           }
         }
       }
     }
   });
-  band.RedStart = std::move(redStart);
-  band.BlackStart = std::move(blackStart);
+}
+
+} // namespace
+
+NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& parameters, Monitor* monitor,
+  const Subdomain* part, const BrickVisitor& visitor)
+{
+  NarrowBand band;
+  band.GridNodes = distance.GetGrid();
+  const Subdomain whole = Subdomain::Whole(distance.GetBrickDims()[2]);
+  if (!part)
+  {
+    part = &whole;
+  }
+  // Step 1: the bricks to visit and their band nodes.
+  band.Bricks = BricksToVisit(distance, parameters, *part);
+  std::vector<BrickBand> perBrick;
+  if (!CollectBandNodes(distance, parameters, monitor, visitor, band, perBrick))
+  {
+    return NarrowBand{};
+  }
+  // Step 2: stored compactly, unless the band is too large.
+  const std::int64_t tooLarge = StoreBandNodes(perBrick, parameters, band);
+  if (tooLarge > 0)
+  {
+    NarrowBand refused;
+    refused.RefusedSize = tooLarge;
+    return refused;
+  }
+  ReleaseFreedMemory(); // before the neighbour indices, the band's largest array
+  // Step 3: each node's six neighbours.
+  ConnectNeighbours(IndexBricks(distance, band), parameters, band);
   band.OwnedLayers = part->Owned;
   if (monitor)
   {

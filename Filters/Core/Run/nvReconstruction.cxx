@@ -283,8 +283,15 @@ bool Reconstruction::Run(std::vector<double> xyz, std::shared_ptr<const Sampling
 
 bool Reconstruction::RunSteps(std::vector<double> xyz, std::shared_ptr<const Sampling> measured)
 {
-  // 1. The points: counted and checked on every process, errors agreed by all.
+  // The steps of this file's header, each false when the run stops.
   double bounds[6];
+  return this->CheckPoints(xyz, bounds) && this->PlanGrid(xyz, bounds, std::move(measured)) &&
+    this->GatherPoints(xyz) && this->BuildBand(std::move(xyz)) && this->Evolve();
+}
+
+bool Reconstruction::CheckPoints(const std::vector<double>& xyz, double bounds[6])
+{
+  // 1. The points: counted and checked on every process, errors agreed by all.
   const std::int64_t bad = PointBounds(xyz, bounds);
   double totals[2] = { static_cast<double>(xyz.size() / 3), bad >= 0 ? 1.0 : 0.0 };
   if (this->Comm)
@@ -310,7 +317,12 @@ bool Reconstruction::RunSteps(std::vector<double> xyz, std::shared_ptr<const Sam
     error << "remove such points before reconstructing.";
     return this->Fail(error.str());
   }
+  return true;
+}
 
+bool Reconstruction::PlanGrid(
+  const std::vector<double>& xyz, const double bounds[6], std::shared_ptr<const Sampling> measured)
+{
   // 2. The points' spacing, and the grid.
   if (!measured)
   {
@@ -332,11 +344,15 @@ bool Reconstruction::RunSteps(std::vector<double> xyz, std::shared_ptr<const Sam
   {
     return this->Fail(this->ThePlan.Error);
   }
-  const Grid& grid = this->ThePlan.TheGrid;
-  const std::int64_t layers = BrickLayers(grid);
+  return true;
+}
 
+bool Reconstruction::GatherPoints(std::vector<double>& xyz)
+{
   // 3. This process's slab, and the points within its reach: the band's,
   // and the gap closing's around it.
+  const Grid& grid = this->ThePlan.TheGrid;
+  const std::int64_t layers = BrickLayers(grid);
   this->Partition(xyz, layers);
   GapClosing closing(grid, this->ThePlan.Scheme.OffsetDistance, this->ThePlan.ClosingRadius);
 
@@ -347,11 +363,12 @@ bool Reconstruction::RunSteps(std::vector<double> xyz, std::shared_ptr<const Sam
   }
   if (this->Comm)
   {
+    // Each process's slab, widened by the reach of the distance and of the gap closing.
     std::vector<std::array<double, 2>> zRanges(this->Owners.size());
+    const double margin = this->ThePlan.Scheme.Reach() + grid.Spacing + closing.Reach();
     for (std::size_t q = 0; q < this->Owners.size(); ++q)
     {
       const Subdomain other = Subdomain::Around(this->Owners[q], layers);
-      const double margin = this->ThePlan.Scheme.Reach() + grid.Spacing + closing.Reach();
       zRanges[q] = { grid.Origin[2] + other.Computed.Begin * BrickSize * grid.Spacing - margin,
         grid.Origin[2] + (std::min(other.Computed.End * BrickSize, grid.Dims[2]) - 1) * grid.Spacing + margin };
       if (other.Computed.Empty())
@@ -361,29 +378,31 @@ bool Reconstruction::RunSteps(std::vector<double> xyz, std::shared_ptr<const Sam
     }
     xyz = ExchangePoints(*this->Comm, xyz, zRanges);
   }
-  if (!this->CloseGaps(xyz, closing))
-  {
-    return false;
-  }
+  // (3, continued) The points that bridge the holes of the sampling.
+  return this->CloseGaps(xyz, closing);
+}
 
+bool Reconstruction::BuildBand(std::vector<double> xyz)
+{
   // 5. Distance (eq. 6, 7) and band (steps 1-3); the dense arrays, if
   // asked for, take each brick's distances as the band's construction
   // computes them.
-  auto start = std::chrono::steady_clock::now();
+  const auto start = std::chrono::steady_clock::now();
+  const Grid& grid = this->ThePlan.TheGrid;
   if (this->TheMonitor)
   {
     this->TheMonitor->Stage(0.0, 0.3);
   }
-  std::unique_ptr<VolumeWriter> volume;
   BrickVisitor writeBrick;
   if (this->AllocateVolume && !this->EmptyPiece())
   {
     this->Volume[0] = std::max(this->Computed[0], this->Piece[0] - this->VolumeGhosts);
     this->Volume[1] = std::min(this->Computed[1], this->Piece[1] + this->VolumeGhosts);
-    volume.reset(new VolumeWriter(grid, this->ThePlan.Scheme, this->AllocateVolume(this->Volume[0], this->Volume[1]),
-      this->Volume[0], this->Volume[1]));
-    volume->Clear();
-    writeBrick = [&volume](std::int64_t brick, const double* d) { volume->WriteBrick(brick, d); };
+    this->Writer.reset(new VolumeWriter(grid, this->ThePlan.Scheme,
+      this->AllocateVolume(this->Volume[0], this->Volume[1]), this->Volume[0], this->Volume[1]));
+    this->Writer->Clear();
+    VolumeWriter* writer = this->Writer.get();
+    writeBrick = [writer](std::int64_t brick, const double* d) { writer->WriteBrick(brick, d); };
   }
   {
     // The points sorted into bricks, for the band only: gone once it is built.
@@ -420,9 +439,13 @@ bool Reconstruction::RunSteps(std::vector<double> xyz, std::shared_ptr<const Sam
   this->Band.OwnedNodes(true, red[0], red[1]);
   this->Band.OwnedNodes(false, black[0], black[1]);
   this->BandNodes = static_cast<std::int64_t>(this->SumAll(static_cast<double>(red[1] - red[0] + black[1] - black[0])));
+  return true;
+}
 
+bool Reconstruction::Evolve()
+{
   // 6. Evolution: (10)-(12) per time step.
-  start = std::chrono::steady_clock::now();
+  const auto start = std::chrono::steady_clock::now();
   if (this->TheMonitor)
   {
     this->TheMonitor->Stage(0.3, 0.35);
@@ -457,9 +480,10 @@ bool Reconstruction::RunSteps(std::vector<double> xyz, std::shared_ptr<const Sam
   this->Solver->ReleaseWorkspace();
   std::vector<std::uint32_t>().swap(this->Band.Neighbor);
   ReleaseFreedMemory();
-  if (volume)
+  if (this->Writer)
   {
-    volume->WriteBand(this->Band, this->Solver->GetPhi());
+    this->Writer->WriteBand(this->Band, this->Solver->GetPhi());
+    this->Writer.reset();
   }
   return true;
 }

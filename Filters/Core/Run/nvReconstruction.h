@@ -158,6 +158,12 @@ public:
 
 private:
   bool RunSteps(std::vector<double> xyz, std::shared_ptr<const Sampling> measured);
+  // The steps of Run, in order (this file's header); each returns false when the run stops.
+  bool CheckPoints(const std::vector<double>& xyz, double bounds[6]);
+  bool PlanGrid(const std::vector<double>& xyz, const double bounds[6], std::shared_ptr<const Sampling> measured);
+  bool GatherPoints(std::vector<double>& xyz);
+  bool BuildBand(std::vector<double> xyz);
+  bool Evolve();
   bool Fail(const std::string& message);
   bool CheckMemory(double gridNodes, double points);
   void Partition(const std::vector<double>& xyz, std::int64_t layers);
@@ -177,6 +183,7 @@ private:
   std::int64_t Volume[2] = { 0, 0 };
   std::int64_t VolumeGhosts = 0;
   VolumeAllocator AllocateVolume;
+  std::unique_ptr<VolumeWriter> Writer; ///< fills the dense arrays (steps 5 and 6)
   double BytesBeforeBand = 0.0;
   NarrowBand Band;
   std::unique_ptr<Halo> TheHalo;
