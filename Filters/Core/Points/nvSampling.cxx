@@ -17,6 +17,35 @@ namespace nv
 {
 namespace
 {
+
+/// A question about a point's nearest neighbour in another process's
+/// slab, or its answer, as it travels between processes (6 doubles, in
+/// Communicator::Exchange's arrays): the asked point or the nearest one
+/// found, the distance (the asker's nearest so far, or the one found), and
+/// the asking process and its point.
+struct NearestRecord
+{
+  double Where[3];
+  double Distance;
+  std::int64_t Asker;
+  std::int64_t Point;
+
+  static constexpr std::size_t Size = 6;
+  static std::int64_t Count(const std::vector<double>& values)
+  {
+    return static_cast<std::int64_t>(values.size() / Size);
+  }
+  static NearestRecord At(const std::vector<double>& values, std::int64_t i)
+  {
+    const double* v = &values[Size * static_cast<std::size_t>(i)];
+    return { { v[0], v[1], v[2] }, v[3], static_cast<std::int64_t>(v[4]), static_cast<std::int64_t>(v[5]) };
+  }
+  void AppendTo(std::vector<double>& values) const
+  {
+    values.insert(values.end(), { this->Where[0], this->Where[1], this->Where[2], this->Distance,
+                                  static_cast<double>(this->Asker), static_cast<double>(this->Point) });
+  }
+};
 /// Sorts v: fixed chunks sorted in parallel, then merged pairwise (the
 /// result is the sorted sequence, whatever the threads).
 template <typename T>
@@ -542,8 +571,7 @@ bool Sampling::MeasureDistributed(const std::vector<double>& xyz, Communicator& 
   // near lies within the distance in z, possibly on the next slab's face)
   // are asked of the processes whose slabs lie that near; each answers with
   // its nearest point, and the nearest answer, ties to the lowest
-  // coordinates, wins. Questions and answers: x, y, z, distance, asking
-  // process, point.
+  // coordinates, wins. Questions and answers travel as NearestRecords.
   std::vector<std::vector<double>> asks(static_cast<std::size_t>(size));
   for (std::int64_t p = 0; p < owned; ++p)
   {
@@ -553,16 +581,17 @@ bool Sampling::MeasureDistributed(const std::vector<double>& xyz, Communicator& 
     {
       if (q != rank && faces[q] <= x[2] + d && x[2] - d < faces[q + 1])
       {
-        asks[q].insert(asks[q].end(), { x[0], x[1], x[2], d, static_cast<double>(rank), static_cast<double>(p) });
+        NearestRecord{ { x[0], x[1], x[2] }, d, rank, p }.AppendTo(asks[q]);
       }
     }
   }
   const std::vector<double> questions = communicator.Exchange(asks);
-  const std::int64_t asked = static_cast<std::int64_t>(questions.size() / 6);
+  const std::int64_t asked = NearestRecord::Count(questions);
   std::vector<double> where(3 * static_cast<std::size_t>(asked));
   for (std::int64_t i = 0; i < asked; ++i)
   {
-    std::copy(&questions[6 * i], &questions[6 * i] + 3, &where[3 * i]);
+    const NearestRecord question = NearestRecord::At(questions, i);
+    std::copy(question.Where, question.Where + 3, &where[3 * i]);
   }
   std::vector<double> found(static_cast<std::size_t>(asked), std::numeric_limits<double>::infinity());
   std::vector<std::int64_t> foundPoint(static_cast<std::size_t>(asked), -1);
@@ -575,19 +604,19 @@ bool Sampling::MeasureDistributed(const std::vector<double>& xyz, Communicator& 
   std::vector<std::vector<double>> answers(static_cast<std::size_t>(size));
   for (std::int64_t i = 0; i < asked; ++i)
   {
-    if (foundPoint[i] >= 0 && found[i] <= questions[6 * i + 3])
+    const NearestRecord question = NearestRecord::At(questions, i);
+    if (foundPoint[i] >= 0 && found[i] <= question.Distance)
     {
       const double* y = &points[3 * foundPoint[i]];
-      answers[static_cast<std::size_t>(questions[6 * i + 4])].insert(
-        answers[static_cast<std::size_t>(questions[6 * i + 4])].end(),
-        { y[0], y[1], y[2], found[i], questions[6 * i + 4], questions[6 * i + 5] });
+      NearestRecord{ { y[0], y[1], y[2] }, found[i], question.Asker, question.Point }.AppendTo(
+        answers[static_cast<std::size_t>(question.Asker)]);
     }
   }
   const std::vector<double> replies = communicator.Exchange(answers);
-  for (std::size_t i = 0; i + 5 < replies.size(); i += 6)
+  for (std::int64_t i = 0; i < NearestRecord::Count(replies); ++i)
   {
-    const std::int64_t p = static_cast<std::int64_t>(replies[i + 5]);
-    nearest[p] = std::min(nearest[p], replies[i + 3]);
+    const NearestRecord reply = NearestRecord::At(replies, i);
+    nearest[reply.Point] = std::min(nearest[reply.Point], reply.Distance);
   }
 
   // 4. The quantiles of all processes' finite distances.
