@@ -14,6 +14,8 @@ XML files in Binary mode). Every property of the filter is an option, with the
 filter's default. Exit status: 0 done, 1 the run or a file failed (the message
 says why), 2 a wrong command line, 130 interrupted (Ctrl-C).
 """
+from __future__ import annotations
+
 import argparse
 import os
 import signal
@@ -21,10 +23,14 @@ import sys
 import threading
 import time
 import warnings
+from typing import TYPE_CHECKING, Any, Dict, List, Optional
 
 import numpy as np
 
 from . import _properties
+
+if TYPE_CHECKING:
+    from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPointSet, vtkPolyData
 
 # Readers by extension: (module of vtkmodules, class).
 READERS = {
@@ -145,7 +151,7 @@ def _read_text(path):
     return point_cloud(np.ascontiguousarray(xyz))
 
 
-def read_cloud(path):
+def read_cloud(path: str) -> vtkPointSet:
     """The point set of a cloud file."""
     if not os.path.isfile(path):
         raise Failure("%s: no such file" % path)
@@ -185,7 +191,7 @@ def read_cloud(path):
     return data
 
 
-def write(path, volume, surface):
+def write(path: str, volume: vtkImageData, surface: vtkPolyData) -> str:
     """Writes the volume or the surface, by the file's extension."""
     module, name, which = WRITERS[os.path.splitext(path)[1].lower()]
     writer = _vtk_class(module, name)()
@@ -251,7 +257,7 @@ def _choice_type(prop):
     return parse, names
 
 
-def make_parser(defaults):
+def make_parser(defaults: Dict[str, Any]) -> argparse.ArgumentParser:
     """The command line's parser; `defaults`: the filter's {property: default}."""
     parser = argparse.ArgumentParser(
         prog="narrowvolume", description=__doc__.split("\n")[0],
@@ -278,7 +284,7 @@ def make_parser(defaults):
     return parser
 
 
-def main(argv=None):
+def main(argv: Optional[List[str]] = None) -> int:
     """Runs the command line; returns the exit status."""
     import narrowvolume
 

@@ -36,8 +36,11 @@ In `doc`, {OtherProperty} names another property: each place writes it in
 its own words (the panel's label in ParaView, the option on the command
 line, the property's name in Python).
 """
+from __future__ import annotations
+
 from collections import namedtuple
 import re
+from typing import Any, Callable, Dict
 
 Property = namedtuple("Property", "name label kind default low high choices enum group advanced widget doc")
 Property.__doc__ = """One property of the filter.
@@ -195,12 +198,12 @@ PROPERTIES = (
 BY_NAME = {p.name: p for p in PROPERTIES}
 
 
-def snake_case(name):
+def snake_case(name: str) -> str:
     """OffsetDistance -> offset_distance (the keyword reconstruct() also accepts)."""
     return re.sub(r"(?<!^)(?=[A-Z])", "_", name).lower()
 
 
-def option(name):
+def option(name: str) -> str:
     """OffsetDistance -> --offset-distance (the command line's option)."""
     return "--" + snake_case(name).replace("_", "-")
 
@@ -208,14 +211,14 @@ def option(name):
 _BY_SNAKE = {snake_case(p.name): p for p in PROPERTIES}
 
 
-def find(keyword):
+def find(keyword: str) -> Property:
     """The property named by a keyword: its Set/Get name or its snake_case form. KeyError otherwise."""
     if keyword in BY_NAME:
         return BY_NAME[keyword]
     return _BY_SNAKE[keyword]
 
 
-def describe(prop, name_of=lambda name: name):
+def describe(prop: Property, name_of: Callable[[str], str] = lambda name: name) -> str:
     """The property's documentation with the names of other properties as
     name_of(name) gives them: BY_NAME[name].label in the panel, option(name)
     on the command line, the name itself in Python (the default)."""
@@ -223,6 +226,6 @@ def describe(prop, name_of=lambda name: name):
                   prop.doc)
 
 
-def defaults_of(filter_object):
+def defaults_of(filter_object: Any) -> Dict[str, Any]:
     """{name: value} of a filter's properties, read through its Get methods."""
     return {p.name: getattr(filter_object, "Get" + p.name)() for p in PROPERTIES}

@@ -9,7 +9,11 @@ pyvista imports it the first time `.narrowvolume` is used on a dataset, and
 Earlier pyvista versions have no accessor mechanism; there, use
 narrowvolume.reconstruct(mesh), which takes and returns pyvista objects.
 """
+from __future__ import annotations
+
 import pyvista
+from typing import Any, Callable, Optional, Tuple
+
 from vtkmodules.vtkCommonDataModel import vtkPointSet
 
 from ._reconstruct import reconstruct as _reconstruct
@@ -20,10 +24,11 @@ NAMESPACE = "narrowvolume"
 class NarrowVolumeAccessor:
     """NarrowVolume's methods on a pyvista point set: `cloud.narrowvolume.<method>(...)`."""
 
-    def __init__(self, dataset):
+    def __init__(self, dataset: vtkPointSet):
         self._dataset = dataset
 
-    def reconstruct(self, progress=None, **properties):
+    def reconstruct(self, progress: Optional[Callable[[float], None]] = None,
+                    **properties: Any) -> Tuple[Any, Any]:
         """The narrow volume around this point set's points: (volume, surface),
         pyvista.ImageData and pyvista.PolyData. The keyword arguments are
         those of narrowvolume.reconstruct (the filter's properties, and
@@ -34,7 +39,7 @@ class NarrowVolumeAccessor:
         return _reconstruct(self._dataset, progress=progress, **properties)
 
 
-def register():
+def register() -> bool:
     """Attaches the accessor to pyvista's point set classes; False when
     pyvista has no accessor mechanism (before 0.48)."""
     if not hasattr(pyvista, "register_dataset_accessor"):

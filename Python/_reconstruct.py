@@ -1,11 +1,14 @@
 # SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
 # SPDX-License-Identifier: BSD-3-Clause
 """reconstruct(): the filter in one call, for arrays, VTK and pyvista point sets."""
+from __future__ import annotations
+
 import ctypes
 import re
 import signal
 import threading
 import warnings
+from typing import Any, Callable, Optional, Tuple
 
 import numpy as np
 from vtkmodules.util.misc import calldata_type
@@ -34,7 +37,7 @@ class ReconstructionWarning(UserWarning):
     """A warning of the filter about its result (an empty surface, an open input's missing inner sheet, ...)."""
 
 
-def point_cloud(xyz):
+def point_cloud(xyz: Any) -> vtkPolyData:
     """A vtkPolyData holding the points of an (n, 3) array (copied, as float64), no cells."""
     xyz = np.ascontiguousarray(xyz, dtype=np.float64)
     if xyz.ndim != 2 or xyz.shape[1] != 3:
@@ -46,7 +49,7 @@ def point_cloud(xyz):
     return cloud
 
 
-def _as_point_set(points):
+def _as_point_set(points: Any) -> Tuple[vtkPointSet, bool]:
     """(a vtkPointSet, whether to return pyvista objects)."""
     if isinstance(points, vtkPointSet):
         return points, type(points).__module__.split(".")[0] == "pyvista"
@@ -56,7 +59,8 @@ def _as_point_set(points):
     return point_cloud(points), False
 
 
-def reconstruct(points, progress=None, **properties):
+def reconstruct(points: Any, progress: Optional[Callable[[float], None]] = None,
+                **properties: Any) -> Tuple[vtkImageData, vtkPolyData]:
     """The narrow volume (a thick shell) around a point cloud, in one call.
 
     points: an (n, 3) array of coordinates (anything numpy.asarray takes), a

@@ -9,6 +9,7 @@ checks the README's table of the parameters:
     generate-properties.py --header nvSettingsTable.h     the core's settings
     generate-properties.py --xml TEMPLATE OUT             the ParaView proxy
     generate-properties.py --markdown OUT                 the parameter reference
+    generate-properties.py --stub OUT                     the wheel's filter's type stub
     generate-properties.py --readme README.md [--check]   the README's table
 
 Only the standard library: it runs in any Python 3 the build finds.
@@ -18,6 +19,7 @@ import importlib.util
 import os
 import re
 import sys
+import textwrap
 from xml.sax.saxutils import escape, quoteattr
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -140,6 +142,54 @@ def xml(table, template):
     return head + text[:marker.start()] + xml_properties(table) + "\n" + text[marker.end():]
 
 
+# --- Python: the stub of the wheel's filter, whose Set/Get methods _filter.py makes at import.
+def stub(table):
+    out = ['"""Type stub of narrowvolume._filter (the wheel\'s filter), made from the property table',
+           '(Python/_properties.py) by cmake/generate-properties.py: its Set/Get methods exist only',
+           'once _filter.py has made them, so that editors and type checkers learn them here."""',
+           "from typing import ClassVar, Tuple", "",
+           "from vtkmodules.util.vtkAlgorithm import VTKPythonAlgorithmBase",
+           "from vtkmodules.vtkCommonDataModel import vtkDataObject, vtkImageData, vtkPolyData", "", "",
+           "class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):",
+           '    """Reconstructs a narrow volume (a thick shell) around an unorganized point cloud."""', ""]
+    for prop in table.PROPERTIES:
+        kind = prop.kind.__name__
+        if prop.choices:
+            out.append("    class %sType(int): ..." % prop.name)
+            for choice in prop.choices:
+                out.append("    %s: ClassVar[%sType]" % (choice.constant, prop.name))
+        doc = textwrap.fill(table.describe(prop).replace("\\", "\\\\").replace('"', "'"), 96,
+                            subsequent_indent=" " * 8)
+        out.append("    def Get%s(self) -> %s:" % (prop.name, kind))
+        out.append('        """%s"""' % doc)
+        out.append("    def Set%s(self, value: %s) -> None:" % (prop.name, kind))
+        out.append('        """%s"""' % doc)
+        if prop.kind is bool:
+            out.append("    def %sOn(self) -> None: ..." % prop.name)
+            out.append("    def %sOff(self) -> None: ..." % prop.name)
+        if prop.low is not None:
+            out.append("    def Get%sMinValue(self) -> %s: ..." % (prop.name, kind))
+            out.append("    def Get%sMaxValue(self) -> %s: ..." % (prop.name, kind))
+        for choice in prop.choices:
+            out.append("    def Set%sTo%s(self) -> None: ..." % (prop.name, choice.suffix))
+    out += ["    def SetInputData(self, data: vtkDataObject) -> None: ...",
+            "    def GetOutput(self, port: int = 0) -> vtkDataObject: ...",
+            "    def GetVolumeOutput(self) -> vtkImageData: ...",
+            "    def GetSurfaceOutput(self) -> vtkPolyData: ...",
+            "    def GetNumberOfIterations(self) -> int: ...",
+            "    def GetNumberOfBandNodes(self) -> int: ...",
+            "    def GetNumberOfGridNodes(self) -> int: ...",
+            "    def GetRelativeChanges(self) -> Tuple[float, ...]: ...",
+            "    def GetOffsetDistanceUsed(self) -> float: ...",
+            "    def GetSampleSpacingUsed(self) -> float: ...",
+            "    def GetClosingRadiusUsed(self) -> float: ...",
+            "    def GetSamplingTime(self) -> float: ...",
+            "    def GetSetupTime(self) -> float: ...",
+            "    def GetEvolutionTime(self) -> float: ...",
+            "    def GetOutputTime(self) -> float: ...", ""]
+    return "\n".join(out)
+
+
 # --- Markdown: the reference, and the README's table.
 def markdown_cell(text):
     return text.replace("|", "\\|")
@@ -227,6 +277,7 @@ def main():
     parser.add_argument("--header", metavar="OUT", help="write nvSettingsTable.h")
     parser.add_argument("--xml", nargs=2, metavar=("TEMPLATE", "OUT"), help="write the ParaView proxy")
     parser.add_argument("--markdown", metavar="OUT", help="write the parameter reference")
+    parser.add_argument("--stub", metavar="OUT", help="write the type stub of the wheel's filter (_filter.pyi)")
     parser.add_argument("--readme", metavar="README", help="rewrite the README's table of the parameters")
     parser.add_argument("--check", action="store_true", help="with --readme: only check it, exit 1 if it differs")
     args = parser.parse_args()
@@ -237,6 +288,8 @@ def main():
         write(args.xml[1], xml(table, args.xml[0]))
     if args.markdown:
         write(args.markdown, markdown(table))
+    if args.stub:
+        write(args.stub, stub(table))
     if args.readme:
         return readme(table, args.readme, args.check)
     return 0

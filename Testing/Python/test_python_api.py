@@ -89,6 +89,36 @@ def test_version():
         assert version("narrowvolume") == project
 
 
+def test_type_hints():
+    """The public functions carry type hints that resolve."""
+    import typing
+    from narrowvolume import _cli, _properties as table
+    hints = typing.get_type_hints(narrowvolume.reconstruct)
+    assert set(hints) >= {"points", "progress", "return"}
+    assert typing.get_type_hints(_cli.main)["return"] is int
+    assert typing.get_type_hints(table.describe)["return"] is str
+
+
+@only_wheel
+def test_stub_lists_every_property():
+    """The wheel carries py.typed and _filter.pyi, whose class declares each
+    property's methods (made from the table), with the table's documentation."""
+    import ast
+    folder = os.path.dirname(narrowvolume.__file__)
+    assert os.path.exists(os.path.join(folder, "py.typed"))
+    with open(os.path.join(folder, "_filter.pyi")) as f:
+        tree = ast.parse(f.read())
+    cls = next(n for n in tree.body if isinstance(n, ast.ClassDef) and n.name == "vtkNarrowVolumeReconstruction")
+    methods = {n.name: n for n in cls.body if isinstance(n, ast.FunctionDef)}
+    for prop in _properties.PROPERTIES:
+        assert "Get" + prop.name in methods and "Set" + prop.name in methods, prop.name
+        words = " ".join(ast.get_docstring(methods["Set" + prop.name]).split())
+        expected = " ".join(_properties.describe(prop).replace('"', "'").split())  # the stub's quotes
+        assert words == expected, prop.name
+    real = {n for n in dir(narrowvolume.vtkNarrowVolumeReconstruction) if n[:3] in ("Set", "Get")}
+    assert {n for n in methods if n[:3] in ("Set", "Get")} <= real
+
+
 # --- The property table against the filter.
 @pytest.mark.parametrize("prop", _properties.PROPERTIES, ids=lambda p: p.name)
 def test_property_methods(prop):
