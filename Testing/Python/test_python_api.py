@@ -39,6 +39,7 @@ from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPolyData, vtkUnstruct
 
 import narrowvolume
 from narrowvolume import _properties
+import nvclouds
 import nvflavours
 import nvtesting
 
@@ -49,7 +50,7 @@ WHEEL = narrowvolume.FLAVOUR == "wheel"
 only_wheel = pytest.mark.skipif(not WHEEL, reason="the wheel's Python filter and binding only")
 needs_reference = pytest.mark.skipif(not (WHEEL and REFERENCE),
                                      reason="compares the wheel with the C++ filter's record (NV_PIP_REFERENCE)")
-SPHERE = nvtesting.sphere_points(5000, 0.5, (1.0, 2.0, -3.0))
+SPHERE = nvclouds.sphere_points(5000, 0.5, (1.0, 2.0, -3.0))
 SETTINGS = dict(OffsetDistance=0.1, SampleSpacing=0.025)
 
 
@@ -142,7 +143,7 @@ def test_outputs_bit_identical_to_cpp(case):
     and the surface's points, normals and triangles."""
     with open(os.path.join(REFERENCE, "reference.json")) as f:
         expected = json.load(f)["cases"][case]
-    cloud = nvtesting.cloud(np.load(os.path.join(REFERENCE, "points.npy")))
+    cloud = nvclouds.cloud(np.load(os.path.join(REFERENCE, "points.npy")))
     got = nvflavours.summary(nvflavours.run_case(narrowvolume.vtkNarrowVolumeReconstruction, cloud,
                                                  nvflavours.CASES[case]))
     assert sorted(got) == sorted(expected)
@@ -159,12 +160,12 @@ def test_reconstruct_inputs():
     volume, surface = narrowvolume.reconstruct(SPHERE, **SETTINGS)
     assert isinstance(volume, vtkImageData) and isinstance(surface, vtkPolyData)
     grid = vtkUnstructuredGrid()
-    grid.SetPoints(nvtesting.cloud(SPHERE).GetPoints())
-    for data in (nvtesting.cloud(SPHERE), grid, SPHERE.tolist()):
+    grid.SetPoints(nvclouds.cloud(SPHERE).GetPoints())
+    for data in (nvclouds.cloud(SPHERE), grid, SPHERE.tolist()):
         other, _ = narrowvolume.reconstruct(data, **SETTINGS)
         assert np.array_equal(phi_of(other), phi_of(volume))
     f = narrowvolume.vtkNarrowVolumeReconstruction()
-    f.SetInputData(nvtesting.cloud(SPHERE))
+    f.SetInputData(nvclouds.cloud(SPHERE))
     f.SetOffsetDistance(0.1)
     f.SetSampleSpacing(0.025)
     f.Update()
@@ -220,7 +221,7 @@ def test_sampling_time():
     measurement's seconds in the update that made it, and 0 in an update that
     only changed a property."""
     f = narrowvolume.vtkNarrowVolumeReconstruction()
-    f.SetInputData(nvtesting.cloud(SPHERE))
+    f.SetInputData(nvclouds.cloud(SPHERE))
     f.SetOutputVolume(0)
     f.Update()
     assert f.GetSamplingTime() > 0.0
@@ -283,7 +284,7 @@ def test_spacing_progress_in_the_information_pass():
     (seconds on a large cloud, before the data pass): its progress shows
     there as the run's first tenth, never going back."""
     f = narrowvolume.vtkNarrowVolumeReconstruction()
-    f.SetInputData(nvtesting.cloud(nvtesting.sphere_points(100000)))
+    f.SetInputData(nvclouds.cloud(nvclouds.sphere_points(100000)))
     seen = []
     f.AddObserver(vtkCommand.ProgressEvent, lambda caller, event: seen.append(caller.GetProgress()))
     f.UpdateInformation()
@@ -297,7 +298,7 @@ def test_spacing_stops_when_asked():
     """The binding's measurement stops when the monitor asks (None), and on
     Ctrl-C (KeyboardInterrupt), as a run does."""
     from narrowvolume import _core
-    points = np.ascontiguousarray(nvtesting.sphere_points(100000))
+    points = np.ascontiguousarray(nvclouds.sphere_points(100000))
     assert _core.Sampling.Measure(points, 0, None).Statistics().Valid()
     assert _core.Sampling.Measure(points, 0, _core.Monitor(None, lambda: True)) is None
 
@@ -367,7 +368,7 @@ def test_ctrl_c_during_update():
     """Ctrl-C during the filter's Update(): the run stops, the outputs are
     empty, an error says so, and Update() returns."""
     f = narrowvolume.vtkNarrowVolumeReconstruction()
-    f.SetInputData(nvtesting.cloud(SPHERE))
+    f.SetInputData(nvclouds.cloud(SPHERE))
     f.SetOffsetDistance(0.1)
     f.SetSampleSpacing(0.01)
     f.SetMaximumNumberOfIterations(5000)
@@ -651,10 +652,10 @@ def test_readme_pip_snippets(tmp_path):
     from vtkmodules.vtkIOPLY import vtkPLYWriter
     snippets = readme_pip_snippets()
     assert len(snippets) >= 4, "the pip section's snippets"
-    points = nvtesting.sphere_points(2000, 15.0)
+    points = nvclouds.sphere_points(2000, 15.0)
     np.savetxt(str(tmp_path / "scan.xyz"), points)
     writer = vtkPLYWriter()
-    writer.SetInputData(nvtesting.cloud(points))
+    writer.SetInputData(nvclouds.cloud(points))
     writer.SetFileName(str(tmp_path / "scan.ply"))
     writer.Write()
     try:
