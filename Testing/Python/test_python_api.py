@@ -44,10 +44,10 @@ import nvflavours
 import nvtesting
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-TREFOIL = os.path.join(HERE, "..", "..", "Data", "trefoil.vtp")
+TREFOIL = nvclouds.data_file("trefoil.vtp")
 REFERENCE = os.environ.get("NV_PIP_REFERENCE")
 WHEEL = narrowvolume.FLAVOUR == "wheel"
-only_wheel = pytest.mark.skipif(not WHEEL, reason="the wheel's Python filter and binding only")
+only_wheel = pytest.mark.pip  # conftest.py skips these with the CMake build's package
 needs_reference = pytest.mark.skipif(not (WHEEL and REFERENCE),
                                      reason="compares the wheel with the C++ filter's record (NV_PIP_REFERENCE)")
 SPHERE = nvclouds.sphere_points(5000, 0.5, (1.0, 2.0, -3.0))
@@ -69,13 +69,10 @@ def phi_of(volume):
     return vtk_to_numpy(volume.GetPointData().GetArray("phi"))
 
 
-def test_flavour():
-    """The package under test is the one the test run asked for."""
+def test_flavour(flavour):
+    """The package under test is the one the test run asked for ($NV_EXPECT_FLAVOUR: the fixture checks it)."""
     print("narrowvolume %s from %s" % (narrowvolume.FLAVOUR, narrowvolume.__file__))
-    expected = os.environ.get("NV_EXPECT_FLAVOUR")
-    if expected:
-        assert narrowvolume.FLAVOUR == expected
-    assert narrowvolume.FLAVOUR in ("vtk-module", "wheel")
+    assert flavour in ("vtk-module", "wheel")
     assert (narrowvolume.vtkPointCloudTextReader is None) == WHEEL
 
 
@@ -686,23 +683,25 @@ def test_readme_pip_snippets(tmp_path):
 
 
 # --- The project's other Python tests, against the wheel (ctest runs them
-# against the CMake build's package, each on its own).
-SHARED_SCRIPTS = {
+# against the CMake build's package, each on its own), each module with
+# pytest in a child process, as ctest runs it.
+SHARED_MODULES = {
     "test_python_package.py": [],
     "test_robustness.py": [],
     "test_reference_scheme.py": [],
     "test_volume_off.py": [],
-    "test_pipeline_vtk.py": [TREFOIL],
+    "test_pipeline_vtk.py": ["--trefoil", TREFOIL],
 }
 
 
 @only_wheel
-@pytest.mark.parametrize("script", sorted(SHARED_SCRIPTS))
-def test_shared_script(script):
-    """A test script of the CMake build's package passes with the wheel."""
+@pytest.mark.parametrize("module", sorted(SHARED_MODULES))
+def test_shared_module(module):
+    """A test module of the CMake build's package passes with the wheel."""
     start = time.perf_counter()
-    result = subprocess.run([sys.executable, os.path.join(HERE, script)] + SHARED_SCRIPTS[script],
+    result = subprocess.run([sys.executable, "-m", "pytest", "-p", "no:cacheprovider", "-v", "-r", "s", "-s",
+                             os.path.join(HERE, module)] + SHARED_MODULES[module],
                             capture_output=True, text=True, cwd=HERE)
     print(result.stdout[-3000:])
-    print("%s: %.1f s" % (script, time.perf_counter() - start))
+    print("%s: %.1f s" % (module, time.perf_counter() - start))
     assert result.returncode == 0 and "FAILED" not in result.stdout, nvtesting.explain(result)
