@@ -62,6 +62,7 @@ def shape_points(shape, spacing):
     return nvshapes.SHAPES[shape]["points"](spacing)
 
 
+FIG5_POINTS = 2964  # the paper's sphere (Fig. 5)
 FIG6_NOISE = (0.05, 0.10)
 
 
@@ -72,7 +73,7 @@ def fig6_spheres(spacing=0.01, radius=0.5):
     uniform in [-1, 1] (seed 6 for each number of points, the 5 % cloud
     drawn first)."""
     spheres = []
-    for points in (2964, len(nvshapes.sphere_points(spacing, radius))):
+    for points in (FIG5_POINTS, len(nvshapes.sphere_points(spacing, radius))):
         clean = nvshapes.sphere_points(spacing, radius, count=points)
         rng = np.random.default_rng(6)
         for noise in FIG6_NOISE:
