@@ -15,8 +15,6 @@ from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkFiltersCore import (vtkCleanPolyData, vtkFeatureEdges, vtkMassProperties,
                                       vtkPolyDataConnectivityFilter)
 
-from nvclouds import cloud, sphere_points  # noqa: F401  (TEMPORARY: for the scripts not yet converted)
-
 
 def python_command():
     """The command that runs a Python with the same narrowvolume package as

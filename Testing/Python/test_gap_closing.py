@@ -39,7 +39,7 @@ from narrowvolume import vtkNarrowVolumeReconstruction
 import nvclouds
 import nvtesting
 
-pytestmark = pytest.mark.fidelity
+pytestmark = [pytest.mark.fidelity, pytest.mark.slow]
 
 
 def run(xyz_or_cloud, **settings):

@@ -20,7 +20,7 @@ from vtkmodules.vtkIOImage import vtkPNGReader
 
 import nvtesting
 
-pytestmark = pytest.mark.gui
+pytestmark = [pytest.mark.gui, pytest.mark.slow]
 DOWNSTREAM = ("Slice", "Clip", "Threshold", "Contour", "ResampleToImage", "PlotOverLine")
 # ParaView 6.1 as Debian builds it (VTK 9.6 with Viskores and TBB,
 # assertions on) aborts in the level-of-detail filter of its render views

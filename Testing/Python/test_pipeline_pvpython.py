@@ -24,6 +24,8 @@ from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline 
 
 import nvtesting
 
+pytestmark = pytest.mark.slow
+
 
 @pytest.fixture(scope="module")
 def p(pvs, trefoil):

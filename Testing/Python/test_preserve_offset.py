@@ -25,7 +25,7 @@ import nvclouds
 import nvshapes
 import nvtesting
 
-pytestmark = pytest.mark.fidelity
+pytestmark = [pytest.mark.fidelity, pytest.mark.slow]
 
 
 def reconstruct(cloud, h, offset, steps, preserve, **settings):

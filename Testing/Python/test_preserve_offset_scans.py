@@ -30,7 +30,7 @@ from narrowvolume import vtkNarrowVolumeReconstruction
 import nvclouds
 import nvtesting
 
-pytestmark = pytest.mark.fidelity
+pytestmark = [pytest.mark.fidelity, pytest.mark.slow]
 NAMES = ("bunny", "dragon", "armadillo", "teacup")
 CELLS = 100
 

@@ -23,7 +23,7 @@ from narrowvolume import vtkNarrowVolumeReconstruction
 import nvclouds
 import nvtesting
 
-pytestmark = pytest.mark.fidelity
+pytestmark = [pytest.mark.fidelity, pytest.mark.slow]
 SCANS = ("armadillo", "armadillo_decimated", "dragon", "teapot", "teacup", "bunny", "demosthenes",
          "bunny_rangescan_bun000")
 STATUES = ("armadillo", "armadillo_decimated", "dragon", "teapot")

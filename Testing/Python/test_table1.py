@@ -28,7 +28,7 @@ import nvclouds
 import nvshapes
 import nvtesting
 
-pytestmark = pytest.mark.fidelity
+pytestmark = [pytest.mark.fidelity, pytest.mark.slow]
 OFFSET = 0.1
 SHAPES = ("cube", "rotated cube", "sphere", "cylinder")
 
