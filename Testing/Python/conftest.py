@@ -3,7 +3,7 @@
 """The Python tests' harness: pytest, run by ctest one module at a time
 (Testing/CMakeLists.txt), e.g. in build/:
 
-    PYTHONPATH=lib/python3/dist-packages:../Testing/Python pvpython --force-offscreen-rendering \\
+    PYTHONPATH=lib/python3.11/dist-packages:../Testing/Python pvpython --force-offscreen-rendering \\
         -m pytest -v -r s -s ../Testing/Python/test_las_reader.py
 
 (`ctest -R '^LASReader$' -V` prints the command with the build's paths;
