@@ -259,7 +259,8 @@ def test_no_holes_nothing_added(name, points, settings):
     on, figures_on, warnings = run(xyz, **settings)
     off = run(xyz, CloseGaps=False, **settings)[0]
     assert figures_on["AddedPoints"][0] == 0 and phi_hash(on) == phi_hash(off) and \
-        figures_on["NumberOfGaps"][0] == 0, "%s: no gap, nothing added, phi bit-identical with CloseGaps on and off" % name
+        figures_on["NumberOfGaps"][0] == 0, \
+        "%s: no gap, nothing added, phi bit-identical with CloseGaps on and off" % name
 
 
 def test_same_phi_for_1_and_2_threads():

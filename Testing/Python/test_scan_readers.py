@@ -193,8 +193,9 @@ def test_laz_point_format(modules, readers, files, point_format):
             "%s: Colors" % label
     # The C++ reader on laspy's uncompressed file: the same arrays, the same values.
     native, errors = pf.read(vtkLASPointCloudReader, las_path)[1:]
-    native_names = sorted(native.GetPointData().GetArrayName(i) for i in range(native.GetPointData().GetNumberOfArrays()))
-    laz_names = sorted(cloud.GetPointData().GetArrayName(i) for i in range(cloud.GetPointData().GetNumberOfArrays()))
+    native_pd, laz_pd = native.GetPointData(), cloud.GetPointData()
+    native_names = sorted(native_pd.GetArrayName(i) for i in range(native_pd.GetNumberOfArrays()))
+    laz_names = sorted(laz_pd.GetArrayName(i) for i in range(laz_pd.GetNumberOfArrays()))
     assert not errors and native_names == laz_names, "%s: the LAS reader's arrays (%s vs %s)" % (
         label, native_names, laz_names)
     assert np.array_equal(vtk_to_numpy(native.GetPoints().GetData()), got) and all(
