@@ -1,10 +1,35 @@
 # SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
 # SPDX-License-Identifier: BSD-3-Clause
-"""The benchmarks' clouds and grids, shared by the child processes of
-table2.py and mpi_scaling.py (which put this folder on their PYTHONPATH)."""
-import math
+"""The benchmarks' clouds and grids, shared by the benchmarks and by the
+child processes of table2.py and mpi_scaling.py (which put this folder on
+their PYTHONPATH).
 
-import numpy as np
+The clouds themselves are the tests' (Testing/Python/nvclouds.py: the
+synthetic shapes, Data/'s demo cloud, the scans of ../shared/data/scans by
+name): this module is the benchmarks' one way to them. It puts
+Testing/Python on sys.path and gives nvclouds and nvshapes, and nvtesting
+(the tests' surface measures) when first asked for, `from clouds import
+nvtesting`: it loads VTK's filters, which the children that measure their
+memory do without.
+"""
+import os
+import sys
+
+TESTING = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Testing", "Python"))
+if TESTING not in sys.path:
+    sys.path.insert(0, TESTING)
+
+import nvclouds  # noqa: E402
+import nvshapes  # noqa: E402,F401  (given to the benchmarks)
+
+SCANS_DIR = nvclouds.SCANS_DIR
+
+
+def __getattr__(name):
+    if name == "nvtesting":
+        import nvtesting
+        return nvtesting
+    raise AttributeError("module %r has no attribute %r" % (__name__, name))
 
 
 def load(task):
@@ -14,23 +39,11 @@ def load(task):
     around a trefoil knot of Data/make_demo_cloud.py, the demo cloud's shape),
     or the PLY file task["path"]."""
     if task["source"].startswith("trefoil:"):
-        import os
-        import sys
-        sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Data"))
-        from make_demo_cloud import trefoil_tube
-        return trefoil_tube(int(task["source"].split(":")[1]))
+        return nvclouds.trefoil_tube(int(task["source"].split(":")[1]))
     if task["source"].startswith("sphere"):
-        n = 2964 if task["source"] == "sphere" else 500000
-        i = np.arange(n) + 0.5
-        polar = np.arccos(1 - 2 * i / n)
-        azimuth = math.pi * (1 + 5 ** 0.5) * i
-        return 0.5 + 0.45 * np.c_[np.cos(azimuth) * np.sin(polar), np.sin(azimuth) * np.sin(polar), np.cos(polar)]
-    from vtkmodules.util.numpy_support import vtk_to_numpy
-    from vtkmodules.vtkIOPLY import vtkPLYReader
-    reader = vtkPLYReader()
-    reader.SetFileName(task["path"])
-    reader.Update()
-    return vtk_to_numpy(reader.GetOutput().GetPoints().GetData()).astype(float)
+        n = nvclouds.FIG5_POINTS if task["source"] == "sphere" else 500000
+        return nvclouds.sphere_points(n, 0.45, (0.5, 0.5, 0.5))
+    return nvclouds.points_of_file(task["path"])
 
 
 def spacing(xyz, task):

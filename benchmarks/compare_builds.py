@@ -16,9 +16,8 @@ import os
 import statistics
 import sys
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
-import table2  # noqa: E402  (the children and the cases)
+import clouds
+import table2  # the children and the cases
 
 CASES = dict(table2.CASES, **{"sphere-1024": ("sphere1024", 1024, 4, 2, 3)})
 
@@ -35,7 +34,7 @@ def main():
     parser.add_argument("builds", nargs=2)
     parser.add_argument("--repeat", type=int, default=5)
     parser.add_argument("--cases", nargs="+", default=list(CASES))
-    parser.add_argument("--scans", default=os.path.join(HERE, "..", "..", "shared", "data", "scans"))
+    parser.add_argument("--scans", default=clouds.SCANS_DIR)
     args = parser.parse_args()
     sites = [site(b) for b in args.builds]
     print("A = %s, B = %s; medians of %d alternating runs; load average at start: %s" % (

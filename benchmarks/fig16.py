@@ -22,9 +22,7 @@ import os
 import platform
 import sys
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
-import table2  # noqa: E402  (the children)
+import table2  # the children
 
 
 def main():

@@ -13,16 +13,14 @@ pairs' ratios). --dense N adds a row for N points scattered over the demo's
 trefoil tube (clouds.py), a cloud far denser than its automatic offset.
 """
 import argparse
-import os
 import statistics
 import sys
 import time
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
+import numpy as np
 
-import numpy as np  # noqa: E402
-import clouds  # noqa: E402
+import clouds
+
 SCANS = ("armadillo", "armadillo_decimated", "dragon", "teapot", "teacup", "bunny", "demosthenes",
          "bunny_rangescan_bun000")
 
@@ -30,17 +28,16 @@ SCANS = ("armadillo", "armadillo_decimated", "dragon", "teapot", "teacup", "bunn
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--repeat", type=int, default=5)
-    parser.add_argument("--scans", default=os.path.join(HERE, "..", "..", "shared", "data", "scans"))
+    parser.add_argument("--scans", default=clouds.SCANS_DIR)
     parser.add_argument("--dense", type=int, default=0)
     args = parser.parse_args()
-    scans = os.path.isfile(os.path.join(args.scans, "armadillo.ply"))
+    scans = clouds.nvclouds.have_scans(SCANS, args.scans)
     if not scans:
-        print("no scans in %s (they are read from ../shared): scan rows skipped" % args.scans)
+        print("%s: scan rows skipped" % clouds.nvclouds.ScansMissing(args.scans))
 
     from vtkmodules.util.numpy_support import numpy_to_vtk
     from vtkmodules.vtkCommonCore import vtkPoints
     from vtkmodules.vtkCommonDataModel import vtkPolyData
-    from vtkmodules.vtkIOPLY import vtkPLYReader
     from narrowvolume import vtkNarrowVolumeReconstruction
 
     def read(name):
@@ -50,10 +47,7 @@ def main():
             cloud = vtkPolyData()
             cloud.SetPoints(points)
             return cloud
-        reader = vtkPLYReader()
-        reader.SetFileName(os.path.join(args.scans, name + ".ply"))
-        reader.Update()
-        return reader.GetOutput()
+        return clouds.nvclouds.scan(name, args.scans)
 
     print("| scan | points | points added | gaps without / with | Update() without (s) | with (s) | ratio |")
     print("|---|---|---|---|---|---|---|")

@@ -18,11 +18,9 @@ import os
 import sys
 import time
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
+import numpy as np
 
-import numpy as np  # noqa: E402
-import clouds  # noqa: E402
+import clouds
 
 
 def resident_mb():

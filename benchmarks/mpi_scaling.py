@@ -27,6 +27,8 @@ import subprocess
 import sys
 import tempfile
 
+import clouds
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 BUILD = os.path.join(HERE, "..", "build")
 
@@ -92,7 +94,7 @@ def run(ranks, task, build):
 
 def main():
     parser = argparse.ArgumentParser()
-    parser.add_argument("--scans", default=os.path.join(HERE, "..", "..", "shared", "data", "scans"))
+    parser.add_argument("--scans", default=clouds.SCANS_DIR)
     parser.add_argument("--case", choices=list(CASES), default="sphere-1024")
     parser.add_argument("--ranks", type=int, nargs="+", default=[1, 2, 4])
     parser.add_argument("--threads", type=int, default=1)
@@ -108,8 +110,6 @@ def main():
         return
     if source.startswith("trefoil"):
         import numpy as np
-        sys.path.insert(0, HERE)
-        import clouds
         scratch = tempfile.TemporaryDirectory(prefix="nv-mpi-scaling-")  # removed at exit
         task["npy"] = os.path.join(scratch.name, "cloud.npy")
         np.save(task["npy"], clouds.load(task))

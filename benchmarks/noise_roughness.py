@@ -8,16 +8,9 @@ between neighbouring triangles' normals.
     pvpython benchmarks/noise_roughness.py [--steps 3 10 20 40]
 """
 import argparse
-import os
-import sys
 
-import numpy as np
-
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "Testing", "Python"))
-import nvshapes  # noqa: E402
-import nvtesting  # noqa: E402
-from narrowvolume import vtkNarrowVolumeReconstruction  # noqa: E402
+from clouds import nvclouds, nvtesting
+from narrowvolume import vtkNarrowVolumeReconstruction
 
 parser = argparse.ArgumentParser()
 parser.add_argument("--steps", type=int, nargs="+", default=[3, 10, 20, 40])
@@ -42,11 +35,10 @@ def roughness(cloud, steps, preserve):
 print("Fig. 6 spheres, 5 % noise, xi = eps_4, eps = eps_12, h = 0.01: roughness (deg)")
 print("| points | steps | PreserveOffset | paper's scheme |")
 print("|---|---|---|---|")
-for points in (2964, len(nvshapes.sphere_points(H, R))):
-    clean = nvshapes.sphere_points(H, R, count=points)
-    rng = np.random.default_rng(6)  # the tests' clouds: the same seed, the first noise level
-    radial = (clean - nvshapes.CENTER) * (1.0 + NOISE * rng.uniform(-1.0, 1.0, len(clean)))[:, None]
-    cloud = nvtesting.cloud(nvshapes.CENTER + radial)
+for points, noise, xyz in nvclouds.fig6_spheres(H, R):  # the tests' clouds
+    if noise != NOISE:
+        continue
+    cloud = nvclouds.cloud(xyz)
     for steps in args.steps:
         print("| %d | %d | %.2f | %.2f |" % (points, steps, roughness(cloud, steps, True),
                                              roughness(cloud, steps, False)), flush=True)

@@ -21,17 +21,15 @@ import sys
 
 import numpy as np
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "Testing", "Python"))
-import nvshapes  # noqa: E402
-import nvtesting  # noqa: E402
-from narrowvolume import vtkNarrowVolumeReconstruction  # noqa: E402
+import clouds
+from clouds import nvclouds
+from narrowvolume import vtkNarrowVolumeReconstruction
 
 parser = argparse.ArgumentParser()
 parser.add_argument("--steps", type=int, default=10)
 parser.add_argument("--repeat", type=int, default=5)
 parser.add_argument("--callgrind", action="store_true")
-parser.add_argument("--scans", default=os.path.join(HERE, "..", "..", "shared", "data", "scans"))
+parser.add_argument("--scans", default=clouds.SCANS_DIR)
 parser.add_argument("--child", nargs=2, help=argparse.SUPPRESS)  # CASE PRESERVE: one run, for callgrind
 args = parser.parse_args()
 
@@ -43,13 +41,8 @@ CELLS = {"teacup": 150, "bunny": 150, "dragon": 200}
 def case_input(name):
     """(points, h, l) of a case."""
     if name == "sphere":
-        return nvshapes.sphere_points(0.01), 0.01, 0.1
-    from vtkmodules.util.numpy_support import vtk_to_numpy
-    from vtkmodules.vtkIOPLY import vtkPLYReader
-    reader = vtkPLYReader()
-    reader.SetFileName(os.path.join(args.scans, name + ".ply"))
-    reader.Update()
-    xyz = vtk_to_numpy(reader.GetOutput().GetPoints().GetData()).astype(float)
+        return nvclouds.shape_points("sphere", 0.01), 0.01, 0.1
+    xyz = nvclouds.scan_points(name, args.scans)
     h = float((xyz.max(axis=0) - xyz.min(axis=0)).max()) / CELLS[name]
     return xyz, h, 4 * h
 
@@ -69,12 +62,11 @@ def run(cloud, h, offset, preserve):
 
 if args.child:
     xyz, h, offset = case_input(args.child[0])
-    f = run(nvtesting.cloud(xyz), h, offset, bool(int(args.child[1])))
+    f = run(nvclouds.cloud(xyz), h, offset, bool(int(args.child[1])))
     print("band nodes %d" % f.GetNumberOfBandNodes())
     sys.exit(0)
 
-cases = [(name, label) for name, label in CASES
-         if name == "sphere" or os.path.isfile(os.path.join(args.scans, name + ".ply"))]
+cases = [(name, label) for name, label in CASES if name == "sphere" or nvclouds.have_scans((name,), args.scans)]
 if args.callgrind:
     print("%d steps, 1 thread: instructions in nv::AllenCahnSolver::Run (valgrind --tool=callgrind)" % args.steps)
     print("| case | band nodes | instructions, off | instructions, on | on / off |")
@@ -100,7 +92,7 @@ for name, label in cases:
         print("| %s | %d | %.4g | %.4g | %.3f |" % (label, nodes, counts[0], counts[1], counts[1] / counts[0]))
     else:
         xyz, h, offset = case_input(name)
-        cloud = nvtesting.cloud(xyz)
+        cloud = nvclouds.cloud(xyz)
         times = {False: [], True: []}
         for _ in range(args.repeat):
             for preserve in (False, True):

@@ -19,12 +19,10 @@ import statistics
 import sys
 import time
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
+import numpy as np
 
-import numpy as np  # noqa: E402
-import clouds  # noqa: E402
-import table2  # noqa: E402
+import clouds
+import table2
 
 
 def main():
@@ -32,7 +30,7 @@ def main():
     parser.add_argument("case", choices=list(table2.CASES))
     parser.add_argument("--repeat", type=int, default=8)
     parser.add_argument("--volume", choices=["on", "off"], default="off")
-    parser.add_argument("--scans", default=os.path.join(HERE, "..", "..", "shared", "data", "scans"))
+    parser.add_argument("--scans", default=clouds.SCANS_DIR)
     args = parser.parse_args()
 
     source, cells, offset_cells, xi, steps = table2.CASES[args.case][:5]

@@ -7,16 +7,12 @@ behind the default stopping rule. Prints a table and writes a plot.
     pvpython benchmarks/stopping_rule.py [--spacing 0.01 0.005] [--steps 20] [--plot doc/stopping_rule.png]
 """
 import argparse
-import os
 import sys
 
 import numpy as np
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "Testing", "Python"))
-import nvshapes  # noqa: E402
-import nvtesting  # noqa: E402
-from narrowvolume import vtkNarrowVolumeReconstruction  # noqa: E402
+from clouds import nvclouds, nvshapes, nvtesting
+from narrowvolume import vtkNarrowVolumeReconstruction
 
 parser = argparse.ArgumentParser()
 parser.add_argument("--spacing", type=float, nargs="+", default=[0.01, 0.005])
@@ -27,7 +23,7 @@ args = parser.parse_args()
 OFFSET = 0.1
 curves = {}
 for h in args.spacing:
-    cloud = nvtesting.cloud(nvshapes.sphere_points(h))
+    cloud = nvclouds.cloud(nvclouds.shape_points("sphere", h))
     steps = list(range(0, min(args.steps, 10) + 1)) + list(range(12, args.steps + 1, 4))
     rows = []
     print("\nsphere, h = %g" % h)

@@ -25,6 +25,8 @@ import subprocess
 import sys
 import tempfile
 
+import clouds
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 # The children run in pvpython, whose Python finds ParaView's VTK.
 PYTHON = shutil.which("pvpython") or "/usr/bin/pvpython"
@@ -133,7 +135,7 @@ def median_run(task, repeat, keys):
 
 def main():
     parser = argparse.ArgumentParser()
-    parser.add_argument("--scans", default=os.path.join(HERE, "..", "..", "shared", "data", "scans"))
+    parser.add_argument("--scans", default=clouds.SCANS_DIR)
     parser.add_argument("--openvdb", default=os.path.join(HERE, "..", "build", "bin", "openvdb_shell"))
     parser.add_argument("--cases", nargs="+", default=list(CASES))
     parser.add_argument("--repeat", type=int, default=3)

@@ -15,7 +15,7 @@ COPYRIGHT = "SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume develop
 LICENSE = "SPDX-License-Identifier: BSD-3-Clause"
 # How each kind of file writes a comment line.
 COMMENTS = {".cxx": "// ", ".cpp": "// ", ".h": "// ", ".py": "# ", ".sh": "# ", ".txt": "# ",
-            ".cmake": "# ", ".in": "# ", ".xml": None, ".toml": "# "}
+            ".cmake": "# ", ".in": "# ", ".xml": None, ".toml": "# ", ".ini": "# "}
 
 
 def comment_style(path):

@@ -20,6 +20,7 @@ from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 from vtkmodules.vtkParallelCore import vtkMultiProcessController
 
 import narrowvolume
+import nvclouds
 import nvtesting
 
 controller = vtkMultiProcessController.GetGlobalController()
@@ -33,7 +34,7 @@ xyz = nvtesting.points_of(reader.GetOutput())
 
 def shell(points, distributed):
     f = narrowvolume.vtkNarrowVolumeReconstruction()
-    f.SetInputData(nvtesting.cloud(points))
+    f.SetInputData(nvclouds.cloud(points))
     f.SetOffsetDistance(0.08)
     f.SetMaximumDimension(70)
     if not distributed:

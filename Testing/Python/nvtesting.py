@@ -1,8 +1,8 @@
 # SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
 # SPDX-License-Identifier: BSD-3-Clause
-"""Helpers shared by the Python tests: point clouds and surface checks."""
+"""Helpers shared by the Python tests: surface checks, child processes and
+scratch folders. (The point clouds are in nvclouds.py.)"""
 import atexit
-import math
 import os
 import re
 import shlex
@@ -11,29 +11,9 @@ import sys
 import tempfile
 
 import numpy as np
-from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
-from vtkmodules.vtkCommonCore import vtkPoints
-from vtkmodules.vtkCommonDataModel import vtkPolyData
+from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkFiltersCore import (vtkCleanPolyData, vtkFeatureEdges, vtkMassProperties,
                                       vtkPolyDataConnectivityFilter)
-
-
-def sphere_points(n, radius=0.5, center=(0.0, 0.0, 0.0)):
-    """n points spread evenly on a sphere (Fibonacci lattice), as an (n, 3) array."""
-    i = np.arange(n) + 0.5
-    polar = np.arccos(1.0 - 2.0 * i / n)
-    azimuth = math.pi * (1.0 + 5.0 ** 0.5) * i
-    unit = np.c_[np.cos(azimuth) * np.sin(polar), np.sin(azimuth) * np.sin(polar), np.cos(polar)]
-    return unit * radius + np.asarray(center)
-
-
-def cloud(xyz):
-    """A vtkPolyData holding only points."""
-    points = vtkPoints()
-    points.SetData(numpy_to_vtk(np.ascontiguousarray(xyz, dtype=float), deep=1))
-    data = vtkPolyData()
-    data.SetPoints(points)
-    return data
 
 
 def python_command():
@@ -143,12 +123,17 @@ _keep_scratch = [bool(os.environ.get("NV_KEEP_SCRATCH"))]
 
 
 def scratch_folder(prefix="nv-test-"):
-    """A new temporary folder, removed when the test ends unless it failed
-    (a failed check or an uncaught exception keeps it, and says where) or
-    NV_KEEP_SCRATCH is set."""
+    """A new temporary folder, removed when the process ends unless a test
+    failed (a failed assert or check, or an uncaught exception, keeps it, and
+    says where) or NV_KEEP_SCRATCH is set."""
     folder = tempfile.mkdtemp(prefix=prefix)
     _scratch.append(folder)
     return folder
+
+
+def keep_scratch():
+    """Keeps the scratch folders (conftest.py calls it when a test fails)."""
+    _keep_scratch[0] = True
 
 
 def _remove_scratch():
@@ -170,7 +155,9 @@ atexit.register(_remove_scratch)
 
 
 class Checker:
-    """Counts failed checks and prints each one; exit code via finish()."""
+    """Counts failed checks and prints each one; exit code via finish(). For
+    the scripts that run inside other processes (mpi_vtk_script.py, one per
+    MPI rank); the tests themselves are pytest modules with plain asserts."""
 
     def __init__(self, name):
         self.name = name

@@ -15,28 +15,23 @@ import os
 import sys
 
 import numpy as np
-from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 
 import narrowvolume
 from narrowvolume import _properties
+import nvclouds
 import nvflavours
-import nvtesting
 
 out = sys.argv[1]
 os.makedirs(out, exist_ok=True)
 if narrowvolume.FLAVOUR != "vtk-module":
     sys.exit("FAILED: pip_reference.py records the C++ filter; this is the %s flavour" % narrowvolume.FLAVOUR)
 cls = narrowvolume.vtkNarrowVolumeReconstruction
-reader = vtkXMLPolyDataReader()
-reader.SetFileName(os.path.join(os.path.dirname(__file__), "..", "..", "Data", "trefoil.vtp"))
-reader.Update()
-trefoil = vtk_to_numpy(reader.GetOutput().GetPoints().GetData()).astype(np.float64)
+trefoil = nvclouds.points_of_file(nvclouds.data_file("trefoil.vtp"))
 # Lone points (gaps, and loose pieces that RemoveSmallPieces drops).
 lone = np.array([[2.5, 0.0, 1.0], [-2.0, 2.2, 0.3], [1.0, -2.3, -0.4]])
-points = np.vstack([trefoil, nvtesting.sphere_points(4000, 0.4, (2.5, 0.0, 0.0)), lone])
+points = np.vstack([trefoil, nvclouds.sphere_points(4000, 0.4, (2.5, 0.0, 0.0)), lone])
 np.save(os.path.join(out, "points.npy"), points)
-cloud = nvtesting.cloud(points)
+cloud = nvclouds.cloud(points)
 record = {"api": nvflavours.public_api(cls), "properties": nvflavours.property_report(cls, _properties.PROPERTIES),
           "cases": {name: nvflavours.summary(nvflavours.run_case(cls, cloud, properties))
                     for name, properties in nvflavours.CASES.items()}}

@@ -7,25 +7,21 @@ declared in the information pass, before the run, and ParaView's Slice,
 Clip, Threshold, Contour, Resample To Image and Plot Over Line applied to the
 Volume output give points and cells.
 
-    pvpython test_gui.py PLUGIN CLOUD WITH_XVFB
+    pvpython -m pytest test_gui.py --plugin PLUGIN [--trefoil CLOUD] [--with-xvfb WITH_XVFB]
 """
 import json
 import os
 import subprocess
-import sys
 
 import numpy as np
+import pytest
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOImage import vtkPNGReader
 
 import nvtesting
 
-plugin, cloud, with_xvfb = sys.argv[1:4]
-t = nvtesting.Checker("test_gui")
-folder = nvtesting.scratch_folder(prefix="nv-gui-")
-env = dict(os.environ, NV_PLUGIN=plugin, NV_CLOUD=cloud, NV_SCREENSHOT=os.path.join(folder, "gui.png"),
-           NV_GUI_RESULT=os.path.join(folder, "result.json"), NV_FORCE_XVFB="1")
-script = os.path.join(os.path.dirname(os.path.abspath(__file__)), "gui_script.py")
+pytestmark = [pytest.mark.gui, pytest.mark.slow]
+DOWNSTREAM = ("Slice", "Clip", "Threshold", "Contour", "ResampleToImage", "PlotOverLine")
 # ParaView 6.1 as Debian builds it (VTK 9.6 with Viskores and TBB,
 # assertions on) aborts in the level-of-detail filter of its render views
 # (vtkmLevelOfDetail, always used there when built in) on flat data: the bins
@@ -34,9 +30,7 @@ script = os.path.join(os.path.dirname(os.path.abspath(__file__)), "gui_script.py
 # or without the plugin. Where a flat mesh makes that filter abort, the view
 # gets a LOD threshold beyond its data, as the README advises users; where
 # the filter is absent or works, ParaView's defaults stay.
-probe = os.path.join(folder, "probe_lod.py")
-with open(probe, "w") as f:
-    f.write("""try:
+PROBE_LOD = """try:
     from vtkmodules.vtkAcceleratorsVTKmFilters import vtkmLevelOfDetail
 except ImportError:
     print("absent")
@@ -55,63 +49,99 @@ lod.SetInputConnection(triangles.GetOutputPort())
 lod.SetNumberOfDivisions(64, 64, 64)
 lod.Update()
 print("ok")
-""")
-lod_run = subprocess.run(["pvpython", probe], capture_output=True, text=True, timeout=120)
-if lod_run.stdout.strip().endswith(("ok", "absent")):
-    print("vtkmLevelOfDetail on flat data: %s" % lod_run.stdout.strip().split()[-1])
-elif lod_run.returncode < 0 or lod_run.returncode == 134:
-    print("vtkmLevelOfDetail on flat data: aborts (ParaView's bug), the view's LOD threshold is raised")
-    env["NV_NO_LOD"] = "1"
-else:
-    print("vtkmLevelOfDetail probe did not run: %s" % nvtesting.explain(lod_run))
-# --dr: the default settings, not the user's. It also keeps the welcome dialog
-# away, which ParaView 6 opens (modal, waiting for a click) while the script's
-# filter reports progress.
-run = subprocess.run([with_xvfb, "paraview", "--dr", "--script=" + script], env=env, capture_output=True,
-                     text=True, timeout=300)
-t.check(os.path.exists(env["NV_GUI_RESULT"]), "the client ran the script: %s" % nvtesting.explain(run))
-if os.path.exists(env["NV_GUI_RESULT"]):
+"""
+
+
+@pytest.fixture(scope="module")
+def gui(plugin_path, trefoil, with_xvfb):
+    """The client's run of gui_script.py: what it saw (its JSON), and the screenshot's path."""
+    folder = nvtesting.scratch_folder(prefix="nv-gui-")
+    env = dict(os.environ, NV_PLUGIN=plugin_path, NV_CLOUD=trefoil, NV_SCREENSHOT=os.path.join(folder, "gui.png"),
+               NV_GUI_RESULT=os.path.join(folder, "result.json"), NV_FORCE_XVFB="1")
+    script = os.path.join(os.path.dirname(os.path.abspath(__file__)), "gui_script.py")
+    probe = os.path.join(folder, "probe_lod.py")
+    with open(probe, "w") as f:
+        f.write(PROBE_LOD)
+    lod_run = subprocess.run(["pvpython", probe], capture_output=True, text=True, timeout=120)
+    if lod_run.stdout.strip().endswith(("ok", "absent")):
+        print("vtkmLevelOfDetail on flat data: %s" % lod_run.stdout.strip().split()[-1])
+    elif lod_run.returncode < 0 or lod_run.returncode == 134:
+        print("vtkmLevelOfDetail on flat data: aborts (ParaView's bug), the view's LOD threshold is raised")
+        env["NV_NO_LOD"] = "1"
+    else:
+        print("vtkmLevelOfDetail probe did not run: %s" % nvtesting.explain(lod_run))
+    # --dr: the default settings, not the user's. It also keeps the welcome dialog
+    # away, which ParaView 6 opens (modal, waiting for a click) while the script's
+    # filter reports progress.
+    run = subprocess.run([with_xvfb, "paraview", "--dr", "--script=" + script], env=env, capture_output=True,
+                         text=True, timeout=300)
+    assert os.path.exists(env["NV_GUI_RESULT"]), "the client ran the script: %s" % nvtesting.explain(run)
     result = json.load(open(env["NV_GUI_RESULT"]))
     print(json.dumps(result, indent=1))
-    t.check(result.get("ok"), "script ran through: %s" % result.get("error"))
-    t.check(result.get("label") == "Narrow Volume Reconstruction", "filter label")
-    t.check(result.get("offset_default") == 0.0, "offset default 0: automatic (%s)" % result.get("offset_default"))
+    return result, env["NV_SCREENSHOT"]
+
+
+def test_the_script_ran_through(gui):
+    result = gui[0]
+    assert result.get("ok"), "script ran through: %s" % result.get("error")
+    assert result.get("label") == "Narrow Volume Reconstruction", "filter label"
+
+
+def test_the_automatic_offset(gui):
+    result = gui[0]
+    assert result.get("offset_default") == 0.0, "offset default 0: automatic (%s)" % result.get("offset_default")
     extent = result.get("cloud_extent", 0.0)
     print("GUI: offset used %s, slider %s, cloud's largest side %s, cloud pixels %s" % (
         result.get("offset_used"), result.get("offset_slider"), extent, result.get("cloud_pixels")))
-    t.check(0.0 < result.get("offset_used", 0.0) < 0.05 * extent, "the automatic offset follows the sampling")
+    assert 0.0 < result.get("offset_used", 0.0) < 0.05 * extent, "the automatic offset follows the sampling"
     slider = result.get("offset_slider") or [1.0, 0.0]
-    t.check(slider[0] == 0.0 and slider[1] > 5.0 * result.get("offset_used", 1e9),
-            "the offset slider reaches well beyond the automatic offset: %s" % slider)
-    t.check(result.get("cloud_pixels", 0) > 500, "the input points are drawn after Apply (%s pixels)" % result.get("cloud_pixels"))
-    t.check(result.get("surface_cells", 0) > 10000, "surface computed with the panel's defaults")
-    t.check(result.get("volume_points", 0) > 100000, "volume computed")
-    t.check(result.get("cloud_visible"), "the input points stay visible")
-    # The information pass declared the grid the run produced.
+    assert slider[0] == 0.0 and slider[1] > 5.0 * result.get("offset_used", 1e9), \
+        "the offset slider reaches well beyond the automatic offset: %s" % slider
+
+
+def test_outputs_and_points_shown(gui):
+    result = gui[0]
+    assert result.get("cloud_pixels", 0) > 500, \
+        "the input points are drawn after Apply (%s pixels)" % result.get("cloud_pixels")
+    assert result.get("surface_cells", 0) > 10000, "surface computed with the panel's defaults"
+    assert result.get("volume_points", 0) > 100000, "volume computed"
+    assert result.get("cloud_visible"), "the input points stay visible"
+
+
+def test_information_pass(gui):
+    """The information pass declared the grid the run produced."""
+    result = gui[0]
     declared = result.get("info_whole_extent")
-    t.check(declared is not None and declared[::2] == [0, 0, 0] and min(declared[1::2]) > 10 and
-            result.get("points_before_run") == 0, "the information pass declares a grid before the run: %s"
-            % (declared,))
-    t.check(declared == result.get("volume_extent"), "the run's extent is the declared one: %s"
-            % result.get("volume_extent"))
-    # ParaView's filters applied to the Volume output.
-    for name in ("Slice", "Clip", "Threshold", "Contour", "ResampleToImage", "PlotOverLine"):
-        counts = result.get("downstream_" + name) or {}
-        phi_range = counts.get("phi_range") or [2.0, -2.0]  # phi missing: fails the range check
-        print("%s on the Volume: %s points, %s cells, phi in %s" % (name, counts.get("points"), counts.get("cells"),
-                                                                    phi_range))
-        t.check(counts.get("points", 0) > 0 and counts.get("cells", 0) > 0, "%s on the Volume: points and cells" % name)
-        t.check(-1.0 <= phi_range[0] <= phi_range[1] <= 1.0, "%s on the Volume: phi in [-1, 1]" % name)
-    t.check(((result.get("downstream_Threshold") or {}).get("phi_range") or [-1])[0] >= 0.0,
-            "Threshold on the Volume: phi >= 0")
+    assert declared is not None and declared[::2] == [0, 0, 0] and min(declared[1::2]) > 10 and \
+        result.get("points_before_run") == 0, "the information pass declares a grid before the run: %s" % (declared,)
+    assert declared == result.get("volume_extent"), "the run's extent is the declared one: %s" % (
+        result.get("volume_extent"))
+
+
+@pytest.mark.parametrize("name", DOWNSTREAM)
+def test_paraview_filter_on_the_volume(gui, name):
+    """ParaView's filters applied to the Volume output."""
+    counts = gui[0].get("downstream_" + name) or {}
+    phi_range = counts.get("phi_range") or [2.0, -2.0]  # phi missing: fails the range check
+    print("%s on the Volume: %s points, %s cells, phi in %s" % (name, counts.get("points"), counts.get("cells"),
+                                                                phi_range))
+    assert counts.get("points", 0) > 0 and counts.get("cells", 0) > 0, "%s on the Volume: points and cells" % name
+    assert -1.0 <= phi_range[0] <= phi_range[1] <= 1.0, "%s on the Volume: phi in [-1, 1]" % name
+
+
+def test_threshold_keeps_phi_at_least_0(gui):
+    assert ((gui[0].get("downstream_Threshold") or {}).get("phi_range") or [-1])[0] >= 0.0, \
+        "Threshold on the Volume: phi >= 0"
+
+
+def test_screenshot(gui):
     png = vtkPNGReader()
-    png.SetFileName(env["NV_SCREENSHOT"])
+    png.SetFileName(gui[1])
     png.Update()
     image = vtk_to_numpy(png.GetOutput().GetPointData().GetScalars())[:, :3].astype(int)
     background = np.median(image, axis=0)
     content = np.abs(image - background).sum(axis=1) > 60
     orange = (image[:, 0] > image[:, 2] + 40)  # the shell's colour
     print("screenshot: %.1f %% content, %.1f %% shell-coloured" % (100 * content.mean(), 100 * orange.mean()))
-    t.check(content.mean() > 0.05, "the screenshot has content")
-    t.check(orange.mean() > 0.02, "the shell is in the picture")
-t.finish()
+    assert content.mean() > 0.05, "the screenshot has content"
+    assert orange.mean() > 0.02, "the shell is in the picture"

@@ -16,35 +16,43 @@ runs with --dr (no user settings), so a user's own default readers cannot
 change the outcome. A dialog left open fails the test: the event that
 follows the Open finds no reader.
 
-    pvpython test_gui_open_files.py PLUGINS_XML WITH_XVFB
+    pvpython -m pytest test_gui_open_files.py --plugins-xml PLUGINS_XML [--with-xvfb WITH_XVFB]
 """
 import json
 import os
 import subprocess
-import sys
+import types
 from xml.sax.saxutils import quoteattr
 
 import numpy as np
+import pytest
 
+import nvclouds
 import nvpointfiles as pf
 import nvtesting
 
-plugins_xml, with_xvfb = sys.argv[1:3]
-t = nvtesting.Checker("test_gui_open_files")
-folder = nvtesting.scratch_folder(prefix="nv-gui-open-")
-xyz = nvtesting.sphere_points(500, 0.5)
-files = {"xyz": os.path.join(folder, "plain.xyz"), "las": os.path.join(folder, "cloud.las"),
-         "pcd": os.path.join(folder, "cloud.pcd"), "laz": os.path.join(folder, "cloud.laz"),
-         "e57": os.path.join(folder, "cloud.e57")}
-np.savetxt(files["xyz"], xyz, fmt="%.6f")
-pf.write_las(files["las"], 2, 3, xyz)
-pf.write_pcd(files["pcd"], [("x", "F", 4, 1), ("y", "F", 4, 1), ("z", "F", 4, 1)],
-             {"x": xyz[:, 0], "y": xyz[:, 1], "z": xyz[:, 2]}, "binary")
-for name in ("laz", "e57"):  # only opened, never read: the reader's choice is what is tested
-    with open(files[name], "wb") as f:
-        f.write(b"not read")
-PLUGIN_DIR = os.path.dirname(os.path.abspath(plugins_xml))
-plugin = os.path.join(PLUGIN_DIR, "NarrowVolume", "NarrowVolume.so")
+pytestmark = [pytest.mark.gui, pytest.mark.readers]
+
+
+@pytest.fixture(scope="module")
+def files(plugins_xml):
+    """The files to open (name -> path), the scratch folder, the plugin beside the plugins' XML."""
+    folder = nvtesting.scratch_folder(prefix="nv-gui-open-")
+    xyz = nvclouds.sphere_points(500, 0.5)
+    paths = {"xyz": os.path.join(folder, "plain.xyz"), "las": os.path.join(folder, "cloud.las"),
+             "pcd": os.path.join(folder, "cloud.pcd"), "laz": os.path.join(folder, "cloud.laz"),
+             "e57": os.path.join(folder, "cloud.e57")}
+    np.savetxt(paths["xyz"], xyz, fmt="%.6f")
+    pf.write_las(paths["las"], 2, 3, xyz)
+    pf.write_pcd(paths["pcd"], [("x", "F", 4, 1), ("y", "F", 4, 1), ("z", "F", 4, 1)],
+                 {"x": xyz[:, 0], "y": xyz[:, 1], "z": xyz[:, 2]}, "binary")
+    for name in ("laz", "e57"):  # only opened, never read: the reader's choice is what is tested
+        with open(paths[name], "wb") as f:
+            f.write(b"not read")
+    plugin_dir = os.path.dirname(os.path.abspath(plugins_xml))
+    return types.SimpleNamespace(folder=folder, paths=paths,
+                                 plugin=os.path.join(plugin_dir, "NarrowVolume", "NarrowVolume.so"))
+
 
 RECORD = """import json, os, traceback
 result = {}
@@ -72,7 +80,7 @@ os._exit(0)
 """
 
 
-def console(code, name):
+def console(folder, code, name):
     """An event that runs `code` in the client's Python shell. The shell takes
     one line at a time, as typed: the code runs from a file."""
     path = os.path.join(folder, name + ".py")
@@ -82,16 +90,20 @@ def console(code, name):
             'command="executeCommand" arguments=%s />' % quoteattr("exec(open(%r).read())" % path))
 
 
-def scenario(label, autoload):
+@pytest.mark.parametrize("label, autoload", [("auto-loaded", True), ("loaded-from-python", False)],
+                         ids=["auto-loaded", "loaded-from-python"])
+def test_file_open(files, plugins_xml, with_xvfb, label, autoload):
     """Runs the client: the plugin auto-loaded at start-up (its settings
     proxies are created after it), or loaded from the Python shell once the
     client runs (as Tools > Manage Plugins does: the proxies exist already);
     then Edit > Settings and OK, which writes every settings proxy's values
     over the user's settings, and File > Open of each file."""
+    folder = files.folder
     result_path = os.path.join(folder, label + ".json")
     events = ['<?xml version="1.0" ?>', "<pqevents>"]
     if not autoload:
-        events.append(console("from paraview.simple import LoadPlugin\nLoadPlugin(%r)\n" % plugin, label + "-load"))
+        events.append(console(folder, "from paraview.simple import LoadPlugin\nLoadPlugin(%r)\n" % files.plugin,
+                              label + "-load"))
     events.append('  <pqevent object="pqClientMainWindow/menubar" command="activate" arguments="menu_Edit" />')
     events.append('  <pqevent object="pqClientMainWindow/menubar/menu_Edit" command="activate" '
                   'arguments="actionEditSettings" />')
@@ -101,8 +113,8 @@ def scenario(label, autoload):
         events.append('  <pqevent object="pqClientMainWindow/MainControlsToolbar/actionOpenData" '
                       'command="activate" arguments="" />')
         events.append('  <pqevent object="pqClientMainWindow/FileOpenDialog" command="filesSelected" '
-                      'arguments=%s />' % quoteattr(files[name]))
-    events.append(console(RECORD % result_path, label + "-record"))
+                      'arguments=%s />' % quoteattr(files.paths[name]))
+    events.append(console(folder, RECORD % result_path, label + "-record"))
     events.append("</pqevents>")
     script = os.path.join(folder, label + ".xml")
     with open(script, "w") as f:
@@ -117,9 +129,8 @@ def scenario(label, autoload):
         explanation = nvtesting.explain(run)
     except subprocess.TimeoutExpired:
         explanation = "the client did not finish within 240 s (a dialog waiting for an answer?)"
-    if not t.check(os.path.exists(result_path), "%s: the client opened the files and ran the check: %s"
-                   % (label, explanation)):
-        return
+    assert os.path.exists(result_path), "%s: the client opened the files and ran the check: %s" % (
+        label, explanation)
     opened = json.load(open(result_path))
     print("%s: %s" % (label, json.dumps(opened)))
     by_file = {entry["file"]: entry for entry in opened.values()}
@@ -128,11 +139,6 @@ def scenario(label, autoload):
                 "cloud.e57": "E57PointCloudReader"}
     for name, reader in expected.items():
         got = by_file.get(name, {}).get("reader")
-        t.check(got == reader, "%s: File > Open %s: %s, without a dialog (got %s)" % (label, name, reader, got))
+        assert got == reader, "%s: File > Open %s: %s, without a dialog (got %s)" % (label, name, reader, got)
     for name in ("plain.xyz", "cloud.las", "cloud.pcd"):
-        t.check(by_file.get(name, {}).get("points") == 500, "%s: %s: 500 points in the GUI" % (label, name))
-
-
-scenario("auto-loaded", autoload=True)
-scenario("loaded-from-python", autoload=False)
-t.finish()
+        assert by_file.get(name, {}).get("points") == 500, "%s: %s: 500 points in the GUI" % (label, name)

@@ -17,30 +17,28 @@ paper's l2 measure reported beside it. What users see, the sheets, must
 agree to a tenth of a cell: the largest distance from the narrow band's
 surface to the whole domain's is asserted below 0.1 h.
 
-    pvpython test_narrow_vs_whole.py [SCANS_DIR]
+    pvpython -m pytest -s test_narrow_vs_whole.py [--scans-dir SCANS_DIR]
 """
-import os
-import sys
-
 import numpy as np
+import pytest
 from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkIOPLY import vtkPLYReader
-
-from narrowvolume import vtkNarrowVolumeReconstruction
-import nvshapes
-import nvtesting
-
 from vtkmodules.vtkFiltersCore import vtkImplicitPolyDataDistance
 
-t = nvtesting.Checker("test_narrow_vs_whole")
+from narrowvolume import vtkNarrowVolumeReconstruction
+import nvclouds
+import nvtesting
+
+pytestmark = pytest.mark.fidelity
 DELTA = 0.01
+CASES = ("sphere, Table 1, h = 0.01", "rotated cube, h = 0.01", "dragon, 200 cells, l = 4h")
 
 
 def compare(name, xyz, offset, spacing, steps=3):
+    """Both runs, their row of the table printed; the figures the test checks."""
     runs = {}
     for domain in (0, 1):
         f = vtkNarrowVolumeReconstruction()
-        f.SetInputData(nvtesting.cloud(xyz))
+        f.SetInputData(nvclouds.cloud(xyz))
         f.SetOffsetDistance(offset)
         f.SetSampleSpacing(spacing)
         f.SetMaximumNumberOfIterations(steps)
@@ -62,26 +60,31 @@ def compare(name, xyz, offset, spacing, steps=3):
     gap = max(abs(distance.EvaluateFunction(x)) for x in nvtesting.points_of(surface_n)[::10])
     print("| %s | %d | %d | %.3e | %.3e (bound %.3e) | %.3f h |" % (
         name, band.sum(), band.size, l2, difference.max(), bound, gap / spacing))
-    t.check(everything.all(), "%s: whole domain updates every node" % name)
-    t.check(difference.max() <= bound, "%s: max difference %.3e over %.3e" % (name, difference.max(), bound))
-    t.check(l2 > 0, "%s: the two runs are different computations" % name)
-    t.check(gap < 0.1 * spacing, "%s: sheets %.3f h apart" % (name, gap / spacing))
+    return dict(everything=everything.all(), max=difference.max(), bound=bound, l2=l2, gap=gap, spacing=spacing)
 
 
-print("| case | band nodes | all nodes | l2 difference over the band (paper: 2.955e-4, 2.376e-4) "
-      "| max difference | largest distance between the surfaces |")
-print("|---|---|---|---|---|---|")
-compare("sphere, Table 1, h = 0.01", nvshapes.sphere_points(0.01), 0.1, 0.01)
-compare("rotated cube, h = 0.01", nvshapes.SHAPES["rotated cube"]["points"](0.01), 0.1, 0.01)
-scans = sys.argv[1] if len(sys.argv) > 1 else ""
-dragon = os.path.join(scans, "dragon.ply")
-if os.path.isfile(dragon):
-    reader = vtkPLYReader()
-    reader.SetFileName(dragon)
-    reader.Update()
-    xyz = vtk_to_numpy(reader.GetOutput().GetPoints().GetData()).astype(float)
-    h = float((xyz.max(axis=0) - xyz.min(axis=0)).max()) / 200
-    compare("dragon, 200 cells, l = 4h", xyz, 4 * h, h)
-else:
-    print("dragon skipped: no scans in '%s'" % scans)
-t.finish()
+@pytest.fixture(scope="module")
+def table(scans_dir):
+    """Each case compared ({name: figures}), the table printed; the dragon
+    when the scans are there."""
+    print("\n| case | band nodes | all nodes | l2 difference over the band (paper: 2.955e-4, 2.376e-4) "
+          "| max difference | largest distance between the surfaces |")
+    print("|---|---|---|---|---|---|")
+    rows = {CASES[0]: compare(CASES[0], nvclouds.shape_points("sphere", 0.01), 0.1, 0.01),
+            CASES[1]: compare(CASES[1], nvclouds.shape_points("rotated cube", 0.01), 0.1, 0.01)}
+    if nvclouds.have_scans(("dragon",), scans_dir):
+        xyz = nvclouds.scan_points("dragon", scans_dir)
+        h = float((xyz.max(axis=0) - xyz.min(axis=0)).max()) / 200
+        rows[CASES[2]] = compare(CASES[2], xyz, 4 * h, h)
+    return rows
+
+
+@pytest.mark.parametrize("name", CASES)
+def test_narrow_band_against_whole_domain(table, require_scans, name):
+    if name.startswith("dragon"):
+        require_scans("dragon")
+    row = table[name]
+    assert row["everything"], "%s: whole domain updates every node" % name
+    assert row["max"] <= row["bound"], "%s: max difference %.3e over %.3e" % (name, row["max"], row["bound"])
+    assert row["l2"] > 0, "%s: the two runs are different computations" % name
+    assert row["gap"] < 0.1 * row["spacing"], "%s: sheets %.3f h apart" % (name, row["gap"] / row["spacing"])

@@ -20,26 +20,30 @@ the paper's 2.242e-2 and 3.755e-2; with dense sampling (points h apart,
 from every point lying within A of the sphere.
 """
 import numpy as np
+import pytest
 
 from narrowvolume import vtkNarrowVolumeReconstruction
+import nvclouds
 import nvshapes
 import nvtesting
 
-t = nvtesting.Checker("test_noise_fig6")
+pytestmark = pytest.mark.fidelity
 PAPER = {0.05: 2.242e-2, 0.10: 3.755e-2}
 R, L, H = 0.5, 0.1, 0.01
+SPHERES = nvclouds.fig6_spheres(H, R)
 
 
-print("| points | noise | average error (both sheets) | inner | outer | paper | bound A | "
-      "roughness phi0 -> final (deg) |")
-print("|---|---|---|---|---|---|---|---|")
-for points, compare_with_paper in ((2964, True), (len(nvshapes.sphere_points(H, R)), False)):
-    clean = nvshapes.sphere_points(H, R, count=points)
-    rng = np.random.default_rng(6)
-    for noise, paper in PAPER.items():
-        radial = (clean - nvshapes.CENTER) * (1.0 + noise * rng.uniform(-1.0, 1.0, len(clean)))[:, None]
+@pytest.fixture(scope="module")
+def table():
+    """Every cloud run, its row of the table printed: [(errors of both
+    sheets, roughness before and after the evolution, sheets)]."""
+    print("\n| points | noise | average error (both sheets) | inner | outer | paper | bound A | "
+          "roughness phi0 -> final (deg) |")
+    print("|---|---|---|---|---|---|---|---|")
+    rows = []
+    for points, noise, xyz in SPHERES:
         f = vtkNarrowVolumeReconstruction()
-        f.SetInputData(nvtesting.cloud(nvshapes.CENTER + radial))
+        f.SetInputData(nvclouds.cloud(xyz))
         f.SetOffsetDistance(L)
         f.SetSampleSpacing(H)
         f.SetXiCells(4)
@@ -54,12 +58,21 @@ for points, compare_with_paper in ((2964, True), (len(nvshapes.sphere_points(H, 
         r = np.linalg.norm(nvtesting.points_of(surface) - nvshapes.CENTER, axis=1)
         inner, outer = np.abs(r[r < R] - (R - L)), np.abs(r[r >= R] - (R + L))
         both = np.concatenate([inner, outer]).mean()
-        amplitude = noise * R
         print("| %d | %d %% | %.3e | %.3e | %.3e | %.3e | %.3e | %.2f -> %.2f |" % (
-            len(clean), round(noise * 100), both, inner.mean(), outer.mean(), paper, amplitude, before, after))
-        t.check(nvtesting.regions(surface) == 2, "noise %g: two sheets" % noise)
-        if compare_with_paper:
-            t.check(both <= paper, "noise %g: average error %.3e above the paper's %.3e" % (noise, both, paper))
-        t.check(both < amplitude, "noise %g: average error %.3e above the noise amplitude" % (noise, both))
-        t.check(after < 0.8 * before, "noise %g: smoother after evolution (%.2f -> %.2f deg)" % (noise, before, after))
-t.finish()
+            points, round(noise * 100), both, inner.mean(), outer.mean(), PAPER[noise], noise * R, before, after))
+        rows.append(dict(both=both, before=before, after=after, sheets=nvtesting.regions(surface)))
+    return rows
+
+
+@pytest.mark.parametrize("case", range(len(SPHERES)),
+                         ids=["%d points, %d %%" % (points, round(100 * noise)) for points, noise, _ in SPHERES])
+def test_noisy_sphere(table, case):
+    points, noise, _ = SPHERES[case]
+    row = table[case]
+    paper, both, before, after = PAPER[noise], row["both"], row["before"], row["after"]
+    amplitude = noise * R
+    assert row["sheets"] == 2, "noise %g: two sheets" % noise
+    if points == nvclouds.FIG5_POINTS:  # the paper's density: compared with the paper
+        assert both <= paper, "noise %g: average error %.3e above the paper's %.3e" % (noise, both, paper)
+    assert both < amplitude, "noise %g: average error %.3e above the noise amplitude" % (noise, both)
+    assert after < 0.8 * before, "noise %g: smoother after evolution (%.2f -> %.2f deg)" % (noise, before, after)

@@ -10,22 +10,24 @@ error, an empty output, and no large allocation."""
 import os
 import resource
 import struct
+import types
 
 import numpy as np
+import pytest
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.util.vtkConstants import (VTK_DOUBLE, VTK_FLOAT, VTK_LONG_LONG, VTK_SHORT, VTK_SIGNED_CHAR,
                                           VTK_UNSIGNED_CHAR, VTK_UNSIGNED_INT, VTK_UNSIGNED_LONG_LONG,
                                           VTK_UNSIGNED_SHORT)
 
 from narrowvolume import vtkPCDPointCloudReader
+import nvclouds
 import nvpointfiles as pf
 import nvtesting
 
-t = nvtesting.Checker("test_pcd_reader")
-folder = nvtesting.scratch_folder(prefix="nv-pcd-")
+pytestmark = pytest.mark.readers
 n = 300
 rng = np.random.default_rng(3)
-xyz = nvtesting.sphere_points(n, 0.5, (1.0, -2.0, 3.0)).astype(np.float32)
+xyz = nvclouds.sphere_points(n, 0.5, (1.0, -2.0, 3.0)).astype(np.float32)
 rgb = rng.integers(0, 256, (n, 3))
 alpha = np.where(np.arange(n) % 2 == 0, 255, 0)  # opaque colours are NaN as floats
 packed = ((alpha << 24) | (rgb[:, 0] << 16) | (rgb[:, 1] << 8) | rgb[:, 2]).astype(np.uint32)
@@ -45,215 +47,270 @@ ARRAYS = {"intensity": VTK_UNSIGNED_SHORT, "label": VTK_UNSIGNED_INT, "curvature
           "offset16": VTK_SHORT}
 
 
+# The organized cloud's NaN holes (drawn after the columns).
+holes = rng.choice(n, 37, replace=False)
+
+
+@pytest.fixture(scope="module")
+def folder():
+    return nvtesting.scratch_folder(prefix="nv-pcd-")
+
+
 def check_cloud(label, cloud, errors, keep=None, components_of_colors=3):
     """The cloud holds the points `keep` (default all) of COLUMNS."""
     keep = np.arange(n) if keep is None else keep
-    if not t.check(not errors and cloud.GetNumberOfPoints() == len(keep), "%s: %d points, no error (got %d, %s)"
-                   % (label, len(keep), cloud.GetNumberOfPoints(), errors)):
-        return
-    t.check(cloud.GetNumberOfVerts() == len(keep), "%s: one vertex cell per point" % label)
-    t.check(np.array_equal(vtk_to_numpy(cloud.GetPoints().GetData()), xyz[keep].astype(np.float64)),
-            "%s: coordinates" % label)
+    assert not errors and cloud.GetNumberOfPoints() == len(keep), "%s: %d points, no error (got %d, %s)" % (
+        label, len(keep), cloud.GetNumberOfPoints(), errors)
+    assert cloud.GetNumberOfVerts() == len(keep), "%s: one vertex cell per point" % label
+    assert np.array_equal(vtk_to_numpy(cloud.GetPoints().GetData()), xyz[keep].astype(np.float64)), \
+        "%s: coordinates" % label
     pd = cloud.GetPointData()
     names = {pd.GetArrayName(i) for i in range(pd.GetNumberOfArrays())}
-    t.check(names == set(ARRAYS) | {"Colors", "Normals"}, "%s: arrays %s" % (label, sorted(names)))
+    assert names == set(ARRAYS) | {"Colors", "Normals"}, "%s: arrays %s" % (label, sorted(names))
     for name, kind in ARRAYS.items():
         values = pd.GetArray(name)
-        if not t.check(values is not None and values.GetDataType() == kind, "%s: %s of its type" % (label, name)):
-            continue
+        assert values is not None and values.GetDataType() == kind, "%s: %s of its type" % (label, name)
         expected = np.asarray(COLUMNS[name])[keep]
-        t.check(np.array_equal(vtk_to_numpy(values), expected.astype(vtk_to_numpy(values).dtype)),
-                "%s: %s values" % (label, name))
-    t.check(pd.GetArray("histogram").GetNumberOfComponents() == 5, "%s: COUNT 5 gives 5 components" % label)
+        assert np.array_equal(vtk_to_numpy(values), expected.astype(vtk_to_numpy(values).dtype)), \
+            "%s: %s values" % (label, name)
+    assert pd.GetArray("histogram").GetNumberOfComponents() == 5, "%s: COUNT 5 gives 5 components" % label
     colors = pd.GetScalars()
     rgba = np.c_[rgb, alpha][keep][:, :components_of_colors]
-    t.check(colors is not None and colors.GetName() == "Colors" and np.array_equal(vtk_to_numpy(colors), rgba),
-            "%s: packed rgb as the Colors scalars" % label)
-    t.check(pd.GetNormals() is not None and np.array_equal(vtk_to_numpy(pd.GetNormals()), normals[keep]),
-            "%s: normal_x/y/z as the Normals" % label)
+    assert colors is not None and colors.GetName() == "Colors" and np.array_equal(vtk_to_numpy(colors), rgba), \
+        "%s: packed rgb as the Colors scalars" % label
+    assert pd.GetNormals() is not None and np.array_equal(vtk_to_numpy(pd.GetNormals()), normals[keep]), \
+        "%s: normal_x/y/z as the Normals" % label
 
 
 def read(path, **settings):
     return pf.read(vtkPCDPointCloudReader, path, **settings)
 
 
-# 1. The three encodings, and the variants of binary_compressed.
-variants = [("ascii", {}), ("binary", {}), ("binary_compressed", {}),
-            ("binary_compressed", {"padding_in_columns": False})]
-liblzf = pf.liblzf_compress()
-if liblzf:
-    variants.append(("binary_compressed", {"compress": liblzf, "padding_in_columns": False}))
-else:
-    print("liblzf is not installed: the cross-check against liblzf's own compressor is skipped")
-for data, options in variants:
-    label = data + "".join(" " + ("liblzf" if k == "compress" else "without padding columns") for k in options)
+# 1. The three encodings, and the variants of binary_compressed (the last
+# with liblzf's own compressor, when liblzf is installed).
+VARIANTS = [("ascii", {}), ("binary", {}), ("binary_compressed", {}),
+            ("binary_compressed", {"padding_in_columns": False}),
+            ("binary_compressed", {"compress": "liblzf", "padding_in_columns": False})]
+
+
+def variant_label(data, options):
+    return data + "".join(" " + ("liblzf" if k == "compress" else "without padding columns") for k in options)
+
+
+@pytest.mark.parametrize("data, options", VARIANTS, ids=[variant_label(*v) for v in VARIANTS])
+def test_encoding(folder, data, options):
+    if options.get("compress") == "liblzf":
+        liblzf = pf.liblzf_compress()
+        if not liblzf:
+            pytest.skip("liblzf is not installed: the cross-check against liblzf's own compressor is skipped")
+        options = dict(options, compress=liblzf)
+    label = variant_label(data, options)
     path = os.path.join(folder, label.replace(" ", "-") + ".pcd")
     pf.write_pcd(path, FIELDS, COLUMNS, data, **options)
-    check_cloud(label, *read(path)[1:])
     print("%-48s %7d bytes" % (label, os.path.getsize(path)))
+    check_cloud(label, *read(path)[1:])
 
-# The files above hold the constant "label" column, which LZF stores as a few
-# long back references that overlap what they copy (a 4-byte pattern copied
-# 264 bytes at a time): the decoder's hardest case.
-label_column = np.full(n, 7, dtype=np.uint32).tobytes()
-t.check(len(pf.lzf_compress(label_column)) < len(label_column) / 50,
-        "the label column compresses to %d of %d bytes" % (len(pf.lzf_compress(label_column)), len(label_column)))
+
+def test_lzf_long_overlapping_references():
+    """The files above hold the constant "label" column, which LZF stores as a
+    few long back references that overlap what they copy (a 4-byte pattern
+    copied 264 bytes at a time): the decoder's hardest case."""
+    label_column = np.full(n, 7, dtype=np.uint32).tobytes()
+    assert len(pf.lzf_compress(label_column)) < len(label_column) / 50, \
+        "the label column compresses to %d of %d bytes" % (len(pf.lzf_compress(label_column)), len(label_column))
+
 
 # 2. An organized cloud (20 x 15) with NaN holes: skipped, or kept on demand.
-holes = rng.choice(n, 37, replace=False)
-with_holes = dict(COLUMNS)
-with_holes["x"] = COLUMNS["x"].copy()
-with_holes["x"][holes] = np.nan
-for data in ("ascii", "binary", "binary_compressed"):
+@pytest.mark.parametrize("data", ["ascii", "binary", "binary_compressed"])
+def test_organized_cloud_with_holes(folder, data):
+    with_holes = dict(COLUMNS)
+    with_holes["x"] = COLUMNS["x"].copy()
+    with_holes["x"][holes] = np.nan
     path = os.path.join(folder, "organized-%s.pcd" % data)
     pf.write_pcd(path, FIELDS, with_holes, data, width=20, height=15)
     _, cloud, errors = read(path)
     kept = np.setdiff1d(np.arange(n), holes)
-    t.check(cloud.GetNumberOfPoints() == n - 37 and not errors, "%s organized: the 37 NaN points skipped" % data)
-    if cloud.GetNumberOfPoints() == n - 37:
-        t.check(np.array_equal(vtk_to_numpy(cloud.GetPointData().GetArray("intensity")),
-                               COLUMNS["intensity"][kept]), "%s organized: the arrays follow the kept points" % data)
+    assert cloud.GetNumberOfPoints() == n - 37 and not errors, "%s organized: the 37 NaN points skipped" % data
+    assert np.array_equal(vtk_to_numpy(cloud.GetPointData().GetArray("intensity")), COLUMNS["intensity"][kept]), \
+        "%s organized: the arrays follow the kept points" % data
     _, cloud, errors = read(path, SkipInvalidPoints=False)
-    t.check(cloud.GetNumberOfPoints() == n and np.isnan(vtk_to_numpy(cloud.GetPoints().GetData())[holes, 0]).all(),
-            "%s organized: all 300 points with SkipInvalidPoints off" % data)
+    assert cloud.GetNumberOfPoints() == n and np.isnan(vtk_to_numpy(cloud.GetPoints().GetData())[holes, 0]).all(), \
+        "%s organized: all 300 points with SkipInvalidPoints off" % data
+
 
 # 3. rgba (4 components), double-precision coordinates, a header without
 # COUNT, HEIGHT and POINTS, ascii colours written as floats (older PCL), no points.
-rgba_fields = [("rgba", "U", 4, 1) if f[0] == "rgb" else f for f in FIELDS]
-rgba_columns = dict(COLUMNS, rgba=packed)
-path = os.path.join(folder, "rgba.pcd")
-pf.write_pcd(path, rgba_fields, rgba_columns, "binary")
-check_cloud("rgba", *read(path)[1:], components_of_colors=4)
-
-double_fields = [(f[0], "F", 8, 1) if f[0] in "xyz" else f for f in FIELDS]
-path = os.path.join(folder, "double.pcd")
-pf.write_pcd(path, double_fields, COLUMNS, "binary_compressed")
-check_cloud("F8 coordinates", *read(path)[1:])
-
-path = os.path.join(folder, "minimal.pcd")
-with open(path, "w") as f:
-    f.write("FIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nWIDTH 3\nDATA ascii\n0 0 0\n1 0 0\n0 1 0.5\n")
-_, cloud, errors = read(path)
-t.check(cloud.GetNumberOfPoints() == 3 and not errors and
-        vtk_to_numpy(cloud.GetPoints().GetData())[2].tolist() == [0, 1, 0.5], "a minimal header (no COUNT, POINTS)")
-
-opaque_free = dict(COLUMNS, rgb=(packed & 0x00FFFFFF).view(np.float32))  # alpha 0: small finite floats
-path = os.path.join(folder, "float-rgb.pcd")
-header = pf.pcd_header([("x", "F", 4, 1), ("y", "F", 4, 1), ("z", "F", 4, 1), ("rgb", "F", 4, 1)], n, 1, "ascii")
-with open(path, "wb") as f:
-    f.write(header)
-    for k in range(n):
-        f.write(("%r %r %r %r\n" % (float(xyz[k, 0]), float(xyz[k, 1]), float(xyz[k, 2]),
-                                    float(opaque_free["rgb"][k]))).encode())
-_, cloud, errors = read(path)
-t.check(not errors and np.array_equal(vtk_to_numpy(cloud.GetPointData().GetScalars()), rgb),
-        "ascii rgb written as floats (older PCL): the colours")
-
-path = os.path.join(folder, "nothing.pcd")
-with open(path, "wb") as f:
-    f.write(pf.pcd_header(FIELDS, 0, 1, "binary_compressed").rstrip(b"\n"))
-_, cloud, errors = read(path)
-t.check(cloud.GetNumberOfPoints() == 0 and not errors, "a PCD of no points: empty, no error (%s)" % errors)
-t.check(vtkPCDPointCloudReader().CanReadFile(os.path.join(folder, "binary.pcd")) == 1, "CanReadFile on PCD")
-t.check(vtkPCDPointCloudReader().CanReadFile(os.path.join(folder, "nothing.pcd")) == 1, "CanReadFile on PCD")
-not_pcd = os.path.join(folder, "cloud.xyz")
-with open(not_pcd, "w") as f:
-    f.write("0 0 0\n")
-t.check(vtkPCDPointCloudReader().CanReadFile(not_pcd) == 0, "CanReadFile on text: 0")
-
-# 4. Damaged files.
-XYZ = [("x", "F", 4, 1), ("y", "F", 4, 1), ("z", "F", 4, 1)]
-small = {"x": xyz[:, 0], "y": xyz[:, 1], "z": xyz[:, 2]}
-binary_path = os.path.join(folder, "small-binary.pcd")
-pf.write_pcd(binary_path, XYZ, small, "binary")
-binary_bytes = open(binary_path, "rb").read()
-ascii_path = os.path.join(folder, "small-ascii.pcd")
-pf.write_pcd(ascii_path, XYZ, small, "ascii")
-ascii_text = open(ascii_path).read()
-compressed_path = os.path.join(folder, "small-compressed.pcd")
-pf.write_pcd(compressed_path, XYZ, small, "binary_compressed")
-compressed_bytes = open(compressed_path, "rb").read()
-header_end = compressed_bytes.index(b"DATA binary_compressed\n") + len(b"DATA binary_compressed\n")
-compressed_size, raw_size = struct.unpack("<II", compressed_bytes[header_end:header_end + 8])
-stream = compressed_bytes[header_end + 8:]
+def test_rgba(folder):
+    rgba_fields = [("rgba", "U", 4, 1) if f[0] == "rgb" else f for f in FIELDS]
+    rgba_columns = dict(COLUMNS, rgba=packed)
+    path = os.path.join(folder, "rgba.pcd")
+    pf.write_pcd(path, rgba_fields, rgba_columns, "binary")
+    check_cloud("rgba", *read(path)[1:], components_of_colors=4)
 
 
-def damaged(name, content):
-    path = os.path.join(folder, name)
-    with open(path, "wb") as f:
-        f.write(content.encode() if isinstance(content, str) else content)
-    return path
+def test_double_precision_coordinates(folder):
+    double_fields = [(f[0], "F", 8, 1) if f[0] in "xyz" else f for f in FIELDS]
+    path = os.path.join(folder, "double.pcd")
+    pf.write_pcd(path, double_fields, COLUMNS, "binary_compressed")
+    check_cloud("F8 coordinates", *read(path)[1:])
 
 
-def header(**changes):
-    """The small binary file's header with lines replaced (KEY -> text, or None to drop)."""
-    lines = pf.pcd_header(XYZ, n, 1, "binary").decode().splitlines()
-    out = []
-    for line in lines:
-        key = line.split()[0]
-        if key in changes:
-            if changes[key] is not None:
-                out.append(changes[key])
-        else:
-            out.append(line)
-    return "\n".join(out) + "\n"
-
-
-def compressed(sizes=None, body=None):
-    c, r = sizes or (compressed_size, raw_size)
-    return compressed_bytes[:header_end] + struct.pack("<II", c, r) + (stream if body is None else body)
-
-
-body = binary_bytes[binary_bytes.index(b"DATA binary\n") + len(b"DATA binary\n"):]
-cases = [
-    ("empty file", damaged("empty.pcd", b""), "without a DATA line"),
-    ("no DATA line", damaged("nodata.pcd", header(DATA=None)), "without a DATA line"),
-    ("unknown DATA", damaged("kind.pcd", header(DATA="DATA binary_lzma") .encode() + body),
-     "is not ascii, binary or binary_compressed"),
-    ("SIZE entries", damaged("sizes.pcd", header(SIZE="SIZE 4 4").encode() + body), "2 SIZE entries for 3 FIELDS"),
-    ("SIZE 3", damaged("size3.pcd", header(SIZE="SIZE 4 3 4").encode() + body), "SIZE 3 of field y"),
-    ("TYPE X", damaged("typex.pcd", header(TYPE="TYPE F X F").encode() + body), "TYPE X of field y"),
-    ("2-byte floats", damaged("f2.pcd", header(SIZE="SIZE 4 4 2").encode() + body), "floating point values"),
-    ("COUNT 0", damaged("count0.pcd", header(COUNT="COUNT 1 0 1").encode() + body), "COUNT 0 of field y"),
-    ("SIZE before FIELDS", damaged("order.pcd", "SIZE 4 4 4\n" + header()), "SIZE comes before FIELDS"),
-    ("unknown keyword", damaged("kw.pcd", header(VERSION="COLOUR blue").encode() + body), "unknown keyword"),
-    ("no z", damaged("noz.pcd", header(FIELDS="FIELDS x y w").encode() + body), "no z coordinate"),
-    ("POINTS not WIDTH x HEIGHT", damaged("pts.pcd", header(POINTS="POINTS 299").encode() + body),
-     "is not WIDTH x HEIGHT"),
-    ("WIDTH x HEIGHT overflows", damaged("ovf.pcd", header(WIDTH="WIDTH %d" % 2 ** 62, HEIGHT="HEIGHT 16",
-                                                           POINTS=None).encode() + body), "overflows"),
-    ("absurd POINTS (binary)", damaged("huge.pcd", header(WIDTH="WIDTH %d" % 10 ** 15, POINTS="POINTS %d" % 10 ** 15)
-                                       .encode() + body), "announces 1000000000000000 points"),
-    ("absurd POINTS (ascii)", damaged("hugea.pcd", ascii_text.replace("WIDTH 300", "WIDTH 1000000000")
-                                      .replace("POINTS 300", "POINTS 1000000000")), "announces 1000000000 points"),
-    ("truncated binary", damaged("cutb.pcd", binary_bytes[:-100]), "announces 300 points"),
-    ("truncated ascii", damaged("cuta.pcd", "".join(ascii_text.splitlines(True)[:-10])),
-     "ends after 290 of the 300 points"),
-    ("ascii non-number", damaged("word.pcd", ascii_text.replace("\n0.", "\nzero", 1)), "is not a value of field x"),
-    ("ascii values missing", damaged("few.pcd", ascii_text[:ascii_text.rindex(" ")] + "\n"), "holds 2 values"),
-    ("ascii out of range", damaged("u1.pcd", "FIELDS x y z c\nSIZE 4 4 4 1\nTYPE F F F U\nPOINTS 1\nDATA ascii\n"
-                                   "0 0 0 300\n"), "\"300\" is not a value of field c (U1)"),
-    ("compressed size beyond the file", damaged("csize.pcd", compressed((10 ** 9, raw_size))),
-     "is said to take 1000000000 bytes"),
-    ("uncompressed size wrong", damaged("rsize.pcd", compressed((compressed_size, raw_size - 4))),
-     "decompresses to %d bytes" % (raw_size - 4)),
-    ("uncompressed size beyond LZF", damaged("ratio.pcd", compressed_bytes[:header_end].replace(
-        b"WIDTH 300", b"WIDTH 3000000").replace(b"POINTS 300", b"POINTS 3000000") +
-        struct.pack("<II", 10, 36000000) + bytes(10)), "cannot decompress to the 36000000 bytes"),
-    ("LZF reference before the start", damaged("ref.pcd", compressed(body=b"\xe0\x05\x10" + stream[3:])),
-     "the compressed (LZF) data is damaged"),
-    ("LZF stream cut short", damaged("lzfcut.pcd", compressed((compressed_size - 20, raw_size), stream[:-20])),
-     "the compressed (LZF) data is damaged"),
-    ("ends before the sizes", damaged("nosizes.pcd", compressed_bytes[:header_end + 3]), "ends before the sizes"),
-    ("missing file", os.path.join(folder, "no-such-file.pcd"), "Cannot open"),
-]
-peak_before = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
-for label, path, message in cases:
+def test_minimal_header(folder):
+    path = os.path.join(folder, "minimal.pcd")
+    with open(path, "w") as f:
+        f.write("FIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nWIDTH 3\nDATA ascii\n0 0 0\n1 0 0\n0 1 0.5\n")
     _, cloud, errors = read(path)
+    assert cloud.GetNumberOfPoints() == 3 and not errors and \
+        vtk_to_numpy(cloud.GetPoints().GetData())[2].tolist() == [0, 1, 0.5], "a minimal header (no COUNT, POINTS)"
+
+
+def test_ascii_rgb_written_as_floats(folder):
+    opaque_free = dict(COLUMNS, rgb=(packed & 0x00FFFFFF).view(np.float32))  # alpha 0: small finite floats
+    path = os.path.join(folder, "float-rgb.pcd")
+    header = pf.pcd_header([("x", "F", 4, 1), ("y", "F", 4, 1), ("z", "F", 4, 1), ("rgb", "F", 4, 1)], n, 1, "ascii")
+    with open(path, "wb") as f:
+        f.write(header)
+        for k in range(n):
+            f.write(("%r %r %r %r\n" % (float(xyz[k, 0]), float(xyz[k, 1]), float(xyz[k, 2]),
+                                        float(opaque_free["rgb"][k]))).encode())
+    _, cloud, errors = read(path)
+    assert not errors and np.array_equal(vtk_to_numpy(cloud.GetPointData().GetScalars()), rgb), \
+        "ascii rgb written as floats (older PCL): the colours"
+
+
+def test_no_points_and_can_read_file(folder):
+    path = os.path.join(folder, "nothing.pcd")
+    with open(path, "wb") as f:
+        f.write(pf.pcd_header(FIELDS, 0, 1, "binary_compressed").rstrip(b"\n"))
+    _, cloud, errors = read(path)
+    assert cloud.GetNumberOfPoints() == 0 and not errors, "a PCD of no points: empty, no error (%s)" % errors
+    binary = os.path.join(folder, "binary.pcd")
+    pf.write_pcd(binary, FIELDS, COLUMNS, "binary")
+    assert vtkPCDPointCloudReader().CanReadFile(binary) == 1, "CanReadFile on PCD"
+    assert vtkPCDPointCloudReader().CanReadFile(os.path.join(folder, "nothing.pcd")) == 1, "CanReadFile on PCD"
+    not_pcd = os.path.join(folder, "cloud.xyz")
+    with open(not_pcd, "w") as f:
+        f.write("0 0 0\n")
+    assert vtkPCDPointCloudReader().CanReadFile(not_pcd) == 0, "CanReadFile on text: 0"
+
+
+# 4. Damaged files: (label, file name, its content made from `f` (the
+# small files' bytes and text, f.header(...): the small binary file's header
+# with lines replaced, f.compressed(...): the small compressed file with its
+# sizes or stream replaced), the error's words (or made from `f`)); a
+# content of None: the file is missing.
+DAMAGED = [
+    ("empty file", "empty.pcd", lambda f: b"", "without a DATA line"),
+    ("no DATA line", "nodata.pcd", lambda f: f.header(DATA=None), "without a DATA line"),
+    ("unknown DATA", "kind.pcd", lambda f: f.header(DATA="DATA binary_lzma") .encode() + f.body,
+     "is not ascii, binary or binary_compressed"),
+    ("SIZE entries", "sizes.pcd", lambda f: f.header(SIZE="SIZE 4 4").encode() + f.body,
+     "2 SIZE entries for 3 FIELDS"),
+    ("SIZE 3", "size3.pcd", lambda f: f.header(SIZE="SIZE 4 3 4").encode() + f.body, "SIZE 3 of field y"),
+    ("TYPE X", "typex.pcd", lambda f: f.header(TYPE="TYPE F X F").encode() + f.body, "TYPE X of field y"),
+    ("2-byte floats", "f2.pcd", lambda f: f.header(SIZE="SIZE 4 4 2").encode() + f.body, "floating point values"),
+    ("COUNT 0", "count0.pcd", lambda f: f.header(COUNT="COUNT 1 0 1").encode() + f.body, "COUNT 0 of field y"),
+    ("SIZE before FIELDS", "order.pcd", lambda f: "SIZE 4 4 4\n" + f.header(), "SIZE comes before FIELDS"),
+    ("unknown keyword", "kw.pcd", lambda f: f.header(VERSION="COLOUR blue").encode() + f.body, "unknown keyword"),
+    ("no z", "noz.pcd", lambda f: f.header(FIELDS="FIELDS x y w").encode() + f.body, "no z coordinate"),
+    ("POINTS not WIDTH x HEIGHT", "pts.pcd", lambda f: f.header(POINTS="POINTS 299").encode() + f.body,
+     "is not WIDTH x HEIGHT"),
+    ("WIDTH x HEIGHT overflows", "ovf.pcd", lambda f: f.header(WIDTH="WIDTH %d" % 2 ** 62, HEIGHT="HEIGHT 16",
+                                                               POINTS=None).encode() + f.body, "overflows"),
+    ("absurd POINTS (binary)", "huge.pcd", lambda f: f.header(WIDTH="WIDTH %d" % 10 ** 15,
+                                                              POINTS="POINTS %d" % 10 ** 15).encode() + f.body,
+     "announces 1000000000000000 points"),
+    ("absurd POINTS (ascii)", "hugea.pcd", lambda f: f.ascii_text.replace("WIDTH 300", "WIDTH 1000000000")
+     .replace("POINTS 300", "POINTS 1000000000"), "announces 1000000000 points"),
+    ("truncated binary", "cutb.pcd", lambda f: f.binary_bytes[:-100], "announces 300 points"),
+    ("truncated ascii", "cuta.pcd", lambda f: "".join(f.ascii_text.splitlines(True)[:-10]),
+     "ends after 290 of the 300 points"),
+    ("ascii non-number", "word.pcd", lambda f: f.ascii_text.replace("\n0.", "\nzero", 1),
+     "is not a value of field x"),
+    ("ascii values missing", "few.pcd", lambda f: f.ascii_text[:f.ascii_text.rindex(" ")] + "\n", "holds 2 values"),
+    ("ascii out of range", "u1.pcd", lambda f: "FIELDS x y z c\nSIZE 4 4 4 1\nTYPE F F F U\nPOINTS 1\nDATA ascii\n"
+     "0 0 0 300\n", "\"300\" is not a value of field c (U1)"),
+    ("compressed size beyond the file", "csize.pcd", lambda f: f.compressed((10 ** 9, f.raw_size)),
+     "is said to take 1000000000 bytes"),
+    ("uncompressed size wrong", "rsize.pcd", lambda f: f.compressed((f.compressed_size, f.raw_size - 4)),
+     lambda f: "decompresses to %d bytes" % (f.raw_size - 4)),
+    ("uncompressed size beyond LZF", "ratio.pcd", lambda f: f.compressed_bytes[:f.header_end].replace(
+        b"WIDTH 300", b"WIDTH 3000000").replace(b"POINTS 300", b"POINTS 3000000") +
+        struct.pack("<II", 10, 36000000) + bytes(10), "cannot decompress to the 36000000 bytes"),
+    ("LZF reference before the start", "ref.pcd", lambda f: f.compressed(body=b"\xe0\x05\x10" + f.stream[3:]),
+     "the compressed (LZF) data is damaged"),
+    ("LZF stream cut short", "lzfcut.pcd", lambda f: f.compressed((f.compressed_size - 20, f.raw_size),
+                                                                  f.stream[:-20]),
+     "the compressed (LZF) data is damaged"),
+    ("ends before the sizes", "nosizes.pcd", lambda f: f.compressed_bytes[:f.header_end + 3],
+     "ends before the sizes"),
+    ("missing file", "no-such-file.pcd", None, "Cannot open"),
+]
+
+
+@pytest.fixture(scope="module")
+def damaged(folder):
+    """Each damaged file written and read: {label: (output, errors, the
+    error's words)}, and how much the process's peak memory grew while they
+    were read."""
+    XYZ = [("x", "F", 4, 1), ("y", "F", 4, 1), ("z", "F", 4, 1)]
+    small = {"x": xyz[:, 0], "y": xyz[:, 1], "z": xyz[:, 2]}
+    f = types.SimpleNamespace()
+    binary_path = os.path.join(folder, "small-binary.pcd")
+    pf.write_pcd(binary_path, XYZ, small, "binary")
+    f.binary_bytes = open(binary_path, "rb").read()
+    ascii_path = os.path.join(folder, "small-ascii.pcd")
+    pf.write_pcd(ascii_path, XYZ, small, "ascii")
+    f.ascii_text = open(ascii_path).read()
+    compressed_path = os.path.join(folder, "small-compressed.pcd")
+    pf.write_pcd(compressed_path, XYZ, small, "binary_compressed")
+    f.compressed_bytes = open(compressed_path, "rb").read()
+    f.header_end = f.compressed_bytes.index(b"DATA binary_compressed\n") + len(b"DATA binary_compressed\n")
+    f.compressed_size, f.raw_size = struct.unpack("<II", f.compressed_bytes[f.header_end:f.header_end + 8])
+    f.stream = f.compressed_bytes[f.header_end + 8:]
+    f.body = f.binary_bytes[f.binary_bytes.index(b"DATA binary\n") + len(b"DATA binary\n"):]
+
+    def header(**changes):
+        """The small binary file's header with lines replaced (KEY -> text, or None to drop)."""
+        lines = pf.pcd_header(XYZ, n, 1, "binary").decode().splitlines()
+        out = []
+        for line in lines:
+            key = line.split()[0]
+            if key in changes:
+                if changes[key] is not None:
+                    out.append(changes[key])
+            else:
+                out.append(line)
+        return "\n".join(out) + "\n"
+
+    def compressed(sizes=None, body=None):
+        c, r = sizes or (f.compressed_size, f.raw_size)
+        return f.compressed_bytes[:f.header_end] + struct.pack("<II", c, r) + (f.stream if body is None else body)
+
+    f.header, f.compressed = header, compressed
+    paths, messages = {}, {}
+    for label, name, content, message in DAMAGED:
+        paths[label] = os.path.join(folder, name)
+        messages[label] = message(f) if callable(message) else message
+        if content is not None:
+            made = content(f)
+            with open(paths[label], "wb") as out:
+                out.write(made.encode() if isinstance(made, str) else made)
+    peak_before = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+    outputs = {label: read(path)[1:] + (messages[label],) for label, path in paths.items()}
+    peak_growth = (resource.getrusage(resource.RUSAGE_SELF).ru_maxrss - peak_before) / 1024.0
+    return outputs, peak_growth
+
+
+@pytest.mark.parametrize("label", [c[0] for c in DAMAGED])
+def test_damaged_file(damaged, label):
+    cloud, errors, message = damaged[0][label]
     said = " | ".join(str(e) for e in errors)
-    t.check(any(message in str(e) for e in errors), "%s: an error saying \"%s\" (got: %s)" % (label, message, said))
-    t.check(cloud.GetNumberOfPoints() == 0 and cloud.GetNumberOfCells() == 0, "%s: empty output" % label)
     print("%-32s -> %s" % (label, str(errors[0]).strip().splitlines()[-1] if errors else "(no error)"))
-peak_growth = (resource.getrusage(resource.RUSAGE_SELF).ru_maxrss - peak_before) / 1024.0
-t.check(peak_growth < 50, "the damaged files allocate nothing large (peak grew by %.1f MB)" % peak_growth)
-t.finish()
+    assert any(message in str(e) for e in errors), "%s: an error saying \"%s\" (got: %s)" % (label, message, said)
+    assert cloud.GetNumberOfPoints() == 0 and cloud.GetNumberOfCells() == 0, "%s: empty output" % label
+
+
+def test_damaged_files_allocate_nothing_large(damaged):
+    peak_growth = damaged[1]
+    assert peak_growth < 50, "the damaged files allocate nothing large (peak grew by %.1f MB)" % peak_growth

@@ -14,16 +14,18 @@
   printed with what is reached; the README says why they are not met.
 - phi is the same, bit for bit, with 1 and 2 threads.
 
-    pvpython test_preserve_offset.py
+    pvpython -m pytest -s test_preserve_offset.py
 """
 import numpy as np
+import pytest
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
 from narrowvolume import vtkNarrowVolumeReconstruction
+import nvclouds
 import nvshapes
 import nvtesting
 
-t = nvtesting.Checker("test_preserve_offset")
+pytestmark = [pytest.mark.fidelity, pytest.mark.slow]
 
 
 def reconstruct(cloud, h, offset, steps, preserve, **settings):
@@ -40,24 +42,40 @@ def reconstruct(cloud, h, offset, steps, preserve, **settings):
 
 
 # Table 1 sphere.
-print("Table 1 sphere, l = 0.1, default parameters, PreserveOffset on: inner sheet errors")
-print("| h | steps | max error | paper | average error | paper |")
-print("|---|---|---|---|---|---|")
-for h in (0.01, 0.005):
-    cloud = nvtesting.cloud(nvshapes.sphere_points(h))
+SPHERE_CASES = [(h, steps) for h in (0.01, 0.005) for steps in (10, 20)]
+
+
+@pytest.fixture(scope="module")
+def sphere_table():
+    """{(h, steps): the inner sheet's errors}, the table printed."""
+    print("\nTable 1 sphere, l = 0.1, default parameters, PreserveOffset on: inner sheet errors")
+    print("| h | steps | max error | paper | average error | paper |")
+    print("|---|---|---|---|---|---|")
+    rows = {}
+    for h in (0.01, 0.005):
+        cloud = nvclouds.cloud(nvclouds.shape_points("sphere", h))
+        paper = nvshapes.PAPER_TABLE1[("sphere", h)]
+        for steps in (10, 20):
+            f = reconstruct(cloud, h, 0.1, steps, True)
+            e = nvshapes.inner_sheet_errors("sphere", nvtesting.points_of(f.GetOutput(1)), 0.1)
+            print("| %g | %d | %.3e | %.3e | %.3e | %.3e |" % (h, steps, e["max"], paper[0], e["mean"], paper[1]),
+                  flush=True)
+            rows[(h, steps)] = e
+    return rows
+
+
+@pytest.mark.parametrize("h, steps", SPHERE_CASES, ids=["h=%g-%d-steps" % case for case in SPHERE_CASES])
+def test_table1_sphere(sphere_table, h, steps):
+    e = sphere_table[(h, steps)]
     paper = nvshapes.PAPER_TABLE1[("sphere", h)]
-    for steps in (10, 20):
-        f = reconstruct(cloud, h, 0.1, steps, True)
-        e = nvshapes.inner_sheet_errors("sphere", nvtesting.points_of(f.GetOutput(1)), 0.1)
-        print("| %g | %d | %.3e | %.3e | %.3e | %.3e |" % (h, steps, e["max"], paper[0], e["mean"], paper[1]),
-              flush=True)
-        t.check(e["vertices"] > 1000, "h=%g, %d steps: inner sheet found" % (h, steps))
-        t.check(e["max"] <= paper[0], "h=%g, %d steps: max error %.3e > paper %.3e" % (h, steps, e["max"], paper[0]))
-        t.check(e["mean"] <= paper[1], "h=%g, %d steps: average error %.3e > paper %.3e" % (
-            h, steps, e["mean"], paper[1]))
+    assert e["vertices"] > 1000, "h=%g, %d steps: inner sheet found" % (h, steps)
+    assert e["max"] <= paper[0], "h=%g, %d steps: max error %.3e > paper %.3e" % (h, steps, e["max"], paper[0])
+    assert e["mean"] <= paper[1], "h=%g, %d steps: average error %.3e > paper %.3e" % (h, steps, e["mean"], paper[1])
+
 
 # Fig. 6 noisy spheres: the clouds of test_noise_fig6.py.
 R, L, H = 0.5, 0.1, 0.01
+SPHERES = nvclouds.fig6_spheres(H, R)
 
 
 def sheets(f):
@@ -67,17 +85,17 @@ def sheets(f):
     return r[r < R] - (R - L), r[r >= R] - (R + L), nvtesting.face_normal_roughness(surface)
 
 
-print("\nFig. 6 noisy spheres, xi = eps_4, eps = eps_12, h = 0.01: the 3-step default against 10 steps with "
-      "PreserveOffset (and 10 steps without)")
-print("| points | noise | mean error, 3 steps | 10, PreserveOffset | 10, paper's scheme | target met | "
-      "roughness, 3 steps | 10, PreserveOffset | ratio | target 60 % met |")
-print("|---|---|---|---|---|---|---|---|---|---|")
-for points in (2964, len(nvshapes.sphere_points(H, R))):
-    clean = nvshapes.sphere_points(H, R, count=points)
-    rng = np.random.default_rng(6)
-    for noise in (0.05, 0.10):
-        radial = (clean - nvshapes.CENTER) * (1.0 + noise * rng.uniform(-1.0, 1.0, len(clean)))[:, None]
-        cloud = nvtesting.cloud(nvshapes.CENTER + radial)
+@pytest.fixture(scope="module")
+def noisy_table():
+    """[{run: (inner errors, outer errors, roughness)}] for each noisy sphere, the table printed."""
+    print("\nFig. 6 noisy spheres, xi = eps_4, eps = eps_12, h = 0.01: the 3-step default against 10 steps with "
+          "PreserveOffset (and 10 steps without)")
+    print("| points | noise | mean error, 3 steps | 10, PreserveOffset | 10, paper's scheme | target met | "
+          "roughness, 3 steps | 10, PreserveOffset | ratio | target 60 % met |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
+    rows = []
+    for points, noise, xyz in SPHERES:
+        cloud = nvclouds.cloud(xyz)
         runs = {}
         for key, steps, preserve in (("initial", 0, False), ("default", 3, False), ("option", 10, True),
                                      ("paper10", 10, False)):
@@ -89,19 +107,30 @@ for points in (2964, len(nvshapes.sphere_points(H, R))):
             "yes" if error["option"] <= error["default"] else "no", rough["default"], rough["option"],
             100 * rough["option"] / rough["default"], "yes" if rough["option"] <= 0.6 * rough["default"] else "no"),
             flush=True)
-        t.check(rough["option"] < rough["default"], "noise %g, %d points: not smoother than the 3-step default "
-                "(%.2f vs %.2f deg)" % (noise, points, rough["option"], rough["default"]))
-        for sheet, name in ((0, "inner"), (1, "outer")):
-            held = abs(runs["option"][sheet].mean() - runs["initial"][sheet].mean())
-            drifted = abs(runs["paper10"][sheet].mean() - runs["initial"][sheet].mean())
-            t.check(held < drifted, "noise %g, %d points: the %s sheet moved %.2e from the initial profile's, "
-                    "the paper's scheme %.2e" % (noise, points, name, held, drifted))
+        rows.append(runs)
+    return rows
 
-# The same phi for any number of threads.
-cloud = nvtesting.cloud(nvshapes.sphere_points(0.01))
-phi = []
-for threads in (1, 2):
-    f = reconstruct(cloud, 0.01, 0.1, 10, True, NumberOfThreads=threads)
-    phi.append(vtk_to_numpy(f.GetOutput(0).GetPointData().GetArray("phi")).copy())
-t.check(np.array_equal(phi[0], phi[1]), "PreserveOffset: phi differs between 1 and 2 threads")
-t.finish()
+
+@pytest.mark.parametrize("case", range(len(SPHERES)),
+                         ids=["%d points, %d %%" % (points, round(100 * noise)) for points, noise, _ in SPHERES])
+def test_fig6_noisy_sphere(noisy_table, case):
+    points, noise, _ = SPHERES[case]
+    runs = noisy_table[case]
+    rough = {key: run[2] for key, run in runs.items()}
+    assert rough["option"] < rough["default"], "noise %g, %d points: not smoother than the 3-step default " \
+        "(%.2f vs %.2f deg)" % (noise, points, rough["option"], rough["default"])
+    for sheet, name in ((0, "inner"), (1, "outer")):
+        held = abs(runs["option"][sheet].mean() - runs["initial"][sheet].mean())
+        drifted = abs(runs["paper10"][sheet].mean() - runs["initial"][sheet].mean())
+        assert held < drifted, "noise %g, %d points: the %s sheet moved %.2e from the initial profile's, " \
+            "the paper's scheme %.2e" % (noise, points, name, held, drifted)
+
+
+def test_same_phi_for_1_and_2_threads():
+    """The same phi for any number of threads."""
+    cloud = nvclouds.cloud(nvclouds.shape_points("sphere", 0.01))
+    phi = []
+    for threads in (1, 2):
+        f = reconstruct(cloud, 0.01, 0.1, 10, True, NumberOfThreads=threads)
+        phi.append(vtk_to_numpy(f.GetOutput(0).GetPointData().GetArray("phi")).copy())
+    assert np.array_equal(phi[0], phi[1]), "PreserveOffset: phi differs between 1 and 2 threads"

@@ -16,38 +16,23 @@ smoother (mean angle between neighbouring triangles' normals). The largest
 distance is printed: it is at creases of the offset (where two parts of a
 shape come within 2 l), which the smoothing keeps rounding.
 
-    pvpython test_preserve_offset_scans.py SCANS_DIR [STEPS]
+    pvpython -m pytest -s test_preserve_offset_scans.py [--scans-dir SCANS_DIR] [--steps STEPS]
 
 (STEPS: 10 by default, the issue's target.)
 """
-import os
-import sys
-
 import numpy as np
+import pytest
 from scipy.spatial import cKDTree
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkFiltersGeneral import vtkDistancePolyDataFilter
-from vtkmodules.vtkIOPLY import vtkPLYReader
 
 from narrowvolume import vtkNarrowVolumeReconstruction
+import nvclouds
 import nvtesting
 
-SKIP = 77
-scans = sys.argv[1]
-STEPS = int(sys.argv[2]) if len(sys.argv) > 2 else 10
+pytestmark = [pytest.mark.fidelity, pytest.mark.slow]
 NAMES = ("bunny", "dragon", "armadillo", "teacup")
-if not all(os.path.isfile(os.path.join(scans, name + ".ply")) for name in NAMES):
-    print("SKIPPED: no scans in %s (../shared/data/scans is not beside the source tree)" % scans)
-    sys.exit(SKIP)
-t = nvtesting.Checker("test_preserve_offset_scans")
 CELLS = 100
-
-
-def read(name):
-    reader = vtkPLYReader()
-    reader.SetFileName(os.path.join(scans, name + ".ply"))
-    reader.Update()
-    return vtk_to_numpy(reader.GetOutput().GetPoints().GetData()).astype(float)
 
 
 def surface(cloud, h, steps, preserve):
@@ -74,33 +59,46 @@ def distance_to(mesh, reference):
     return np.abs(vtk_to_numpy(f.GetOutput().GetPointData().GetArray("Distance")))
 
 
-print("Scans, %d cells, l = 4h: distance (in h) of the %d-step sheets to the 3-step sheets where the cloud is "
-      "dense, and roughness (deg)" % (CELLS, STEPS))
-print("| scan | points | dense vertices | steps | median | 95 %% | max | within 0.25 h | roughness, 3 steps -> %d |"
-      % STEPS)
-print("|---|---|---|---|---|---|---|---|---|")
-for name in NAMES:
-    xyz = read(name)
-    h = float((xyz.max(axis=0) - xyz.min(axis=0)).max()) / CELLS
-    l = 4 * h
-    cloud = nvtesting.cloud(xyz)
-    tree = cKDTree(xyz)
-    reference = surface(cloud, h, 3, False)
-    rough_reference = nvtesting.face_normal_roughness(reference)
-    full_disk = np.pi * (2 * l * h + h * h) / h ** 2
-    for label, preserve in (("%d, PreserveOffset" % STEPS, True), ("%d, paper's scheme" % STEPS, False)):
-        mesh = surface(cloud, h, STEPS, preserve)
-        x = nvtesting.points_of(mesh)
-        dense = np.array([len(near) for near in tree.query_ball_point(x, l + h)]) >= full_disk
-        d = distance_to(mesh, reference)[dense] / h
-        rough = nvtesting.face_normal_roughness(mesh)
-        print("| %s | %d | %.0f %% | %s | %.3f | %.3f | %.2f | %.1f %% | %.2f -> %.2f |" % (
-            name, len(xyz), 100 * dense.mean(), label, np.median(d), np.percentile(d, 95), d.max(),
-            100 * (d <= 0.25).mean(), rough_reference, rough), flush=True)
-        if preserve:
-            t.check(dense.sum() >= 100, "%s: dense vertices found (%d)" % (name, dense.sum()))
-            t.check(np.percentile(d, 95) <= 0.25, "%s: 95 %% of the dense vertices within 0.25 h of the 3-step "
-                    "sheets (%.3f h)" % (name, np.percentile(d, 95)))
-            t.check(rough < rough_reference, "%s: not smoother than the 3-step sheets (%.2f vs %.2f deg)" % (
-                name, rough, rough_reference))
-t.finish()
+@pytest.fixture(scope="module")
+def table(request, require_scans, scans_dir):
+    """{scan: (dense vertices, distances in h, roughness of the 3-step and of
+    the STEPS-step PreserveOffset sheets)}, the table printed."""
+    require_scans(*NAMES)
+    steps = request.config.getoption("steps")
+    print("\nScans, %d cells, l = 4h: distance (in h) of the %d-step sheets to the 3-step sheets where the cloud is "
+          "dense, and roughness (deg)" % (CELLS, steps))
+    print("| scan | points | dense vertices | steps | median | 95 %% | max | within 0.25 h | roughness, 3 steps -> %d |"
+          % steps)
+    print("|---|---|---|---|---|---|---|---|---|")
+    rows = {}
+    for name in NAMES:
+        xyz = nvclouds.scan_points(name, scans_dir)
+        h = float((xyz.max(axis=0) - xyz.min(axis=0)).max()) / CELLS
+        l = 4 * h
+        cloud = nvclouds.cloud(xyz)
+        tree = cKDTree(xyz)
+        reference = surface(cloud, h, 3, False)
+        rough_reference = nvtesting.face_normal_roughness(reference)
+        full_disk = np.pi * (2 * l * h + h * h) / h ** 2
+        for label, preserve in (("%d, PreserveOffset" % steps, True), ("%d, paper's scheme" % steps, False)):
+            mesh = surface(cloud, h, steps, preserve)
+            x = nvtesting.points_of(mesh)
+            dense = np.array([len(near) for near in tree.query_ball_point(x, l + h)]) >= full_disk
+            d = distance_to(mesh, reference)[dense] / h
+            rough = nvtesting.face_normal_roughness(mesh)
+            print("| %s | %d | %.0f %% | %s | %.3f | %.3f | %.2f | %.1f %% | %.2f -> %.2f |" % (
+                name, len(xyz), 100 * dense.mean(), label, np.median(d), np.percentile(d, 95), d.max(),
+                100 * (d <= 0.25).mean(), rough_reference, rough), flush=True)
+            if preserve:
+                rows[name] = (int(dense.sum()), d, rough_reference, rough)
+    return rows
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_preserve_offset_on_a_scan(table, name):
+    dense, d, rough_reference, rough = table[name]
+    assert dense >= 100, "%s: dense vertices found (%d)" % (name, dense)
+    assert np.percentile(d, 95) <= 0.25, "%s: 95 %% of the dense vertices within 0.25 h of the 3-step " \
+        "sheets (%.3f h)" % (name, np.percentile(d, 95))
+    assert rough < rough_reference, "%s: not smoother than the 3-step sheets (%.2f vs %.2f deg)" % (
+        name, rough, rough_reference)

@@ -40,17 +40,18 @@ from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPolyData, vtkUnstruct
 
 import narrowvolume
 from narrowvolume import _properties
+import nvclouds
 import nvflavours
 import nvtesting
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-TREFOIL = os.path.join(HERE, "..", "..", "Data", "trefoil.vtp")
+TREFOIL = nvclouds.data_file("trefoil.vtp")
 REFERENCE = os.environ.get("NV_PIP_REFERENCE")
 WHEEL = narrowvolume.FLAVOUR == "wheel"
-only_wheel = pytest.mark.skipif(not WHEEL, reason="the wheel's Python filter and binding only")
+only_wheel = pytest.mark.pip  # conftest.py skips these with the CMake build's package
 needs_reference = pytest.mark.skipif(not (WHEEL and REFERENCE),
                                      reason="compares the wheel with the C++ filter's record (NV_PIP_REFERENCE)")
-SPHERE = nvtesting.sphere_points(5000, 0.5, (1.0, 2.0, -3.0))
+SPHERE = nvclouds.sphere_points(5000, 0.5, (1.0, 2.0, -3.0))
 SETTINGS = dict(OffsetDistance=0.1, SampleSpacing=0.025)
 
 
@@ -69,13 +70,10 @@ def phi_of(volume):
     return vtk_to_numpy(volume.GetPointData().GetArray("phi"))
 
 
-def test_flavour():
-    """The package under test is the one the test run asked for."""
+def test_flavour(flavour):
+    """The package under test is the one the test run asked for ($NV_EXPECT_FLAVOUR: the fixture checks it)."""
     print("narrowvolume %s from %s" % (narrowvolume.FLAVOUR, narrowvolume.__file__))
-    expected = os.environ.get("NV_EXPECT_FLAVOUR")
-    if expected:
-        assert narrowvolume.FLAVOUR == expected
-    assert narrowvolume.FLAVOUR in ("vtk-module", "wheel")
+    assert flavour in ("vtk-module", "wheel")
     assert (narrowvolume.vtkPointCloudTextReader is None) == WHEEL
 
 
@@ -184,7 +182,7 @@ def test_outputs_bit_identical_to_cpp(case):
     and the surface's points, normals and triangles."""
     with open(os.path.join(REFERENCE, "reference.json")) as f:
         expected = json.load(f)["cases"][case]
-    cloud = nvtesting.cloud(np.load(os.path.join(REFERENCE, "points.npy")))
+    cloud = nvclouds.cloud(np.load(os.path.join(REFERENCE, "points.npy")))
     got = nvflavours.summary(nvflavours.run_case(narrowvolume.vtkNarrowVolumeReconstruction, cloud,
                                                  nvflavours.CASES[case]))
     assert sorted(got) == sorted(expected)
@@ -201,12 +199,12 @@ def test_reconstruct_inputs():
     volume, surface = narrowvolume.reconstruct(SPHERE, **SETTINGS)
     assert isinstance(volume, vtkImageData) and isinstance(surface, vtkPolyData)
     grid = vtkUnstructuredGrid()
-    grid.SetPoints(nvtesting.cloud(SPHERE).GetPoints())
-    for data in (nvtesting.cloud(SPHERE), grid, SPHERE.tolist()):
+    grid.SetPoints(nvclouds.cloud(SPHERE).GetPoints())
+    for data in (nvclouds.cloud(SPHERE), grid, SPHERE.tolist()):
         other, _ = narrowvolume.reconstruct(data, **SETTINGS)
         assert np.array_equal(phi_of(other), phi_of(volume))
     f = narrowvolume.vtkNarrowVolumeReconstruction()
-    f.SetInputData(nvtesting.cloud(SPHERE))
+    f.SetInputData(nvclouds.cloud(SPHERE))
     f.SetOffsetDistance(0.1)
     f.SetSampleSpacing(0.025)
     f.Update()
@@ -262,7 +260,7 @@ def test_sampling_time():
     measurement's seconds in the update that made it, and 0 in an update that
     only changed a property."""
     f = narrowvolume.vtkNarrowVolumeReconstruction()
-    f.SetInputData(nvtesting.cloud(SPHERE))
+    f.SetInputData(nvclouds.cloud(SPHERE))
     f.SetOutputVolume(0)
     f.Update()
     assert f.GetSamplingTime() > 0.0
@@ -325,7 +323,7 @@ def test_spacing_progress_in_the_information_pass():
     (seconds on a large cloud, before the data pass): its progress shows
     there as the run's first tenth, never going back."""
     f = narrowvolume.vtkNarrowVolumeReconstruction()
-    f.SetInputData(nvtesting.cloud(nvtesting.sphere_points(100000)))
+    f.SetInputData(nvclouds.cloud(nvclouds.sphere_points(100000)))
     seen = []
     f.AddObserver(vtkCommand.ProgressEvent, lambda caller, event: seen.append(caller.GetProgress()))
     f.UpdateInformation()
@@ -339,7 +337,7 @@ def test_spacing_stops_when_asked():
     """The binding's measurement stops when the monitor asks (None), and on
     Ctrl-C (KeyboardInterrupt), as a run does."""
     from narrowvolume import _core
-    points = np.ascontiguousarray(nvtesting.sphere_points(100000))
+    points = np.ascontiguousarray(nvclouds.sphere_points(100000))
     assert _core.Sampling.Measure(points, 0, None).Statistics().Valid()
     assert _core.Sampling.Measure(points, 0, _core.Monitor(None, lambda: True)) is None
 
@@ -409,7 +407,7 @@ def test_ctrl_c_during_update():
     """Ctrl-C during the filter's Update(): the run stops, the outputs are
     empty, an error says so, and Update() returns."""
     f = narrowvolume.vtkNarrowVolumeReconstruction()
-    f.SetInputData(nvtesting.cloud(SPHERE))
+    f.SetInputData(nvclouds.cloud(SPHERE))
     f.SetOffsetDistance(0.1)
     f.SetSampleSpacing(0.01)
     f.SetMaximumNumberOfIterations(5000)
@@ -693,10 +691,10 @@ def test_readme_pip_snippets(tmp_path):
     from vtkmodules.vtkIOPLY import vtkPLYWriter
     snippets = readme_pip_snippets()
     assert len(snippets) >= 4, "the pip section's snippets"
-    points = nvtesting.sphere_points(2000, 15.0)
+    points = nvclouds.sphere_points(2000, 15.0)
     np.savetxt(str(tmp_path / "scan.xyz"), points)
     writer = vtkPLYWriter()
-    writer.SetInputData(nvtesting.cloud(points))
+    writer.SetInputData(nvclouds.cloud(points))
     writer.SetFileName(str(tmp_path / "scan.ply"))
     writer.Write()
     try:
@@ -727,23 +725,25 @@ def test_readme_pip_snippets(tmp_path):
 
 
 # --- The project's other Python tests, against the wheel (ctest runs them
-# against the CMake build's package, each on its own).
-SHARED_SCRIPTS = {
+# against the CMake build's package, each on its own), each module with
+# pytest in a child process, as ctest runs it.
+SHARED_MODULES = {
     "test_python_package.py": [],
     "test_robustness.py": [],
     "test_reference_scheme.py": [],
     "test_volume_off.py": [],
-    "test_pipeline_vtk.py": [TREFOIL],
+    "test_pipeline_vtk.py": ["--trefoil", TREFOIL],
 }
 
 
 @only_wheel
-@pytest.mark.parametrize("script", sorted(SHARED_SCRIPTS))
-def test_shared_script(script):
-    """A test script of the CMake build's package passes with the wheel."""
+@pytest.mark.parametrize("module", sorted(SHARED_MODULES))
+def test_shared_module(module):
+    """A test module of the CMake build's package passes with the wheel."""
     start = time.perf_counter()
-    result = subprocess.run([sys.executable, os.path.join(HERE, script)] + SHARED_SCRIPTS[script],
+    result = subprocess.run([sys.executable, "-m", "pytest", "-p", "no:cacheprovider", "-v", "-r", "s", "-s",
+                             os.path.join(HERE, module)] + SHARED_MODULES[module],
                             capture_output=True, text=True, cwd=HERE)
     print(result.stdout[-3000:])
-    print("%s: %.1f s" % (script, time.perf_counter() - start))
+    print("%s: %.1f s" % (module, time.perf_counter() - start))
     assert result.returncode == 0 and "FAILED" not in result.stdout, nvtesting.explain(result)

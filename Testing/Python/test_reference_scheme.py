@@ -13,12 +13,13 @@ points before the distance, is off: the scheme runs on the points given.
 import math
 
 import numpy as np
+import pytest
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
 from narrowvolume import vtkNarrowVolumeReconstruction
-import nvtesting
+import nvclouds
 
-t = nvtesting.Checker("test_reference_scheme")
+pytestmark = pytest.mark.fidelity
 
 
 def reference(points, origin, h, dims, l, xi_cells, eps_cells, steps, tol, edge_function):
@@ -70,12 +71,15 @@ def reference(points, origin, h, dims, l, xi_cells, eps_cells, steps, tol, edge_
 
 rng = np.random.default_rng(3)
 direction = rng.normal(size=(40, 3))
-points = 0.3 * direction / np.linalg.norm(direction, axis=1)[:, None] + rng.normal(scale=0.02, size=(40, 3))
+POINTS = 0.3 * direction / np.linalg.norm(direction, axis=1)[:, None] + rng.normal(scale=0.02, size=(40, 3))
+CASES = [dict(l=0.1, h=0.04, xi=2.0, eps=6.0, steps=3, edge=4),
+         dict(l=0.12, h=0.05, xi=1.5, eps=4.0, steps=2, edge=3)]
 
-for settings in (dict(l=0.1, h=0.04, xi=2.0, eps=6.0, steps=3, edge=4),
-                 dict(l=0.12, h=0.05, xi=1.5, eps=4.0, steps=2, edge=3)):
+
+@pytest.mark.parametrize("settings", CASES, ids=["eq4-3-steps", "eq3-2-steps"])
+def test_filter_against_the_reference(settings):
     f = vtkNarrowVolumeReconstruction()
-    f.SetInputData(nvtesting.cloud(points))
+    f.SetInputData(nvclouds.cloud(POINTS))
     f.CloseGapsOff()  # the scheme on the points as given: gap closing adds points (test_gap_closing.py)
     f.SetOffsetDistance(settings["l"])
     f.SetSampleSpacing(settings["h"])
@@ -92,15 +96,14 @@ for settings in (dict(l=0.1, h=0.04, xi=2.0, eps=6.0, steps=3, edge=4),
     # VTK arrays run x fastest: reshape to (nz, ny, nx), then transpose to (i, j, k).
     ours = vtk_to_numpy(image.GetPointData().GetArray("phi")).reshape(dims[::-1]).transpose(2, 1, 0)
     our_band = vtk_to_numpy(image.GetPointData().GetArray("NarrowBand")).reshape(dims[::-1]).transpose(2, 1, 0)
-    phi, band, phi0 = reference(points, np.array(image.GetOrigin()), image.GetSpacing()[0], dims, settings["l"],
-                          settings["xi"], settings["eps"], settings["steps"], 1e-10, settings["edge"])
-    t.check(np.array_equal(band, our_band.astype(bool)), "same band (%d vs %d nodes)" % (band.sum(), our_band.sum()))
+    phi, band, phi0 = reference(POINTS, np.array(image.GetOrigin()), image.GetSpacing()[0], dims, settings["l"],
+                                settings["xi"], settings["eps"], settings["steps"], 1e-10, settings["edge"])
     difference = np.abs(phi - ours)
     print("%s: %d band nodes of %d, max |phi - reference| = %.2e on the band, %.2e elsewhere" % (
         settings, band.sum(), band.size, difference[band].max(), difference[~band].max()))
-    t.check(band.sum() > 500, "a real band")
-    t.check(difference[band].max() < 1e-6, "band agrees with the reference")
-    t.check(difference[~band].max() < 1e-6, "off-band nodes keep phi0")
+    assert np.array_equal(band, our_band.astype(bool)), "same band (%d vs %d nodes)" % (band.sum(), our_band.sum())
+    assert band.sum() > 500, "a real band"
+    assert difference[band].max() < 1e-6, "band agrees with the reference"
+    assert difference[~band].max() < 1e-6, "off-band nodes keep phi0"
     moved = np.abs(phi - phi0)[band].max()
-    t.check(moved > 1e-2, "the steps changed phi (by up to %.3f), so the comparison means something" % moved)
-t.finish()
+    assert moved > 1e-2, "the steps changed phi (by up to %.3f), so the comparison means something" % moved

@@ -10,34 +10,23 @@ the gap warning (the README's former advice, l = twice the typical spacing,
 on the unevenly sampled teapot, without gap closing) and small-piece removal (the raw range scan's loose balls, the
 dragon's tiny voids; the same pieces with and without the dense volume).
 
-    pvpython test_scans_defaults.py SCANS_DIR
+    pvpython -m pytest -s test_scans_defaults.py [--scans-dir SCANS_DIR]
 """
-import os
-import sys
 import time
 
+import pytest
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkCommand
 from vtkmodules.vtkFiltersCore import vtkFlyingEdges3D, vtkProbeFilter
-from vtkmodules.vtkIOPLY import vtkPLYReader
 
 from narrowvolume import vtkNarrowVolumeReconstruction
+import nvclouds
 import nvtesting
 
-SKIP = 77
-scans = sys.argv[1]
-if not os.path.isfile(os.path.join(scans, "armadillo.ply")):
-    print("SKIPPED: no scans in %s (../shared/data/scans is not beside the source tree)" % scans)
-    sys.exit(SKIP)
-t = nvtesting.Checker("test_scans_defaults")
+pytestmark = [pytest.mark.fidelity, pytest.mark.slow]
+SCANS = ("armadillo", "armadillo_decimated", "dragon", "teapot", "teacup", "bunny", "demosthenes",
+         "bunny_rangescan_bun000")
 STATUES = ("armadillo", "armadillo_decimated", "dragon", "teapot")
-
-
-def read(name):
-    reader = vtkPLYReader()
-    reader.SetFileName(os.path.join(scans, name + ".ply"))
-    reader.Update()
-    return reader.GetOutput()
 
 
 def collect_warnings(f):
@@ -86,65 +75,95 @@ def inside_fraction(f, cloud):
     return float((phi > 0).mean())
 
 
-print("%-24s %8s %10s %10s %6s %9s %7s %7s %5s %6s %8s" % (
-    "scan", "points", "median d1", "offset l", "l/d1", "grid", "closed", "inside", "gaps", "hollow", "seconds"))
-for name in ("armadillo", "armadillo_decimated", "dragon", "teapot", "teacup", "bunny", "demosthenes",
-             "bunny_rangescan_bun000"):
-    cloud = read(name)
-    f, figures, warnings, seconds = run(cloud)
-    surface = f.GetOutput(1)
-    triangles, open_edges, _ = nvtesting.merged_surface(surface)
-    inside = inside_fraction(f, cloud)
-    # Without small-piece removal every point is inside (the shell is the
-    # union of balls around the points); with it, only the points of the
-    # loose pieces removed are not.
-    inside_all = inside_fraction(run(cloud, RemoveSmallPieces=False)[0], cloud)
-    l, median = figures["OffsetDistance"][0], figures["MedianPointSpacing"][0]
-    hollow = float("nan")
-    if name in STATUES:
-        outer = nvtesting.volume_of(run(cloud, Sheets=1)[0].GetOutput(1))
-        inner = nvtesting.volume_of(run(cloud, Sheets=2)[0].GetOutput(1))
-        hollow = -inner / outer  # the inner sheet faces the cavity: negative volume
-    dims = f.GetOutput(0).GetDimensions()
-    print("%-24s %8d %10.4g %10.4g %6.2f %9s %7s %7.4f %5d %6.2f %8.2f" % (
-        name, cloud.GetNumberOfPoints(), median, l, l / median, "x".join(map(str, dims)),
-        "yes" if open_edges == 0 else "NO", inside, figures["NumberOfGaps"][0], hollow, seconds))
-    t.check(triangles > 1000 and open_edges == 0, "%s: closed and manifold surface (%d open edges)" % (name, open_edges))
-    t.check(inside_all == 1.0, "%s: every input point inside the solid (%.4f)" % (name, inside_all))
-    t.check(inside == 1.0 if figures["RemovedPieces"][0] == 0 else inside > 0.999,
-            "%s: points outside only in removed loose pieces (%.4f inside)" % (name, inside))
-    t.check(1.5 * median <= l <= 4.0 * median, "%s: the automatic offset near the sampling scale (l = %.2f d1)" % (
-        name, l / median) if name != "teapot" else "%s: offset" % name)
-    t.check(max(dims) <= 330, "%s: the automatic grid stays within 320 cells plus padding (%s)" % (name, dims))
-    if name in STATUES:
-        t.check(hollow >= 1.0 / 3.0, "%s: hollow shell, inner volume %.2f of the outer" % (name, hollow))
-    gap_warned = any("gap" in w for w in warnings)
-    t.check(gap_warned == (figures["NumberOfGaps"][0] > 0), "%s: a warning exactly when there are gaps" % name)
+@pytest.fixture(scope="module")
+def table(require_scans, scans_dir):
+    """Every scan with nothing set but the input (and the runs the checks
+    compare it with), the table printed: {scan: figures}."""
+    require_scans(*SCANS)
+    print("\n%-24s %8s %10s %10s %6s %9s %7s %7s %5s %6s %8s" % (
+        "scan", "points", "median d1", "offset l", "l/d1", "grid", "closed", "inside", "gaps", "hollow", "seconds"))
+    rows = {}
+    for name in SCANS:
+        cloud = nvclouds.scan(name, scans_dir)
+        f, figures, warnings, seconds = run(cloud)
+        surface = f.GetOutput(1)
+        triangles, open_edges, _ = nvtesting.merged_surface(surface)
+        inside = inside_fraction(f, cloud)
+        # Without small-piece removal every point is inside (the shell is the
+        # union of balls around the points); with it, only the points of the
+        # loose pieces removed are not.
+        inside_all = inside_fraction(run(cloud, RemoveSmallPieces=False)[0], cloud)
+        l, median = figures["OffsetDistance"][0], figures["MedianPointSpacing"][0]
+        hollow = float("nan")
+        if name in STATUES:
+            outer = nvtesting.volume_of(run(cloud, Sheets=1)[0].GetOutput(1))
+            inner = nvtesting.volume_of(run(cloud, Sheets=2)[0].GetOutput(1))
+            hollow = -inner / outer  # the inner sheet faces the cavity: negative volume
+        dims = f.GetOutput(0).GetDimensions()
+        print("%-24s %8d %10.4g %10.4g %6.2f %9s %7s %7.4f %5d %6.2f %8.2f" % (
+            name, cloud.GetNumberOfPoints(), median, l, l / median, "x".join(map(str, dims)),
+            "yes" if open_edges == 0 else "NO", inside, figures["NumberOfGaps"][0], hollow, seconds), flush=True)
+        rows[name] = dict(triangles=triangles, open_edges=open_edges, inside=inside, inside_all=inside_all, l=l,
+                          median=median, hollow=hollow, dims=dims, figures=figures, warnings=warnings)
+    return rows
 
-# Gaps: the former advice (l = twice the typical spacing) on the unevenly
-# sampled teapot, with the points as given (CloseGaps off).
-teapot = read("teapot")
-median = run(teapot)[1]["MedianPointSpacing"][0]
-f, figures, warnings, _ = run(teapot, OffsetDistance=2.0 * median, CloseGaps=False)
-text = " ".join(w for w in warnings if "gap" in w)
-print("teapot, l = 2 d1: %d gaps, largest %.4g at %s" % (
-    figures["NumberOfGaps"][0], figures["LargestGap"][0], figures["LargestGapCenter"]))
-print("warning: %s" % text)
-t.check(figures["NumberOfGaps"][0] > 1 and figures["LargestGap"][0] > 2.0 * median,
-        "gaps wider than l found: %s" % figures["NumberOfGaps"])
-t.check("gap" in text and ("%g" % figures["LargestGap"][0]) in text and "OffsetDistance" in text,
-        "the warning names the gaps, the largest and what to change")
-bounds = teapot.GetBounds()
-center = figures["LargestGapCenter"]
-t.check(all(bounds[2 * a] <= center[a] <= bounds[2 * a + 1] for a in range(3)), "the largest gap lies in the cloud")
-f, figures, warnings, _ = run(teapot, OffsetDistance=1.05 * figures["LargestGap"][0], CloseGaps=False)
-t.check(figures["NumberOfGaps"][0] == 0 and not any("gap" in w for w in warnings),
-        "an offset above the largest gap: no gap, no warning")
 
-# Small pieces: the raw range scan has outliers that make loose balls, and the
-# dragon's uneven sampling leaves tiny voids in its wall.
-for name in ("bunny_rangescan_bun000", "dragon"):
-    cloud = read(name)
+@pytest.mark.parametrize("name", SCANS)
+def test_defaults_on_a_scan(table, name):
+    row = table[name]
+    figures, inside, median, l = row["figures"], row["inside"], row["median"], row["l"]
+    assert row["triangles"] > 1000 and row["open_edges"] == 0, \
+        "%s: closed and manifold surface (%d open edges)" % (name, row["open_edges"])
+    assert row["inside_all"] == 1.0, "%s: every input point inside the solid (%.4f)" % (name, row["inside_all"])
+    assert inside == 1.0 if figures["RemovedPieces"][0] == 0 else inside > 0.999, \
+        "%s: points outside only in removed loose pieces (%.4f inside)" % (name, inside)
+    assert 1.5 * median <= l <= 4.0 * median, "%s: the automatic offset near the sampling scale (l = %.2f d1)" % (
+        name, l / median) if name != "teapot" else "%s: offset" % name
+    assert max(row["dims"]) <= 330, "%s: the automatic grid stays within 320 cells plus padding (%s)" % (
+        name, row["dims"])
+    if name in STATUES:
+        assert row["hollow"] >= 1.0 / 3.0, "%s: hollow shell, inner volume %.2f of the outer" % (name, row["hollow"])
+    gap_warned = any("gap" in w for w in row["warnings"])
+    assert gap_warned == (figures["NumberOfGaps"][0] > 0), "%s: a warning exactly when there are gaps" % name
+
+
+@pytest.fixture(scope="module")
+def teapot_gaps(scan):
+    """Gaps: the former advice (l = twice the typical spacing) on the unevenly
+    sampled teapot, with the points as given (CloseGaps off)."""
+    teapot = scan("teapot")
+    median = run(teapot)[1]["MedianPointSpacing"][0]
+    f, figures, warnings, _ = run(teapot, OffsetDistance=2.0 * median, CloseGaps=False)
+    text = " ".join(w for w in warnings if "gap" in w)
+    print("teapot, l = 2 d1: %d gaps, largest %.4g at %s" % (
+        figures["NumberOfGaps"][0], figures["LargestGap"][0], figures["LargestGapCenter"]))
+    print("warning: %s" % text)
+    return teapot, median, figures, text
+
+
+def test_gaps_found_and_reported(teapot_gaps):
+    teapot, median, figures, text = teapot_gaps
+    assert figures["NumberOfGaps"][0] > 1 and figures["LargestGap"][0] > 2.0 * median, \
+        "gaps wider than l found: %s" % figures["NumberOfGaps"]
+    assert "gap" in text and ("%g" % figures["LargestGap"][0]) in text and "OffsetDistance" in text, \
+        "the warning names the gaps, the largest and what to change"
+    bounds = teapot.GetBounds()
+    center = figures["LargestGapCenter"]
+    assert all(bounds[2 * a] <= center[a] <= bounds[2 * a + 1] for a in range(3)), "the largest gap lies in the cloud"
+
+
+def test_an_offset_above_the_largest_gap(teapot_gaps):
+    teapot, _, figures, _ = teapot_gaps
+    f, figures, warnings, _ = run(teapot, OffsetDistance=1.05 * figures["LargestGap"][0], CloseGaps=False)
+    assert figures["NumberOfGaps"][0] == 0 and not any("gap" in w for w in warnings), \
+        "an offset above the largest gap: no gap, no warning"
+
+
+@pytest.mark.parametrize("name", ["bunny_rangescan_bun000", "dragon"])
+def test_small_pieces(scan, name):
+    """Small pieces: the raw range scan has outliers that make loose balls, and
+    the dragon's uneven sampling leaves tiny voids in its wall."""
+    cloud = scan(name)
     kept, figures_kept = run(cloud, RemoveSmallPieces=False)[:2]
     removed, figures_removed = run(cloud)[:2]
     slabs, figures_slabs = run(cloud, OutputVolume=False)[:2]
@@ -153,12 +172,11 @@ for name in ("bunny_rangescan_bun000", "dragon"):
     print("%s: %d surface parts without removal, %d with (removed %d pieces, %d voids; without the volume %d, %d)" % (
         name, n_kept, n_removed, figures_removed["RemovedPieces"][0], figures_removed["RemovedVoids"][0],
         figures_slabs["RemovedPieces"][0], figures_slabs["RemovedVoids"][0]))
-    t.check(counted > 0 and n_removed == n_kept - counted, "%s: the counted pieces are gone" % name)
-    t.check(nvtesting.merged_surface(removed.GetOutput(1))[1] == 0, "%s: still closed and manifold" % name)
-    t.check(nvtesting.regions(slabs.GetOutput(1)) == n_removed, "%s: the same parts without the dense volume" % name)
-    t.check(figures_slabs["RemovedPieces"] == figures_removed["RemovedPieces"] and
-            figures_slabs["RemovedVoids"] == figures_removed["RemovedVoids"], "%s: the same counts" % name)
-    t.check(contour_parts(removed) == n_removed, "%s: contouring the Volume's phi gives the same parts (%d)" % (
-        name, contour_parts(removed)))
-t.check(figures_kept["RemovedPieces"] == [0.0], "RemoveSmallPieces off removes nothing")
-t.finish()
+    assert counted > 0 and n_removed == n_kept - counted, "%s: the counted pieces are gone" % name
+    assert nvtesting.merged_surface(removed.GetOutput(1))[1] == 0, "%s: still closed and manifold" % name
+    assert nvtesting.regions(slabs.GetOutput(1)) == n_removed, "%s: the same parts without the dense volume" % name
+    assert figures_slabs["RemovedPieces"] == figures_removed["RemovedPieces"] and \
+        figures_slabs["RemovedVoids"] == figures_removed["RemovedVoids"], "%s: the same counts" % name
+    assert contour_parts(removed) == n_removed, "%s: contouring the Volume's phi gives the same parts (%d)" % (
+        name, contour_parts(removed))
+    assert figures_kept["RemovedPieces"] == [0.0], "RemoveSmallPieces off removes nothing"

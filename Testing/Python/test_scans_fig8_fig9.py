@@ -13,37 +13,22 @@ from ../shared/data/scans. Skipped, with a message, when the folder is absent.
   surface is wrinkled (rougher than with all points), and eps = eps_12
   smooths it more than eps_6.
 
-    pvpython test_scans_fig8_fig9.py SCANS_DIR
+    pvpython -m pytest -s test_scans_fig8_fig9.py [--scans-dir SCANS_DIR]
 """
-import os
-import sys
-
-from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkIOPLY import vtkPLYReader
+import pytest
 
 from narrowvolume import vtkNarrowVolumeReconstruction
+import nvclouds
 import nvtesting
 
-SKIP = 77
-scans = sys.argv[1]
-if not os.path.isfile(os.path.join(scans, "teacup.ply")):
-    print("SKIPPED: no scans in %s (../shared/data/scans is not beside the source tree)" % scans)
-    sys.exit(SKIP)
-t = nvtesting.Checker("test_scans_fig8_fig9")
-
-
-def read(name):
-    reader = vtkPLYReader()
-    reader.SetFileName(os.path.join(scans, name + ".ply"))
-    reader.Update()
-    return vtk_to_numpy(reader.GetOutput().GetPoints().GetData()).astype(float)
+pytestmark = pytest.mark.fidelity
 
 
 def shell(xyz, cells, offset_cells, **settings):
     lo, hi = xyz.min(axis=0), xyz.max(axis=0)
     h = float((hi - lo).max()) / cells
     f = vtkNarrowVolumeReconstruction()
-    f.SetInputData(nvtesting.cloud(xyz))
+    f.SetInputData(nvclouds.cloud(xyz))
     f.SetSampleSpacing(h)
     f.SetOffsetDistance(offset_cells * h)
     f.SetRemoveSmallPieces(False)  # the paper's figures show every piece
@@ -54,29 +39,52 @@ def shell(xyz, cells, offset_cells, **settings):
     return f.GetOutput(1)
 
 
-# Fig. 8: xi.
-teacup = read("teacup")
-pieces, euler = {}, {}
-for xi in (1, 2, 4):
-    s = shell(teacup, 250, 4, XiCells=xi, MaximumNumberOfIterations=10)
-    pieces[xi], euler[xi] = nvtesting.regions(s), nvtesting.euler_characteristic(s)
-    print("Fig. 8 teacup, xi = eps_%d: %d pieces, Euler characteristic %d" % (xi, pieces[xi], euler[xi]))
-t.check(pieces[1] >= 10, "xi_1 leaves the sparse parts open (%d pieces)" % pieces[1])
-for xi in (2, 4):
-    t.check(pieces[xi] == 2 and euler[xi] == 0, "xi_%d closes them: %d pieces, chi %d" % (xi, pieces[xi], euler[xi]))
+@pytest.fixture(scope="module")
+def fig8(scan_points):
+    """Fig. 8, xi: {xi: (pieces, Euler characteristic)} on the teacup."""
+    teacup = scan_points("teacup")
+    result = {}
+    for xi in (1, 2, 4):
+        s = shell(teacup, 250, 4, XiCells=xi, MaximumNumberOfIterations=10)
+        result[xi] = nvtesting.regions(s), nvtesting.euler_characteristic(s)
+        print("Fig. 8 teacup, xi = eps_%d: %d pieces, Euler characteristic %d" % (xi, result[xi][0], result[xi][1]))
+    return result
 
-# Fig. 9: eps and the number of points.
-bunny = read("bunny")
-sixth = bunny[::6]
-rough_all = nvtesting.face_normal_roughness(shell(bunny, 200, 4, MaximumNumberOfIterations=0))
-rough_sixth = nvtesting.face_normal_roughness(shell(sixth, 200, 4, MaximumNumberOfIterations=0))
-rough_eps6 = nvtesting.face_normal_roughness(shell(sixth, 200, 4, EpsilonCells=6))
-rough_eps12 = nvtesting.face_normal_roughness(shell(sixth, 200, 4, EpsilonCells=12))
-print("Fig. 9 bunny: initial surface roughness %.2f deg with %d points, %.2f with %d" % (
-    rough_all, len(bunny), rough_sixth, len(sixth)))
-print("Fig. 9 bunny, %d points, 3 steps: roughness %.2f with eps_6, %.2f with eps_12" % (
-    len(sixth), rough_eps6, rough_eps12))
-t.check(rough_sixth > 1.5 * rough_all, "fewer points: wrinkled initial surface")
-t.check(rough_eps12 < 0.8 * rough_eps6, "a larger eps smooths more")
-t.check(rough_eps6 < rough_sixth, "the evolution smooths the initial surface")
-t.finish()
+
+def test_fig8_xi_1_leaves_the_sparse_parts_open(fig8):
+    pieces = fig8[1][0]
+    assert pieces >= 10, "xi_1 leaves the sparse parts open (%d pieces)" % pieces
+
+
+@pytest.mark.parametrize("xi", [2, 4])
+def test_fig8_larger_xi_closes_them(fig8, xi):
+    pieces, euler = fig8[xi]
+    assert pieces == 2 and euler == 0, "xi_%d closes them: %d pieces, chi %d" % (xi, pieces, euler)
+
+
+@pytest.fixture(scope="module")
+def fig9(scan_points):
+    """Fig. 9, eps and the number of points: the roughness of the bunny's shells."""
+    bunny = scan_points("bunny")
+    sixth = bunny[::6]
+    rough = dict(all=nvtesting.face_normal_roughness(shell(bunny, 200, 4, MaximumNumberOfIterations=0)),
+                 sixth=nvtesting.face_normal_roughness(shell(sixth, 200, 4, MaximumNumberOfIterations=0)),
+                 eps6=nvtesting.face_normal_roughness(shell(sixth, 200, 4, EpsilonCells=6)),
+                 eps12=nvtesting.face_normal_roughness(shell(sixth, 200, 4, EpsilonCells=12)))
+    print("Fig. 9 bunny: initial surface roughness %.2f deg with %d points, %.2f with %d" % (
+        rough["all"], len(bunny), rough["sixth"], len(sixth)))
+    print("Fig. 9 bunny, %d points, 3 steps: roughness %.2f with eps_6, %.2f with eps_12" % (
+        len(sixth), rough["eps6"], rough["eps12"]))
+    return rough
+
+
+def test_fig9_fewer_points_wrinkle_the_initial_surface(fig9):
+    assert fig9["sixth"] > 1.5 * fig9["all"], "fewer points: wrinkled initial surface"
+
+
+def test_fig9_larger_eps_smooths_more(fig9):
+    assert fig9["eps12"] < 0.8 * fig9["eps6"], "a larger eps smooths more"
+
+
+def test_fig9_the_evolution_smooths(fig9):
+    assert fig9["eps6"] < fig9["sixth"], "the evolution smooths the initial surface"

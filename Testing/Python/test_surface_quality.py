@@ -12,27 +12,24 @@
   ../shared/data/scans at 300 cells (before, 2 to 26 zero-area triangles on
   six of the seven). The scans are skipped, with a message, without the folder.
 
-    pvpython test_surface_quality.py SCANS_DIR
+    pvpython -m pytest -s test_surface_quality.py [--scans-dir SCANS_DIR]
 """
-import math
-import os
-import sys
-
 import numpy as np
+import pytest
 from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkIOPLY import vtkPLYReader
 
 from narrowvolume import vtkNarrowVolumeReconstruction
+import nvclouds
 import nvshapes
 import nvtesting
 
-scans = sys.argv[1] if len(sys.argv) > 1 else ""
-t = nvtesting.Checker("test_surface_quality")
+pytestmark = pytest.mark.fidelity
+SCANS = ("bunny", "armadillo", "dragon", "teacup", "teapot", "bunny_rangescan_bun000", "demosthenes")
 
 
 def shell(xyz, h, offset):
     f = vtkNarrowVolumeReconstruction()
-    f.SetInputData(nvtesting.cloud(xyz))
+    f.SetInputData(nvclouds.cloud(xyz))
     f.SetSampleSpacing(h)
     f.SetOffsetDistance(offset)
     f.SetOutputVolume(False)
@@ -61,36 +58,38 @@ def check_printable(surface, label):
     degenerate_float = zero_area(points.astype(np.float32).astype(float), cells)
     print("%s: %d triangles; directed edges repeated %d, without their reverse %d; zero-area triangles %d "
           "(float: %d)" % (label, len(cells), repeated, unpaired, degenerate, degenerate_float))
-    t.check(len(cells) > 1000, "%s: a surface" % label)
-    t.check(repeated == 0 and unpaired == 0, "%s: closed, manifold and wound alike" % label)
-    t.check(degenerate == 0 and degenerate_float == 0, "%s: no zero-area triangle" % label)
+    assert len(cells) > 1000, "%s: a surface" % label
+    assert repeated == 0 and unpaired == 0, "%s: closed, manifold and wound alike" % label
+    assert degenerate == 0 and degenerate_float == 0, "%s: no zero-area triangle" % label
 
 
-# The sphere: normals against the exact ones, out of the shell (away from the
-# centre on the outer sheet, towards it on the inner one).
-h, offset = 0.01, 0.1
-surface = shell(nvshapes.sphere_points(h / 4), h, offset)
-x = nvtesting.points_of(surface).astype(float) - nvshapes.CENTER
-normals = vtk_to_numpy(surface.GetPointData().GetNormals()).astype(float)
-r = np.linalg.norm(x, axis=1)
-exact = np.where((r > 0.5)[:, None], 1.0, -1.0) * x / r[:, None]
-cosine = (exact * normals).sum(axis=1) / np.linalg.norm(normals, axis=1)
-angle = np.degrees(np.arccos(np.clip(cosine, -1.0, 1.0)))
-print("sphere, h = %g, points h/4 apart: normals %.3f degrees from the exact ones on average, %.3f at most"
-      % (h, angle.mean(), angle.max()))
-t.check(angle.mean() < 1.0, "sphere: mean normal error %.3f degrees, not below 1" % angle.mean())
-t.check(angle.max() < 3.0, "sphere: largest normal error %.3f degrees, not below 3" % angle.max())
-check_printable(surface, "sphere")
+@pytest.fixture(scope="module")
+def sphere():
+    """The densely sampled sphere's shell (h = 0.01, points h / 4 apart, l = 0.1)."""
+    return shell(nvclouds.shape_points("sphere", 0.01 / 4), 0.01, 0.1)
 
-if not os.path.isfile(os.path.join(scans, "bunny.ply")):
-    print("SKIPPED the scans: none in %r (../shared/data/scans is not beside the source tree)" % scans)
-else:
-    for name in ("bunny", "armadillo", "dragon", "teacup", "teapot", "bunny_rangescan_bun000", "demosthenes"):
-        reader = vtkPLYReader()
-        reader.SetFileName(os.path.join(scans, name + ".ply"))
-        reader.Update()
-        xyz = vtk_to_numpy(reader.GetOutput().GetPoints().GetData()).astype(float)
-        spacing = float((xyz.max(axis=0) - xyz.min(axis=0)).max()) / 300
-        check_printable(shell(xyz, spacing, 4 * spacing), "%s, 300 cells" % name)
-        sys.stdout.flush()
-t.finish()
+
+def test_sphere_normals(sphere):
+    """The sphere: normals against the exact ones, out of the shell (away from
+    the centre on the outer sheet, towards it on the inner one)."""
+    x = nvtesting.points_of(sphere).astype(float) - nvshapes.CENTER
+    normals = vtk_to_numpy(sphere.GetPointData().GetNormals()).astype(float)
+    r = np.linalg.norm(x, axis=1)
+    exact = np.where((r > 0.5)[:, None], 1.0, -1.0) * x / r[:, None]
+    cosine = (exact * normals).sum(axis=1) / np.linalg.norm(normals, axis=1)
+    angle = np.degrees(np.arccos(np.clip(cosine, -1.0, 1.0)))
+    print("sphere, h = %g, points h/4 apart: normals %.3f degrees from the exact ones on average, %.3f at most"
+          % (0.01, angle.mean(), angle.max()))
+    assert angle.mean() < 1.0, "sphere: mean normal error %.3f degrees, not below 1" % angle.mean()
+    assert angle.max() < 3.0, "sphere: largest normal error %.3f degrees, not below 3" % angle.max()
+
+
+def test_sphere_printable(sphere):
+    check_printable(sphere, "sphere")
+
+
+@pytest.mark.parametrize("name", SCANS)
+def test_scan_printable(scan_points, name):
+    xyz = scan_points(name)
+    spacing = float((xyz.max(axis=0) - xyz.min(axis=0)).max()) / 300
+    check_printable(shell(xyz, spacing, 4 * spacing), "%s, 300 cells" % name)

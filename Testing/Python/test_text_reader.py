@@ -6,23 +6,31 @@ a clear error naming the line."""
 import os
 
 import numpy as np
+import pytest
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkCommand
 
 from narrowvolume import vtkNarrowVolumeReconstruction, vtkPointCloudTextReader
+import nvclouds
 import nvpointfiles
 import nvtesting
 
-t = nvtesting.Checker("test_text_reader")
-folder = nvtesting.scratch_folder(prefix="nv-text-")
-xyz = nvtesting.sphere_points(400, 0.5)
+pytestmark = pytest.mark.readers
+XYZ = nvclouds.sphere_points(400, 0.5)
+NORMALS = XYZ / np.linalg.norm(XYZ, axis=1)[:, None]
 
 
-def write(name, text):
-    path = os.path.join(folder, name)
-    with open(path, "w") as f:
-        f.write(text)
-    return path
+@pytest.fixture(scope="module")
+def write():
+    """write(name, text): the path of a file of the scratch folder holding text."""
+    folder = nvtesting.scratch_folder(prefix="nv-text-")
+
+    def write(name, text):
+        path = os.path.join(folder, name)
+        with open(path, "w") as f:
+            f.write(text)
+        return path
+    return write
 
 
 def read(path):
@@ -35,54 +43,73 @@ def read(path):
     return reader, reader.GetOutput(), errors
 
 
-plain = write("plain.xyz", "# a comment\n" + "\n".join("%.9f %.9f %.9f" % tuple(p) for p in xyz) + "\n")
-reader, cloud, errors = read(plain)
-t.check(cloud.GetNumberOfPoints() == 400 and cloud.GetNumberOfVerts() == 400, "plain xyz: 400 points as vertices")
-t.check(np.allclose(nvtesting.points_of(cloud), xyz, atol=1e-8), "coordinates read back")
-t.check(reader.CanReadFile(plain) == 1, "CanReadFile on xyz")
+@pytest.fixture(scope="module")
+def plain(write):
+    """A plain .xyz file with a comment line, and its reader after reading it."""
+    path = write("plain.xyz", "# a comment\n" + "\n".join("%.9f %.9f %.9f" % tuple(p) for p in XYZ) + "\n")
+    return path, read(path)[0]
 
-rgb = (np.arange(400)[:, None] * [1, 2, 3]) % 256
-pts = write("scan.pts", "400\n" + "\n".join("%.6f,%.6f,%.6f,%d,%d,%d,%d" % (p[0], p[1], p[2], 7, c[0], c[1], c[2])
-                                             for p, c in zip(xyz, rgb)))
-_, cloud, _ = read(pts)
-pd = cloud.GetPointData()
-t.check(cloud.GetNumberOfPoints() == 400, "pts with a count line: 400 points")
-t.check(pd.GetArray("Intensity") is not None and pd.GetArray("Intensity").GetValue(5) == 7, "pts intensity")
-t.check(pd.GetScalars() is not None and pd.GetScalars().GetName() == "Colors", "pts colours")
-t.check(np.array_equal(vtk_to_numpy(pd.GetScalars()), rgb), "colour values")
 
-normals = xyz / np.linalg.norm(xyz, axis=1)[:, None]
-with_normals = write("normals.xyz", "\n".join("%.6f\t%.6f\t%.6f\t%.6f\t%.6f\t%.6f" % (tuple(p) + tuple(n))
-                                              for p, n in zip(xyz, normals)))
-_, cloud, _ = read(with_normals)
-t.check(cloud.GetPointData().GetNormals() is not None, "xyz with normals")
+def test_plain_xyz(plain):
+    path, reader = plain
+    cloud = reader.GetOutput()
+    assert cloud.GetNumberOfPoints() == 400 and cloud.GetNumberOfVerts() == 400, "plain xyz: 400 points as vertices"
+    assert np.allclose(nvtesting.points_of(cloud), XYZ, atol=1e-8), "coordinates read back"
+    assert reader.CanReadFile(path) == 1, "CanReadFile on xyz"
 
-# Straight into the filter.
-f = vtkNarrowVolumeReconstruction()
-f.SetInputConnection(reader.GetOutputPort())
-f.SetOffsetDistance(0.1)
-f.SetSampleSpacing(0.03)
-f.Update()
-t.check(nvtesting.regions(f.GetOutput(1)) == 2, "the filter reads the reader's output")
 
-csv = write("cloud.csv", "x,y,z,nx,ny,nz\n" + "\n".join("%.6f,%.6f,%.6f,%.6f,%.6f,%.6f" % (tuple(p) + tuple(n))
-                                                      for p, n in zip(xyz, normals)))
-_, cloud, errors = read(csv)
-t.check(cloud.GetNumberOfPoints() == 400 and not errors, "CSV with a header line")
-t.check(cloud.GetPointData().GetNormals() is not None, "CSV normals")
+def test_pts_with_count_line_intensity_and_colours(write):
+    rgb = (np.arange(400)[:, None] * [1, 2, 3]) % 256
+    pts = write("scan.pts", "400\n" + "\n".join("%.6f,%.6f,%.6f,%d,%d,%d,%d" % (p[0], p[1], p[2], 7, c[0], c[1], c[2])
+                                                 for p, c in zip(XYZ, rgb)))
+    _, cloud, _ = read(pts)
+    pd = cloud.GetPointData()
+    assert cloud.GetNumberOfPoints() == 400, "pts with a count line: 400 points"
+    assert pd.GetArray("Intensity") is not None and pd.GetArray("Intensity").GetValue(5) == 7, "pts intensity"
+    assert pd.GetScalars() is not None and pd.GetScalars().GetName() == "Colors", "pts colours"
+    assert np.array_equal(vtk_to_numpy(pd.GetScalars()), rgb), "colour values"
 
-bad = write("bad.xyz", "0 0 0\n1 1 1\n2 two 2\n")
-_, cloud, errors = read(bad)
-t.check(cloud.GetNumberOfPoints() == 0, "malformed file: empty output")
-t.check(len(errors) > 0, "malformed file: an error")
-ragged = write("ragged.xyz", "0 0 0\n1 1 1 5\n")
-_, cloud, errors = read(ragged)
-t.check(cloud.GetNumberOfPoints() == 0 and errors, "ragged columns: an error and an empty output")
-# A molecular XYZ file (ParaView's XYZ Reader's format, which shares the
-# extension): the error says which reader to pick instead.
-molecule = write("water.xyz", "3\nwater\nO 0.0 0.0 0.117\nH 0.0 0.757 -0.467\nH 0.0 -0.757 -0.467\n")
-_, cloud, errors = nvpointfiles.read(vtkPointCloudTextReader, molecule)
-t.check(cloud.GetNumberOfPoints() == 0 and any("ParaView's XYZ Reader" in str(e) and "line 3" in str(e)
-                                               for e in errors),
-        "molecular XYZ: an empty output and an error naming line 3 and the XYZ Reader (%s)" % errors)
-t.finish()
+
+def test_xyz_with_normals(write):
+    with_normals = write("normals.xyz", "\n".join("%.6f\t%.6f\t%.6f\t%.6f\t%.6f\t%.6f" % (tuple(p) + tuple(n))
+                                                  for p, n in zip(XYZ, NORMALS)))
+    _, cloud, _ = read(with_normals)
+    assert cloud.GetPointData().GetNormals() is not None, "xyz with normals"
+
+
+def test_straight_into_the_filter(plain):
+    f = vtkNarrowVolumeReconstruction()
+    f.SetInputConnection(plain[1].GetOutputPort())
+    f.SetOffsetDistance(0.1)
+    f.SetSampleSpacing(0.03)
+    f.Update()
+    assert nvtesting.regions(f.GetOutput(1)) == 2, "the filter reads the reader's output"
+
+
+def test_csv_with_a_header_line(write):
+    csv = write("cloud.csv", "x,y,z,nx,ny,nz\n" + "\n".join("%.6f,%.6f,%.6f,%.6f,%.6f,%.6f" % (tuple(p) + tuple(n))
+                                                          for p, n in zip(XYZ, NORMALS)))
+    _, cloud, errors = read(csv)
+    assert cloud.GetNumberOfPoints() == 400 and not errors, "CSV with a header line"
+    assert cloud.GetPointData().GetNormals() is not None, "CSV normals"
+
+
+def test_malformed_file(write):
+    _, cloud, errors = read(write("bad.xyz", "0 0 0\n1 1 1\n2 two 2\n"))
+    assert cloud.GetNumberOfPoints() == 0, "malformed file: empty output"
+    assert len(errors) > 0, "malformed file: an error"
+
+
+def test_ragged_columns(write):
+    _, cloud, errors = read(write("ragged.xyz", "0 0 0\n1 1 1 5\n"))
+    assert cloud.GetNumberOfPoints() == 0 and errors, "ragged columns: an error and an empty output"
+
+
+def test_molecular_xyz(write):
+    """A molecular XYZ file (ParaView's XYZ Reader's format, which shares the
+    extension): the error says which reader to pick instead."""
+    molecule = write("water.xyz", "3\nwater\nO 0.0 0.0 0.117\nH 0.0 0.757 -0.467\nH 0.0 -0.757 -0.467\n")
+    _, cloud, errors = nvpointfiles.read(vtkPointCloudTextReader, molecule)
+    assert cloud.GetNumberOfPoints() == 0 and any("ParaView's XYZ Reader" in str(e) and "line 3" in str(e)
+                                                  for e in errors), \
+        "molecular XYZ: an empty output and an error naming line 3 and the XYZ Reader (%s)" % errors
