@@ -16,8 +16,8 @@ when CMake configures, writes the generated files into the build):
   (nvSettingsTable.h, read by Filters/Core/Run/nvSettings.h), which the VTK
   filter copies (its constructor, GetSettings, PrintSelf) and the binding
   binds (Python/nvBindings.cxx), field by field through one macro;
-- the ParaView server-manager XML of the filter
-  (Plugin/NarrowVolumeReconstruction.xml.in holds the rest of the proxy);
+- the ParaView server-manager XML of the filter (_servermanager.py makes
+  the whole proxy, for the compiled plugin and for the Python plugin);
 - the parameter reference (Markdown), and the README's table of the
   parameters, which the ctest PropertyTable checks;
 - at run time: the wheel's Python filter (its Set/Get methods and their

@@ -7,7 +7,7 @@ CMake runs it when it configures (CMakeLists.txt); by hand it rewrites or
 checks the README's table of the parameters:
 
     generate-properties.py --header nvSettingsTable.h     the core's settings
-    generate-properties.py --xml TEMPLATE OUT             the ParaView proxy
+    generate-properties.py --xml OUT                      the ParaView proxy
     generate-properties.py --markdown OUT                 the parameter reference
     generate-properties.py --stub OUT                     the wheel's filter's type stub
     generate-properties.py --readme README.md [--check]   the README's table
@@ -20,17 +20,18 @@ import os
 import re
 import sys
 import textwrap
-from xml.sax.saxutils import escape, quoteattr
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 TABLE = os.path.join(HERE, "..", "Python", "_properties.py")
+SERVERMANAGER = os.path.join(HERE, "..", "Python", "_servermanager.py")
 README_BEGIN = "<!-- The parameters: made from Python/_properties.py by cmake/generate-properties.py --readme -->"
 README_END = "<!-- end of the parameters -->"
 
 
-def load_table(path=TABLE):
-    """The table module, loaded from its file (it imports nothing of the package)."""
-    spec = importlib.util.spec_from_file_location("narrowvolume_properties", path)
+def load_module(name, path):
+    """A module of the package, loaded from its file (the table and the
+    proxy's module import nothing of the package)."""
+    spec = importlib.util.spec_from_file_location(name, path)
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     return module
@@ -86,60 +87,11 @@ def header(table):
     return "\n".join(lines)
 
 
-# --- ParaView: the proxy's properties and groups.
-def xml_properties(table, indent="      "):
-    out = []
-    label = lambda name: table.BY_NAME[name].label  # noqa: E731
-    for prop in table.PROPERTIES:
-        element = "DoubleVectorProperty" if prop.kind is float else "IntVectorProperty"
-        default = int(prop.default) if prop.kind is bool else number(prop.default)
-        attributes = 'name="%s" command="Set%s" label=%s number_of_elements="1" default_values="%s"' % (
-            prop.name, prop.name, quoteattr(prop.label), default)
-        if prop.advanced:
-            attributes += ' panel_visibility="advanced"'
-        out.append("%s<%s %s>" % (indent, element, attributes))
-        inner = indent + "  "
-        if prop.kind is bool:
-            out.append('%s<BooleanDomain name="bool"/>' % inner)
-        if prop.choices:
-            out.append('%s<EnumerationDomain name="enum">' % inner)
-            for choice in prop.choices:
-                out.append("%s  <Entry value=\"%d\" text=%s/>" % (inner, choice.value, quoteattr(choice.label)))
-            out.append("%s</EnumerationDomain>" % inner)
-        if prop.widget and prop.widget[0] == "bounds":
-            out.append('%s<BoundsDomain name="bounds" mode="scaled_extent" scale_factor="%s" default_mode="min">'
-                       % (inner, number(prop.widget[1])))
-            out.append('%s  <RequiredProperties>' % inner)
-            out.append('%s    <Property function="Input" name="Input"/>' % inner)
-            out.append('%s  </RequiredProperties>' % inner)
-            out.append('%s</BoundsDomain>' % inner)
-        elif prop.widget and prop.widget[0] == "slider":
-            kind = "DoubleRangeDomain" if prop.kind is float else "IntRangeDomain"
-            out.append('%s<%s name="range" min="%s" max="%s"/>' % (inner, kind, number(prop.widget[1]),
-                                                                     number(prop.widget[2])))
-        out.append("%s<Documentation>%s</Documentation>" % (inner, escape(table.describe(prop, label))))
-        out.append("%s</%s>" % (indent, element))
-    groups = []
-    for prop in table.PROPERTIES:
-        if not groups or groups[-1][0] != prop.group:
-            groups.append((prop.group, []))
-        groups[-1][1].append(prop.name)
-    for group, names in groups:
-        out.append("%s<PropertyGroup label=%s>" % (indent, quoteattr(group)))
-        out += ['%s  <Property name="%s"/>' % (indent, name) for name in names]
-        out.append("%s</PropertyGroup>" % indent)
-    return "\n".join(out)
-
-
-def xml(table, template):
-    with open(template, encoding="utf-8") as f:
-        text = f.read()
-    marker = re.search(r"^[ \t]*@NARROWVOLUME_PROPERTIES@[ \t]*\n", text, re.M)
-    if not marker:
-        sys.exit("generate-properties: no @NARROWVOLUME_PROPERTIES@ line in %s" % template)
-    head = "<!-- Generated from %s and Python/_properties.py by cmake/generate-properties.py. -->\n" % (
-        os.path.basename(template))
-    return head + text[:marker.start()] + xml_properties(table) + "\n" + text[marker.end():]
+# --- ParaView: the proxy (Python/_servermanager.py, which the Python plugin uses too).
+def xml(table):
+    servermanager = load_module("narrowvolume_servermanager", SERVERMANAGER)
+    head = "<!-- Generated from Python/_properties.py by cmake/generate-properties.py. -->\n"
+    return head + servermanager.proxy_xml(table)
 
 
 # --- Python: the stub of the wheel's filter, whose Set/Get methods _filter.py makes at import.
@@ -275,17 +227,17 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--table", default=TABLE, help="the property table (default: Python/_properties.py)")
     parser.add_argument("--header", metavar="OUT", help="write nvSettingsTable.h")
-    parser.add_argument("--xml", nargs=2, metavar=("TEMPLATE", "OUT"), help="write the ParaView proxy")
+    parser.add_argument("--xml", metavar="OUT", help="write the ParaView proxy")
     parser.add_argument("--markdown", metavar="OUT", help="write the parameter reference")
     parser.add_argument("--stub", metavar="OUT", help="write the type stub of the wheel's filter (_filter.pyi)")
     parser.add_argument("--readme", metavar="README", help="rewrite the README's table of the parameters")
     parser.add_argument("--check", action="store_true", help="with --readme: only check it, exit 1 if it differs")
     args = parser.parse_args()
-    table = load_table(args.table)
+    table = load_module("narrowvolume_properties", args.table)
     if args.header:
         write(args.header, header(table))
     if args.xml:
-        write(args.xml[1], xml(table, args.xml[0]))
+        write(args.xml, xml(table))
     if args.markdown:
         write(args.markdown, markdown(table))
     if args.stub:
