@@ -257,12 +257,32 @@ def _choice_type(prop):
     return parse, names
 
 
+PYTHON_PLUGIN = os.path.join(os.path.dirname(os.path.abspath(__file__)), "NarrowVolumePythonPlugin.py")
+
+
+class _PrintPythonPlugin(argparse.Action):
+    """--paraview-plugin: the absolute path of the ParaView Python plugin, and nothing else."""
+
+    def __init__(self, option_strings, dest, **kwargs):
+        super().__init__(option_strings, dest, nargs=0, default=argparse.SUPPRESS, **kwargs)
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        if not os.path.isfile(PYTHON_PLUGIN):
+            parser.exit(1, "narrowvolume: error: this package is the CMake build's (pvpython's), which has no "
+                           "Python plugin: load its compiled plugin, NarrowVolume%s, in ParaView\n" % (
+                               ".dll" if os.name == "nt" else ".so"))
+        print(PYTHON_PLUGIN)
+        parser.exit(0)
+
+
 def make_parser(defaults: Dict[str, Any]) -> argparse.ArgumentParser:
     """The command line's parser; `defaults`: the filter's {property: default}."""
     parser = argparse.ArgumentParser(
         prog="narrowvolume", description=__doc__.split("\n")[0],
         epilog="Outputs by extension: .stl .ply .vtp (surface), .vti (volume). Clouds: %s." % " ".join(
             sorted(set(READERS) | set(TEXT))))
+    parser.add_argument("--paraview-plugin", action=_PrintPythonPlugin,
+                        help="print the path of the ParaView Python plugin (load it in ParaView) and exit")
     parser.add_argument("cloud", help="the point cloud file")
     parser.add_argument("-o", "--output", action="append", default=[], metavar="FILE",
                         help="a file to write (repeat for several); default: CLOUD's name with _shell.stl")

@@ -366,10 +366,12 @@ def _polydata(points, normals, triangles):
     """The core's surface arrays as a vtkPolyData, without copies: double
     world coordinates, float "Normals", triangles in 64-bit cells.
 
-    The cells are vtkTypeInt64Array, the cell array's own storage type: VTK
-    9.3 takes a vtkIdTypeArray by a shallow copy into a new array, which
-    drops the Python array that keeps the numpy memory alive (the cells then
-    point to freed memory), while its own type is kept as it is."""
+    The cells are vtkTypeInt64Array, the cell array's own storage type, and
+    the numpy memory is tied to the arrays the cell array holds afterwards:
+    VTK 9.3 takes a vtkIdTypeArray by a shallow copy into a new array, and
+    VTK 9.2 (ParaView 5.11's) any array, which would drop the Python array
+    that keeps the numpy memory alive (the cells would then point to freed
+    memory)."""
     surface = vtkPolyData()
     if len(triangles) == 0:
         return surface
@@ -378,9 +380,12 @@ def _polydata(points, normals, triangles):
     surface.SetPoints(world)
     surface.GetPointData().SetNormals(_vtk_array(vtkFloatArray, "Normals", normals))
     offsets = np.arange(0, 3 * len(triangles) + 1, 3, dtype=np.int64)
+    connectivity = triangles.reshape(-1)
     polys = vtkCellArray()
     polys.SetData(_vtk_array(vtkTypeInt64Array, "Offsets", offsets),
-                  _vtk_array(vtkTypeInt64Array, "Connectivity", triangles.reshape(-1)))
+                  _vtk_array(vtkTypeInt64Array, "Connectivity", connectivity))
+    polys.GetOffsetsArray()._numpy_reference = offsets
+    polys.GetConnectivityArray()._numpy_reference = connectivity
     surface.SetPolys(polys)
     return surface
 

@@ -47,6 +47,7 @@ def pytest_addoption(parser):
     group.addoption("--readme", help="the README whose snippets run (default: the source tree's)")
     group.addoption("--with-xvfb", help="scripts/with-xvfb.sh (default: the source tree's)")
     group.addoption("--source-dir", help="the source tree (default: the one holding this file)")
+    group.addoption("--wheel-dir", help="where PipWheel put the wheel (test_python_plugin.py)")
     group.addoption("--spacing", type=float, action="append",
                     help="test_table1.py: a sample spacing h, repeatable (default: 0.01 and 0.005)")
     group.addoption("--steps", type=int, default=10, help="test_preserve_offset_scans.py: the steps (default 10)")
@@ -77,6 +78,11 @@ def plugin_path(request):
 @pytest.fixture(scope="session")
 def plugins_xml(request):
     return _required(request, "plugins_xml", "PATH/narrowvolume.plugins.xml")
+
+
+@pytest.fixture(scope="session")
+def wheel_dir(request):
+    return _required(request, "wheel_dir", "the folder of the wheel PipWheel builds")
 
 
 @pytest.fixture(scope="session")

@@ -1,0 +1,165 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+# SPDX-License-Identifier: BSD-3-Clause
+"""The ParaView Python plugin of the pip package (NarrowVolumePythonPlugin.py)
+against the compiled plugin, in pvpython and in pvbatch under MPI.
+
+The wheel that PipWheel built is installed as the README says for a
+ParaView: `python3.X -m pip install --no-deps --target FOLDER` (the wheel's
+file in place of the package's name), with the Python ParaView runs. Then
+python_plugin_script.py records, in a pvpython of its own for each plugin,
+what a user meets: the proxy and its properties (labels, defaults, domains,
+groups, advanced flags, documentation), the outputs on a scan with the
+defaults, progress, an abort and a bad input's error. Both records must be
+the same, the outputs bit for bit.
+"""
+import glob
+import json
+import os
+import shutil
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+SCRIPT = os.path.join(HERE, "python_plugin_script.py")
+
+
+@pytest.fixture(scope="module")
+def work(tmp_path_factory):
+    return tmp_path_factory.mktemp("python-plugin")
+
+
+@pytest.fixture(scope="module")
+def python_plugin(wheel_dir, work):
+    """The Python plugin of the wheel, installed for this ParaView's Python."""
+    wheels = sorted(glob.glob(os.path.join(wheel_dir, "narrowvolume-*-cp%d%d-*.whl" % sys.version_info[:2])))
+    assert wheels, "no wheel for Python %d.%d in %s: PipWheel builds it" % (sys.version_info[:2] + (wheel_dir,))
+    python = shutil.which("python%d.%d" % sys.version_info[:2])
+    assert python, "no python%d.%d beside this ParaView" % sys.version_info[:2]
+    target = os.path.join(work, "paraview-packages")
+    subprocess.run([python, "-m", "pip", "install", "--no-deps", "--no-index", "--target", target, wheels[-1]],
+                   check=True)
+    plugin = os.path.join(target, "narrowvolume", "NarrowVolumePythonPlugin.py")
+    assert os.path.isfile(plugin)
+    return plugin
+
+
+@pytest.fixture(scope="module")
+def cloud(scans_dir, trefoil, work):
+    """A scan (the decimated armadillo) as a .vtp file; the trefoil without ../shared."""
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPolyDataWriter
+    import nvclouds
+    if os.path.isfile(os.path.join(scans_dir, "armadillo_decimated.ply")):
+        data = nvclouds.scan("armadillo_decimated", scans_dir)
+    else:
+        reader = vtkXMLPolyDataReader()
+        reader.SetFileName(trefoil)
+        reader.Update()
+        data = reader.GetOutput()
+    path = os.path.join(work, "cloud.vtp")
+    writer = vtkXMLPolyDataWriter()
+    writer.SetFileName(path)
+    writer.SetDataModeToBinary()  # not Appended: Debian 12's VTK 9.2 reads that back empty
+    writer.SetInputData(data)
+    assert writer.Write()
+    return path
+
+
+def record(command, out, env=None):
+    completed = subprocess.run(command, capture_output=True, text=True, env=env, timeout=600)
+    print(completed.stdout[-2000:], completed.stderr[-4000:])
+    assert completed.returncode == 0, "%s failed" % " ".join(command)
+    arrays = np.load(out + ".npz")
+    if not os.path.exists(out + ".json"):
+        return None, arrays
+    with open(out + ".json") as f:
+        return json.load(f), arrays
+
+
+def pvpython():
+    return [sys.executable] if "pvpython" in os.path.basename(sys.executable) else [shutil.which("pvpython")]
+
+
+@pytest.fixture(scope="module")
+def records(python_plugin, plugin_path, cloud, work):
+    """(compiled plugin's record, Python plugin's record), each (json, arrays)."""
+    out = {}
+    for mode, plugin in (("compiled", plugin_path), ("python", python_plugin)):
+        base = os.path.join(work, mode)
+        out[mode] = record(pvpython() + ["--force-offscreen-rendering", SCRIPT, mode, plugin, cloud, base], base)
+    return out["compiled"], out["python"]
+
+
+def test_paraview_plugin_option(python_plugin):
+    """`narrowvolume --paraview-plugin` prints the plugin's absolute path and nothing else."""
+    env = dict(os.environ, PYTHONPATH=os.path.dirname(os.path.dirname(python_plugin)))
+    completed = subprocess.run(pvpython() + ["-m", "narrowvolume", "--paraview-plugin"], capture_output=True,
+                               text=True, env=env, timeout=120)
+    assert completed.returncode == 0, completed.stderr
+    assert completed.stdout == os.path.abspath(python_plugin) + "\n"
+
+
+def test_same_proxy(records):
+    """The same proxy: name, label, group, menu, the outputs Volume and Surface, the property groups."""
+    (compiled, _), (python, _) = records
+    assert python["proxy"] == compiled["proxy"]
+    assert python["proxy"]["outputs"] == ["Volume", "Surface"]
+    assert ["ShowInMenu", "Point Interpolation", None] in python["proxy"]["hints"]
+
+
+def test_same_properties(records):
+    """The same properties with the same labels, defaults, domains, advanced flags and documentation."""
+    (compiled, _), (python, _) = records
+    assert sorted(python["properties"]) == sorted(compiled["properties"])
+    for name, described in compiled["properties"].items():
+        assert python["properties"][name] == described, name
+
+
+def test_outputs_bit_identical(records):
+    """With the defaults, phi to the bit and the same triangles (points, connectivity)."""
+    (compiled, c), (python, p) = records
+    assert c["phi"].size > 0 and len(c["triangles"]) > 0
+    for name in ("dimensions", "phi", "points", "triangles"):
+        assert np.array_equal(p[name], c[name]), name
+    assert python["field_data"] == compiled["field_data"]
+
+
+def test_progress_abort_and_errors(records):
+    """Progress from 0 to 1 in many steps, never back; an abort empties the
+    outputs and the next run is whole; a NaN point gives the filter's error."""
+    (compiled, _), (python, _) = records
+    progress = python["progress"]
+    assert len(progress) >= 10 and progress[-1] == 1.0
+    assert all(b >= a for a, b in zip(progress, progress[1:]))
+    assert python["abort"]["volume points"] == 0 and python["abort"]["surface points"] == 0
+    assert python["abort"]["after"] > 0 and python["abort"] == compiled["abort"]
+    errors = python["bad input"]["errors"]
+    assert len(errors) == 1 and "non-finite coordinate" in errors[0]
+    assert errors[0] in compiled["bad input"]["errors"][0]
+    assert python["bad input"]["surface points"] == 0
+
+
+@pytest.mark.mpi
+def test_mpi_same_as_one_rank(python_plugin, cloud, work, records):
+    """Under mpiexec -n 2 pvbatch --symmetric: the pieces hold the one-rank
+    result bit for bit; a source that gives each rank its own share is refused
+    with the error that names the compiled plugin."""
+    mpiexec, pvbatch = shutil.which("mpiexec"), shutil.which("pvbatch")
+    if not mpiexec or not pvbatch:
+        pytest.skip("no mpiexec or pvbatch")
+    base = os.path.join(work, "mpi")
+    command = [mpiexec, "-n", "2"]
+    if os.geteuid() == 0:
+        command += ["--allow-run-as-root", "--oversubscribe"]
+    # pvpython may itself be an MPI singleton: its Open MPI variables must not reach mpiexec.
+    env = {k: v for k, v in os.environ.items() if not k.startswith(("OMPI_", "PMIX_", "OPAL_", "PMI_"))}
+    _, arrays = record(command + [pvbatch, "--symmetric", SCRIPT, "python", python_plugin, cloud, base, "mpi"], base,
+                       env)
+    _, one_rank = records[1]
+    for name in ("dimensions", "phi", "points", "triangles"):
+        assert np.array_equal(arrays[name], one_rank[name]), name
+    assert arrays["shares_surface_points"][0] == 0 and arrays["shares_errors"][0] >= 1
+    with open(base + ".txt") as f:
+        assert "compiled plugin" in f.read()
