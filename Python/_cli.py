@@ -257,7 +257,7 @@ def _choice_type(prop):
     return parse, names
 
 
-PYTHON_PLUGIN = os.path.join(os.path.dirname(os.path.abspath(__file__)), "NarrowVolumePythonPlugin.py")
+PYTHON_PLUGIN = os.path.join(os.path.dirname(os.path.abspath(__file__)), "plugin", "NarrowVolumePythonPlugin.py")
 
 
 class _PrintPythonPlugin(argparse.Action):

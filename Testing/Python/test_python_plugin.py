@@ -41,7 +41,7 @@ def python_plugin(wheel_dir, work):
     target = os.path.join(work, "paraview-packages")
     subprocess.run([python, "-m", "pip", "install", "--no-deps", "--no-index", "--target", target, wheels[-1]],
                    check=True)
-    plugin = os.path.join(target, "narrowvolume", "NarrowVolumePythonPlugin.py")
+    plugin = os.path.join(target, "narrowvolume", "plugin", "NarrowVolumePythonPlugin.py")
     assert os.path.isfile(plugin)
     return plugin
 
@@ -94,7 +94,7 @@ def records(python_plugin, plugin_path, cloud, work):
 
 def test_paraview_plugin_option(python_plugin):
     """`narrowvolume --paraview-plugin` prints the plugin's absolute path and nothing else."""
-    env = dict(os.environ, PYTHONPATH=os.path.dirname(os.path.dirname(python_plugin)))
+    env = dict(os.environ, PYTHONPATH=os.path.dirname(os.path.dirname(os.path.dirname(python_plugin))))
     completed = subprocess.run(pvpython() + ["-m", "narrowvolume", "--paraview-plugin"], capture_output=True,
                                text=True, env=env, timeout=120)
     assert completed.returncode == 0, completed.stderr

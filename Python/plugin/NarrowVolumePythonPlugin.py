@@ -5,27 +5,30 @@ already have (paraview.org's binaries, other distributions' builds).
 
 Load this file: Tools > Manage Plugins > Load New in the GUI,
 LoadPlugin("<this file>") in pvpython or pvbatch, or its folder in
-PV_PLUGIN_PATH. It gives the filter Narrow Volume Reconstruction (Filters >
+PV_PLUGIN_PATH (ParaView 5.12 and later, or with a Python before 3.11). It gives the filter Narrow Volume Reconstruction (Filters >
 Point Interpolation), the proxy of the compiled plugin with the same
 properties, run by the numerical core of the pip package this file belongs
 to. `narrowvolume --paraview-plugin` prints its path.
 
 The file makes its package importable itself (no PYTHONPATH to set): the
-package is the folder this file is in, installed for ParaView's Python (see
-the README, "ParaView from paraview.org").
+package is the folder above this file's, installed for ParaView's Python
+(see the README, "ParaView from paraview.org").
 
 ParaView 5.11 built with Python 3.11 (Debian 12's) cannot load any Python
 plugin: its loader imports inspect.getargspec, which Python 3.11 removed,
-before it reads the plugin. There, run this file as a script instead,
-`paraview --script=<this file>` or `pvpython <this file>` (or exec() it in
-a script): it mends that, then loads itself as the plugin.
+before it reads the plugin. There, run
+`import inspect; inspect.getargspec = inspect.getfullargspec` first (the
+GUI's Python Shell, a script's first line), or run this file as a script,
+`pvpython <this file>`: it mends that, then loads itself as the plugin.
 """
 import os
 import sys
 
 paraview_plugin_name = "NarrowVolumePython"
 
-_PACKAGE_PARENT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+# This file is narrowvolume/plugin/NarrowVolumePythonPlugin.py: alone in its
+# folder, so that PV_PLUGIN_PATH can name that folder.
+_PACKAGE_PARENT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
 
 def _mend_getargspec():
@@ -38,7 +41,7 @@ def _mend_getargspec():
 
 
 if __name__ == "__main__":
-    # Run as a script (paraview --script=..., pvpython this file): load this
+    # Run as a script (pvpython this file): load this
     # file as the plugin, after the mending it may need.
     _mend_getargspec()
     from paraview.simple import LoadPlugin
