@@ -59,7 +59,7 @@ def wheels(cache, requirements):
     downloaded only when something is missing."""
     os.makedirs(cache, exist_ok=True)
     pip = [sys.executable, "-m", "pip", "--disable-pip-version-check"]
-    for requirement in requirements:
+    for requirement in requirements or [""]:  # none: the build's tools alone
         wanted = COMMON + requirement.split()
         check = subprocess.run(pip + ["download", "-q", "-d", cache] + offline(cache) + wanted,
                                capture_output=True, text=True)
