@@ -8,7 +8,8 @@ LoadPlugin("<this file>") in pvpython or pvbatch, or its folder in
 PV_PLUGIN_PATH (ParaView 5.12 and later, or with a Python before 3.11). It gives the filter Narrow Volume Reconstruction (Filters >
 Point Interpolation), the proxy of the compiled plugin with the same
 properties, run by the numerical core of the pip package this file belongs
-to. `narrowvolume --paraview-plugin` prints its path.
+to, and the readers of the clouds ParaView lacks (LAS, LAZ, E57, PCD, .xyz
+text: _readers.py), under the compiled plugin's names. `narrowvolume --paraview-plugin` prints its path.
 
 The file makes its package importable itself (no PYTHONPATH to set): the
 package is the folder above this file's, installed for ParaView's Python
@@ -51,3 +52,5 @@ else:
         sys.path.insert(0, _PACKAGE_PARENT)
     from narrowvolume import __version__ as paraview_plugin_version  # noqa: F401 (the plugin manager shows it)
     from narrowvolume._paraview import NarrowVolumeReconstruction  # noqa: F401 (ParaView reads its proxy)
+    from narrowvolume._readers import (E57PointCloudReader, LASPointCloudReader, LAZPointCloudReader,  # noqa: F401
+                                       PCDPointCloudReader, PointCloudTextReader)

@@ -34,8 +34,9 @@ from vtkmodules.util.vtkConstants import VTK_STRING  # noqa: E402
 from vtkmodules.vtkParallelCore import vtkMultiProcessController  # noqa: E402
 
 pvs.LoadPlugin(plugin)
-reader = pvs.XMLPolyDataReader(FileName=[cloud])
-shell = pvs.NarrowVolumeReconstruction(Input=reader)
+if not cloud.endswith(".json"):
+    reader = pvs.XMLPolyDataReader(FileName=[cloud])
+    shell = pvs.NarrowVolumeReconstruction(Input=reader)
 
 
 def outputs(proxy):
@@ -51,7 +52,36 @@ def outputs(proxy):
     return arrays
 
 
-if distributed:
+if mode == "python" and cloud.endswith(".json"):
+    # The readers: each file of the list opened as File > Open does, by its extension.
+    with open(cloud) as f:
+        files = json.load(f)
+    opened = {}
+    # The plugin's readers and the extensions their ReaderFactory hints give
+    # File > Open (some of ParaView's own readers crash when probed with a LAS
+    # file's bytes, so the file picks its reader by its extension only).
+    proxies = servermanager.vtkSMProxyManager.GetProxyManager().GetActiveSessionProxyManager()
+    extensions = {}
+    for name in ("PointCloudTextReader", "PCDPointCloudReader", "LASPointCloudReader", "LAZPointCloudReader",
+                 "E57PointCloudReader"):
+        hints = proxies.GetPrototypeProxy("sources", name).GetHints()
+        factory = hints.FindNestedElementByName("ReaderFactory") if hints else None
+        for extension in (factory.GetAttribute("extensions") or "").split() if factory else ():
+            extensions[extension] = name
+    for path in files:
+        name = extensions.get(path.rsplit(".", 1)[-1])
+        reader = getattr(pvs, name)(FileName=path) if name else None
+        data = servermanager.Fetch(reader) if reader is not None else None
+        opened[path] = None if data is None else {
+            "reader": reader.SMProxy.GetXMLName(), "points": data.GetNumberOfPoints(),
+            "vertices": data.GetNumberOfVerts(),
+            "xyz": vtk_to_numpy(data.GetPoints().GetData()).tolist() if data.GetNumberOfPoints() else [],
+            "arrays": sorted(data.GetPointData().GetArrayName(i)
+                             for i in range(data.GetPointData().GetNumberOfArrays()))}
+    with open(out + ".json", "w") as f:
+        json.dump(opened, f)
+    print("python_plugin_script: %d files opened" % len(opened))
+elif distributed:
     # Run with `pvbatch --symmetric` (every rank runs this script, and so
     # mends ParaView 5.11's loader where it needs it). The cloud as a reader
     # gives it: each rank asks for the whole of it.
@@ -186,5 +216,5 @@ def record_all():
     print("python_plugin_script: %s plugin recorded into %s" % (mode, out))
 
 
-if not distributed:
+if not distributed and not cloud.endswith(".json"):
     record_all()

@@ -142,6 +142,70 @@ def test_progress_abort_and_errors(records):
 
 
 @pytest.mark.mpi
+def test_readers_open_each_format(python_plugin, work):
+    """The Python plugin's readers, as File > Open picks them by extension:
+    .xyz text, PCD (ascii, binary, binary_compressed), and LAS, LAZ and E57
+    where laspy and pye57 import (InstallScanModules installs them): the
+    points, one vertex each, PCD's colours as "Colors"."""
+    import nvpointfiles
+    rng = np.random.default_rng(11)
+    xyz = rng.random((50, 3)) * [3.0, 2.0, 1.0]
+    files = {}
+    text = os.path.join(work, "cloud.xyz")
+    np.savetxt(text, xyz, fmt="%.17g", header="x y z")
+    files[text] = xyz
+    rgb = (rng.integers(0, 256, (50, 3)) * [65536, 256, 1]).sum(axis=1).astype(np.uint32).view(np.float32)
+    fields = [("x", "F", 4, 1), ("y", "F", 4, 1), ("z", "F", 4, 1), ("rgb", "F", 4, 1), ("_", "U", 1, 4)]
+    for data in ("ascii", "binary", "binary_compressed"):
+        path = os.path.join(work, "cloud_%s.pcd" % data)
+        nvpointfiles.write_pcd(path, fields, {"x": xyz[:, 0], "y": xyz[:, 1], "z": xyz[:, 2], "rgb": rgb}, data)
+        files[path] = xyz.astype(np.float32).astype(np.float64)
+    expected = {p: dict(v, reader="PointCloudTextReader" if p.endswith(".xyz") else "PCDPointCloudReader")
+                for p, v in ((p, {"xyz": x}) for p, x in files.items())}
+    try:
+        import laspy  # in pvpython's Python: InstallScanModules's HOME
+        import pye57
+        las = os.path.join(work, "cloud.las")
+        nvpointfiles.write_las(las, 4, 1, xyz)
+        expected[las] = {"xyz": None, "reader": "LASPointCloudReader"}
+        header = laspy.LasHeader(point_format=1, version="1.2")
+        header.scales, header.offsets = [1e-4] * 3, [0.0] * 3
+        compressed = laspy.LasData(header)
+        compressed.x, compressed.y, compressed.z = xyz.T
+        laz = os.path.join(work, "cloud.laz")
+        compressed.write(laz)
+        expected[laz] = {"xyz": None, "reader": "LAZPointCloudReader"}
+        e57_path = os.path.join(work, "cloud.e57")
+        e57 = pye57.E57(e57_path, mode="w")
+        e57.write_scan_raw({"cartesianX": xyz[:, 0], "cartesianY": xyz[:, 1], "cartesianZ": xyz[:, 2]})
+        e57.close()
+        expected[e57_path] = {"xyz": None, "reader": "E57PointCloudReader"}
+    except ImportError as error:
+        print("laspy or pye57 does not import here (%s): LAS, LAZ and E57 are not tried" % error)
+    listing = os.path.join(work, "files.json")
+    with open(listing, "w") as f:
+        json.dump(sorted(expected), f)
+    base = os.path.join(work, "readers")
+    completed = subprocess.run(pvpython() + ["--force-offscreen-rendering", SCRIPT, "python", python_plugin, listing,
+                                             base], capture_output=True, text=True, timeout=600)
+    print(completed.stdout[-3000:], completed.stderr[-3000:])
+    assert completed.returncode == 0
+    with open(base + ".json") as f:
+        opened = json.load(f)
+    for path, wanted in expected.items():
+        got = opened[path]
+        assert got is not None, path
+        assert got["reader"] == wanted["reader"], path
+        assert got["vertices"] == got["points"] == 50, path
+        if wanted["xyz"] is not None:
+            assert np.array_equal(np.array(got["xyz"]), wanted["xyz"]), path
+        if path.endswith(".pcd"):
+            assert got["arrays"] == ["Colors"], path
+        if path.endswith((".las", ".laz", ".e57")):  # stored in 1e-3, 1e-4 and single precision
+            assert np.abs(np.array(got["xyz"]) - xyz).max() <= 0.0005 + 1e-12, path
+
+
+@pytest.mark.mpi
 def test_mpi_same_as_one_rank(python_plugin, cloud, work, records):
     """Under mpiexec -n 2 pvbatch --symmetric: the pieces hold the one-rank
     result bit for bit; a source that gives each rank its own share is refused
