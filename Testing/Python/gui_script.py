@@ -1,7 +1,8 @@
 # SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
 # SPDX-License-Identifier: BSD-3-Clause
 """Runs inside the real ParaView client (paraview --script=gui_script.py):
-loads the plugin, opens a point cloud, applies the filter with the panel's
+loads the plugin (NV_PLUGIN: the compiled one, or the Python plugin's file
+with NV_MEND_GETARGSPEC=1), opens a point cloud, applies the filter with the panel's
 defaults, shows both outputs beside the points, saves a screenshot, applies
 ParaView's Slice, Clip, Threshold, Contour, Resample To Image and Plot Over
 Line to the Volume output, writes what it saw to NV_GUI_RESULT (JSON) and
@@ -12,6 +13,12 @@ import traceback
 
 result = {"ok": False}
 try:
+    if os.environ.get("NV_MEND_GETARGSPEC") == "1":
+        # The Python plugin in ParaView 5.11 with Python 3.11, as the README
+        # says: the line a user runs in the Python Shell before loading it.
+        import inspect
+        if not hasattr(inspect, "getargspec"):
+            inspect.getargspec = inspect.getfullargspec
     from paraview.simple import (GetActiveViewOrCreate, LoadPlugin, OpenDataFile, OutputPort, Render,
                                  ResetCamera, SaveScreenshot, Show)
     import paraview.simple as pvs

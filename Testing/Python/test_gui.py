@@ -55,9 +55,16 @@ print("ok")
 @pytest.fixture(scope="module")
 def gui(plugin_path, trefoil, with_xvfb):
     """The client's run of gui_script.py: what it saw (its JSON), and the screenshot's path."""
+    return run_gui(plugin_path, trefoil, with_xvfb)
+
+
+def run_gui(plugin_path, trefoil, with_xvfb, **environment):
+    """Runs gui_script.py in the real client with the plugin (the compiled
+    one, or the Python plugin's file; `environment`: more variables for the
+    script): (what it saw, the screenshot's path)."""
     folder = nvtesting.scratch_folder(prefix="nv-gui-")
     env = dict(os.environ, NV_PLUGIN=plugin_path, NV_CLOUD=trefoil, NV_SCREENSHOT=os.path.join(folder, "gui.png"),
-               NV_GUI_RESULT=os.path.join(folder, "result.json"), NV_FORCE_XVFB="1")
+               NV_GUI_RESULT=os.path.join(folder, "result.json"), NV_FORCE_XVFB="1", **environment)
     script = os.path.join(os.path.dirname(os.path.abspath(__file__)), "gui_script.py")
     probe = os.path.join(folder, "probe_lod.py")
     with open(probe, "w") as f:

@@ -205,6 +205,24 @@ def test_readers_open_each_format(python_plugin, work):
             assert np.abs(np.array(got["xyz"]) - xyz).max() <= 0.0005 + 1e-12, path
 
 
+@pytest.mark.gui
+def test_gui(python_plugin, trefoil, with_xvfb):
+    """The real client under Xvfb with the Python plugin, as gui_script.py
+    drives the compiled one (test_gui.py): the panel's defaults give the
+    shell, both outputs show beside the points, and ParaView's filters run on
+    the Volume output."""
+    import test_gui
+    result, screenshot = test_gui.run_gui(python_plugin, trefoil, with_xvfb, NV_MEND_GETARGSPEC="1")
+    assert result.get("ok"), "script ran through: %s" % result.get("error")
+    assert result.get("label") == "Narrow Volume Reconstruction"
+    assert result.get("offset_default") == 0.0 and result.get("offset_used", 0.0) > 0.0
+    assert result.get("surface_cells", 0) > 10000 and result.get("volume_points", 0) > 100000
+    assert result.get("cloud_visible") and result.get("cloud_pixels", 0) > 500
+    for name in test_gui.DOWNSTREAM:
+        assert result["downstream_" + name]["points"] > 0, name
+    assert os.path.getsize(screenshot) > 0
+
+
 @pytest.mark.mpi
 def test_mpi_same_as_one_rank(python_plugin, cloud, work, records):
     """Under mpiexec -n 2 pvbatch --symmetric: the pieces hold the one-rank
