@@ -51,13 +51,14 @@ done
 # double-conversion in 5.13; ParaView 6.1's is on the external VTK, whose CMake
 # files and headers are in libvtk9-dev, and it builds the plugin's help with
 # xsltproc and Qt 6's help tools (5.13 skips that step with Qt 6). The tests
-# want numpy, scipy (the scans test of PreserveOffset), pip (laspy, lazrs,
-# pye57 for the LAZ and E57 readers), liblzf (PCD's binary_compressed files),
+# want numpy, scipy (the scans test of PreserveOffset), pip and venv (the
+# wheel that PythonPlugin installs; laspy, lazrs, pye57 for the LAZ and E57
+# readers), liblzf (PCD's binary_compressed files),
 # pytest (the Python API's tests), Open MPI's mpiexec, Xvfb and git. The pip
 # wheel's tests against vtk from PyPI are left to the main suite (they do not
 # depend on the release): NARROWVOLUME_TEST_PIP=OFF; the wheel is still built
 # for the release's ParaView and its Python plugin tested (PythonPlugin).
-common_packages=(ca-certificates cmake ninja-build g++ python3-dev python3-numpy python3-scipy python3-pip python3-pytest liblzf1 libopenmpi-dev openmpi-bin xvfb git)
+common_packages=(ca-certificates cmake ninja-build g++ python3-dev python3-numpy python3-scipy python3-pip python3-venv python3-pytest liblzf1 libopenmpi-dev openmpi-bin xvfb git)
 packages_trixie=(paraview-dev python3-paraview libdouble-conversion-dev "${common_packages[@]}")
 packages_sid=(paraview-dev python3-paraview libvtk9-dev xsltproc qt6-tools-dev "${common_packages[@]}")
 
