@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import re
 import signal
 import sys
 import threading
@@ -30,7 +31,7 @@ import numpy as np
 from . import _properties
 
 if TYPE_CHECKING:
-    from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPointSet, vtkPolyData
+    from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPointSet, vtkPolyData  # noqa: F401
 
 # Readers by extension: (module of vtkmodules, class).
 READERS = {
@@ -275,6 +276,36 @@ class _PrintPythonPlugin(argparse.Action):
         parser.exit(0)
 
 
+def default_text(prop: Any, value: Any) -> str:
+    """A default as the option takes it: an enumerated one by its name."""
+    for _, suffix, number, _ in prop.choices:
+        if number == value:
+            return _properties.snake_case(suffix).replace("_", "-")
+    return str(value)
+
+
+def in_option_words(text: str) -> str:
+    """A message of the filter with the properties' names as the command
+    line's options (OffsetDistance -> --offset-distance)."""
+    for prop in _properties.PROPERTIES:
+        text = re.sub(r"(?<![\w-])%s(?!\w)" % prop.name, _properties.option(prop.name), text)
+    return text
+
+
+def chosen(volume: vtkImageData) -> str:
+    """What the run chose: the offset, the spacing and their ratio, the grid, the band."""
+    field = volume.GetFieldData()
+
+    def value(name):
+        array = field.GetArray(name)
+        return array.GetValue(0) if array is not None and array.GetNumberOfTuples() else 0
+
+    offset, spacing = value("OffsetDistance"), value("SampleSpacing")
+    return "offset distance %.6g, spacing %.6g (offset / spacing %.2f), grid %d x %d x %d, %d band nodes" % (
+        (offset, spacing, offset / spacing if spacing else 0.0) + tuple(volume.GetDimensions())
+        + (int(value("NarrowBandNodes")),))
+
+
 def make_parser(defaults: Dict[str, Any]) -> argparse.ArgumentParser:
     """The command line's parser; `defaults`: the filter's {property: default}."""
     parser = argparse.ArgumentParser(
@@ -283,14 +314,16 @@ def make_parser(defaults: Dict[str, Any]) -> argparse.ArgumentParser:
             sorted(set(READERS) | set(TEXT))))
     parser.add_argument("--paraview-plugin", action=_PrintPythonPlugin,
                         help="print the path of the ParaView Python plugin (load it in ParaView) and exit")
+    from ._version import __version__
+    parser.add_argument("--version", action="version", version="narrowvolume %s" % __version__)
     parser.add_argument("cloud", help="the point cloud file")
     parser.add_argument("-o", "--output", action="append", default=[], metavar="FILE",
                         help="a file to write (repeat for several); default: CLOUD's name with _shell.stl")
     parser.add_argument("-q", "--quiet", action="store_true", help="no progress bar and no summary")
     group = parser.add_argument_group("the filter's properties (vtkNarrowVolumeReconstruction)")
     for prop in _properties.PROPERTIES:
-        default = defaults[prop.name]
-        help_text = "%s (default: %s)" % (_properties.describe(prop, _properties.option).replace("%", "%%"), default)
+        help_text = "%s (default: %s)" % (_properties.describe(prop, _properties.option).replace("%", "%%"),
+                                          default_text(prop, defaults[prop.name]))
         if prop.kind is bool:
             group.add_argument(_option(prop), dest=prop.name, action=argparse.BooleanOptionalAction,
                                default=None, help=help_text)
@@ -337,13 +370,19 @@ def main(argv: Optional[List[str]] = None) -> int:
             finally:
                 progress.done()
         for warning in caught:
-            print("narrowvolume: warning: %s" % warning.message, file=sys.stderr)
+            print("narrowvolume: warning: %s" % in_option_words(str(warning.message)), file=sys.stderr)
+        if not args.quiet:
+            print("narrowvolume: %s" % chosen(volume), file=_stdout(), flush=True)
+        empty = [p for p in outputs if WRITERS[os.path.splitext(p)[1].lower()][2] == "surface"
+                 and surface.GetNumberOfPolys() == 0]
+        if empty:
+            raise Failure("the surface is empty (see the warning above); nothing written to %s" % ", ".join(empty))
         written = []
         for path in outputs:
             started.append(path)
             written.append((path, write(path, volume, surface)))
     except (Failure, narrowvolume.ReconstructionError) as failure:
-        print("narrowvolume: error: %s" % failure, file=sys.stderr)
+        print("narrowvolume: error: %s" % in_option_words(str(failure)), file=sys.stderr)
         return 1
     except KeyboardInterrupt:
         # Python sees Ctrl-C when a writer returns: no output of an interrupted command stays.

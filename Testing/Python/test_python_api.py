@@ -565,12 +565,48 @@ def test_cli_options_and_defaults():
     """--help names every property, with the filter's default."""
     result = cli("--help")
     assert result.returncode == 0, nvtesting.explain(result)
-    text = " ".join(result.stdout.split())
+    text = " ".join(result.stdout.split()).replace("- ", "-")  # argparse may wrap a line after a hyphen
     defaults = _properties.defaults_of(narrowvolume.vtkNarrowVolumeReconstruction())
     for prop in _properties.PROPERTIES:
         option = "--" + _properties.snake_case(prop.name).replace("_", "-")
         assert option in text
-        assert "(default: %s)" % defaults[prop.name] in text, prop.name
+        default = defaults[prop.name]
+        names = {value: _properties.snake_case(suffix).replace("_", "-") for _, suffix, value, _ in prop.choices}
+        assert "(default: %s)" % names.get(default, default) in text, prop.name  # an enumeration's by name
+    assert "(default: both)" in text and "(default: narrow-band)" in text and "(default: equation4)" in text
+
+
+def test_cli_version():
+    """--version prints the package's version and nothing else."""
+    result = cli("--version")
+    assert result.returncode == 0 and result.stdout == "narrowvolume %s\n" % narrowvolume.__version__
+
+
+def test_cli_prints_what_it_chose(tmp_path):
+    """The command line says the offset, spacing, their ratio, the grid and the band it used."""
+    result = cli(TREFOIL, "--maximum-dimension", 60, "-o", tmp_path / "a.vtp")
+    assert result.returncode == 0, nvtesting.explain(result)
+    volume, _ = narrowvolume.reconstruct(_read(TREFOIL), MaximumDimension=60)
+    field = volume.GetFieldData()
+    offset, spacing = field.GetArray("OffsetDistance").GetValue(0), field.GetArray("SampleSpacing").GetValue(0)
+    line = "offset distance %.6g, spacing %.6g (offset / spacing %.2f), grid %d x %d x %d, %d band nodes" % (
+        (offset, spacing, offset / spacing) + volume.GetDimensions()
+        + (field.GetArray("NarrowBandNodes").GetValue(0),))
+    assert "narrowvolume: " + line in result.stdout, result.stdout
+
+
+def test_cli_empty_result(tmp_path):
+    """No surface (the inner sheet of an open, one-sided cloud): exit 1, the
+    reason, the options' names in the warning, and no file written."""
+    rng = np.random.default_rng(4)
+    disc = rng.random((3000, 2)) * 2.0 - 1.0
+    disc = disc[(disc ** 2).sum(axis=1) < 1.0]
+    cloud = tmp_path / "disc.xyz"
+    np.savetxt(str(cloud), np.c_[disc, np.zeros(len(disc))], fmt="%.9g")
+    result = cli(cloud, "--sheets", "inner", "-o", tmp_path / "inner.stl", "-o", tmp_path / "phi.vti")
+    assert result.returncode == 1, nvtesting.explain(result)
+    assert "the surface is empty" in result.stderr and "no inner sheet" in result.stderr.lower(), result.stderr
+    assert not (tmp_path / "inner.stl").exists() and not (tmp_path / "phi.vti").exists()
 
 
 def test_cli_bad_input(tmp_path):
@@ -578,7 +614,7 @@ def test_cli_bad_input(tmp_path):
     missing = cli(tmp_path / "none.ply", "-o", tmp_path / "a.stl")
     assert missing.returncode == 1 and "no such file" in missing.stderr
     refused = cli(TREFOIL, "--offset-distance", -1, "-o", tmp_path / "a.stl")
-    assert refused.returncode == 1 and "OffsetDistance must be" in refused.stderr, refused.stderr
+    assert refused.returncode == 1 and "--offset-distance must be" in refused.stderr, refused.stderr  # its words
     assert not (tmp_path / "a.stl").exists()
     (tmp_path / "bad.xyz").write_text("1 2 3\n4 5 six\n")
     malformed = cli(tmp_path / "bad.xyz", "-o", tmp_path / "a.stl")
