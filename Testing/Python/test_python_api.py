@@ -576,6 +576,24 @@ def test_cli_options_and_defaults():
     assert "(default: both)" in text and "(default: narrow-band)" in text and "(default: equation4)" in text
 
 
+def test_coarse_grid_warns():
+    """An explicit offset that the grid's cap (320 cells) leaves under 3
+    cells warns, with what to set; at 4 cells (the automatic ratio) not."""
+    cloud = _read(TREFOIL)
+    bounds = cloud.GetBounds()
+    extent = max(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4])
+    for factor, coarse in ((2.5, True), (5.0, False)):
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always", narrowvolume.ReconstructionWarning)
+            volume, _ = narrowvolume.reconstruct(cloud, OffsetDistance=factor * extent / 320)
+        field = volume.GetFieldData()
+        ratio = field.GetArray("OffsetDistance").GetValue(0) / field.GetArray("SampleSpacing").GetValue(0)
+        texts = [str(w.message) for w in caught if "grid is coarse" in str(w.message)]
+        assert (ratio < 3.0) == coarse and bool(texts) == coarse, (factor, ratio, texts)
+        if coarse:
+            assert "Set SampleSpacing to" in texts[0] and "MaximumDimension" in texts[0], texts[0]
+
+
 def test_cli_version():
     """--version prints the package's version and nothing else."""
     result = cli("--version")

@@ -7,7 +7,9 @@
 #include "nvSurface.h"
 #include "nvSurfaceField.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <sstream>
 
 namespace nv
@@ -87,6 +89,25 @@ std::string GapWarning(const GapReport& gaps, double offset, double closingRadiu
          << "points, or set OffsetDistance to at least " << gaps.LargestGap << ".";
   }
   text << " Field data NumberOfGaps, LargestGap and LargestGapCenter hold these figures.";
+  return text.str();
+}
+
+/// The least offset / spacing ratio that keeps the shell whole: the
+/// initial profile and the band span 2 XiCells = 4 cells (eq. 2, 5), which
+/// the wall of 2 l must hold with room to spare.
+constexpr double LeastCellsPerOffset = 3.0;
+
+std::string CoarseGridWarning(const Reconstruction& run)
+{
+  const double offset = run.GetParameters().OffsetDistance;
+  const Grid& grid = run.GetGrid();
+  const double longest = (std::max({ grid.Dims[0], grid.Dims[1], grid.Dims[2] }) - 1) * grid.Spacing;
+  std::ostringstream text;
+  text << "The grid is coarse for the offset distance: offset / spacing is " << offset / grid.Spacing
+       << " (" << offset << " / " << grid.Spacing << "), below " << LeastCellsPerOffset
+       << ", and the shell may break into pieces. Set SampleSpacing to " << offset / LeastCellsPerOffset
+       << " or less (MaximumDimension " << static_cast<long long>(std::ceil(longest * LeastCellsPerOffset / offset))
+       << "), memory permitting, or raise OffsetDistance.";
   return text.str();
 }
 
@@ -235,6 +256,10 @@ Outcome Reconstruct(Reconstruction& run, std::vector<double> xyz, std::shared_pt
   if (run.FirstProcess())
   {
     const double offset = run.GetParameters().OffsetDistance;
+    if (offset < LeastCellsPerOffset * run.GetGrid().Spacing)
+    {
+      outcome.Warnings.push_back(CoarseGridWarning(run));
+    }
     if (run.GetGaps().Gaps > 0)
     {
       outcome.Warnings.push_back(GapWarning(run.GetGaps(), offset, run.GetPlan().ClosingRadius));

@@ -14,8 +14,9 @@
 //      of the dense phi that KeepSheets rewrote (nvSheets.h);
 //   4. its small pieces removed, and phi flipped in the same regions
 //      (RemoveSmallPieces, nvPieces.h);
-//   5. the warnings (holes left open, an empty surface, no inner sheet) and
-//      the run's figures for the volume's field data.
+//   5. the warnings (a grid too coarse for the offset, holes left open, an
+//      empty surface, no inner sheet) and the run's figures for the
+//      volume's field data.
 #ifndef nvOutputs_h
 #define nvOutputs_h
 
