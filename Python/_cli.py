@@ -139,17 +139,24 @@ def _read_text_lines(text, path):
     return np.array(rows, dtype=np.float64).reshape(-1, 3)
 
 
-def _read_text(path):
-    """x y z of a plain-text cloud: the first three columns (spaces, tabs or
-    commas), header lines and # or // comments skipped. The CMake build's
-    package reads these files with vtkPointCloudTextReader instead."""
+def read_text_points(path):
+    """x y z of a plain-text cloud, an (n, 3) array: the first three columns
+    (spaces, tabs or commas), header lines and # or // comments skipped.
+    Failure names the line that is not a point."""
     with open(path, "r", errors="replace") as file:
         text = file.read()
     xyz = _read_text_columns(text)
     if xyz is None:
         xyz = _read_text_lines(text, path)
+    return np.ascontiguousarray(xyz)
+
+
+def _read_text(path):
+    """A plain-text cloud's points as a vtkPolyData (read_text_points). The
+    CMake build's package reads these files with vtkPointCloudTextReader
+    instead."""
     from ._reconstruct import point_cloud
-    return point_cloud(np.ascontiguousarray(xyz))
+    return point_cloud(read_text_points(path))
 
 
 def read_cloud(path: str) -> vtkPointSet:

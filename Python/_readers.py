@@ -150,16 +150,11 @@ def read_pcd(filename):
 
 def read_text(filename):
     """A .xyz / .txt / .csv text cloud, as the command line reads it."""
-    from ._cli import Failure, _read_text_columns, _read_text_lines
-    with open(filename, "r", errors="replace") as file:
-        text = file.read()
-    xyz = _read_text_columns(text)
-    if xyz is None:
-        try:
-            xyz = _read_text_lines(text, filename)
-        except Failure as error:
-            raise PCDError(str(error))
-    return point_cloud(xyz, {})
+    from ._cli import Failure, read_text_points
+    try:
+        return point_cloud(read_text_points(filename), {})
+    except Failure as error:
+        raise PCDError(str(error))
 
 
 @smproxy.reader(name="PointCloudTextReader", label="Point Cloud Text Reader",

@@ -37,10 +37,10 @@ def load_module(name, path):
     return module
 
 
-def number(value):
-    """A number as C++, XML and Markdown all read it: 0 rather than 0.0, 1e-06 as is."""
-    text = repr(value)
-    return text[:-2] if text.endswith(".0") else text
+# The proxy's module (it imports nothing of the package either), and its way
+# of writing numbers, which the reference and the README's table share.
+SERVERMANAGER_MODULE = load_module("narrowvolume_servermanager", SERVERMANAGER)
+number = SERVERMANAGER_MODULE.number
 
 
 def write(path, text):
@@ -89,9 +89,8 @@ def header(table):
 
 # --- ParaView: the proxy (Python/_servermanager.py, which the Python plugin uses too).
 def xml(table):
-    servermanager = load_module("narrowvolume_servermanager", SERVERMANAGER)
     head = "<!-- Generated from Python/_properties.py by cmake/generate-properties.py. -->\n"
-    return head + servermanager.proxy_xml(table)
+    return head + SERVERMANAGER_MODULE.proxy_xml(table)
 
 
 # --- Python: the stub of the wheel's filter, whose Set/Get methods _filter.py makes at import.
