@@ -76,6 +76,24 @@ def cloud_source(xyz):
     return producer(data)
 
 
+def holey_sphere(offset, holes=(1.5, 2.5, 3.5), seed=27):
+    """Points on a sphere of radius 0.5, 0.6 `offset` apart, slightly
+    jittered, with empty caps of the radii `holes` (in units of `offset`)
+    around directions below the equator (azimuths 90, 210 and 330 degrees)."""
+    import math
+
+    rng = np.random.default_rng(seed)
+    xyz = nvclouds.sphere_points(int(4 * math.pi * 0.25 / (0.6 * offset) ** 2), 0.5)
+    xyz += rng.normal(scale=0.06 * offset, size=xyz.shape)
+    xyz = 0.5 * xyz / np.linalg.norm(xyz, axis=1)[:, None]
+    for azimuth, radius in zip((90.0, 210.0, 330.0), holes):
+        a = math.radians(azimuth)
+        direction = np.array([math.cos(a), math.sin(a), -0.9])
+        direction /= np.linalg.norm(direction)
+        xyz = xyz[np.linalg.norm(xyz - 0.5 * direction, axis=1) > radius * offset]
+    return xyz
+
+
 def scan_points(name):
     """The (n, 3) points of a scan of ../shared/data/scans, or None (with a message) when it is missing."""
     try:
