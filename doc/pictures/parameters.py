@@ -74,15 +74,16 @@ def offset_distance():
 def close_gaps():
     strip = nv.Strip()
     offset = 0.04
-    xyz = nv.holey_sphere(offset)
+    xyz = nv.holey_sphere(offset, holes=(1.5, 2.0, 2.5))
     for value in (0, 1):
         shell = nv.reconstruct(source("holey", xyz), OffsetDistance=offset, SampleSpacing=offset / 4, CloseGaps=value)
         shell.UpdatePipeline()
         gaps = int(nv.field_value(shell, "NumberOfGaps") or 0)
-        panel(strip, "%s: %d holes open" % ("off" if not value else "on (default)", gaps), shell,
+        panel(strip, "%s: %d hole%s open" % ("off" if not value else "on (default)", gaps, "" if gaps == 1 else "s"),
+              shell,
               points=xyz, slab=0.5 * offset, center=[0, 0, -0.1], direction=[0.0, -0.45, 1.0], zoom=1.45)
     strip.save("parameters/CloseGaps.png",
-               title="Close Gaps: holes in the sampling (radius 1.5 l to 3.5 l)\nbridged, or piercing the wall")
+               title="Close Gaps: holes in the sampling (radius 1.5 l to 2.5 l)\nbridged, or piercing the wall")
 
 
 def iterations():
