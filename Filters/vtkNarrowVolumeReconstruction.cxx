@@ -29,7 +29,9 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <cctype>
 #include <chrono>
+#include <cstring>
 #include <memory>
 
 vtkStandardNewMacro(vtkNarrowVolumeReconstruction);
@@ -363,11 +365,11 @@ int vtkNarrowVolumeReconstruction::RequestData(
   this->KeepResults(&run, outcome);
   if (!outcome.Error.empty())
   {
-    vtkErrorMacro(<< outcome.Error);
+    vtkErrorMacro(<< this->InWordsOfReader(outcome.Error));
   }
   for (const std::string& warning : outcome.Warnings)
   {
-    vtkWarningMacro(<< warning);
+    vtkWarningMacro(<< this->InWordsOfReader(warning));
   }
   if (!outcome.Done)
   {
@@ -378,6 +380,39 @@ int vtkNarrowVolumeReconstruction::RequestData(
   this->AddRunSummary(volume, outcome.Summary);
   this->UpdateProgress(1.0);
   return 1;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkNarrowVolumeReconstruction::InWordsOfReader(std::string message) const
+{
+  if (!this->PanelLabelsInMessages)
+  {
+    return message;
+  }
+  // The core names the properties (OffsetDistance); the panel's reader knows
+  // their labels (Offset Distance). Whole words only.
+  static const std::pair<const char*, const char*> labels[] = {
+#define NV_LABEL(Name, Label) { #Name, Label },
+    NV_PANEL_LABELS(NV_LABEL)
+#undef NV_LABEL
+  };
+  const auto inWord = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  for (const auto& label : labels)
+  {
+    const std::string name = label.first;
+    for (std::size_t at = message.find(name); at != std::string::npos; at = message.find(name, at))
+    {
+      const std::size_t end = at + name.size();
+      if ((at > 0 && inWord(message[at - 1])) || (end < message.size() && inWord(message[end])))
+      {
+        at = end;
+        continue;
+      }
+      message.replace(at, name.size(), label.second);
+      at += std::strlen(label.second);
+    }
+  }
+  return message;
 }
 
 //------------------------------------------------------------------------------

@@ -65,6 +65,7 @@
 
 #include <cstdint> // for the counts
 #include <memory> // for the cached sampling
+#include <string> // for the messages
 #include <vector> // for the per-step history
 
 namespace nv
@@ -350,6 +351,17 @@ public:
 
   ///@{
   /**
+   * Whether the warnings and errors name the properties by the labels of
+   * ParaView's panel ("Offset Distance") instead of their names
+   * (OffsetDistance, the default). The ParaView plugins turn it on; it is
+   * not a setting of the method.
+   */
+  vtkSetMacro(PanelLabelsInMessages, bool);
+  vtkGetMacro(PanelLabelsInMessages, bool);
+  ///@}
+
+  ///@{
+  /**
    * Results of the last run: time steps taken, band nodes and all grid nodes
    * (over all processes in a distributed run), the offset l and spacing h
    * used (the automatic ones, or those set), the grid's nodes along x, y, z,
@@ -412,6 +424,8 @@ protected:
   nv::Settings GetSettings() const;
   /// The results of the last run (run null: none yet), for the Get...() methods.
   void KeepResults(const nv::Reconstruction* run, const nv::Outcome& outcome);
+  /// A message of the core with the properties named as PanelLabelsInMessages says.
+  std::string InWordsOfReader(std::string message) const;
   /// Output 0 of a finished run: the grid's piece and the dense arrays.
   struct DenseArrays;
   void MakeVolume(
@@ -457,6 +471,7 @@ protected:
   double SampleSpacingUsed = 0.0;
   double ClosingRadiusUsed = 0.0;
   int GridDimensionsUsed[3] = { 0, 0, 0 };
+  bool PanelLabelsInMessages = false;
   std::shared_ptr<const nv::Sampling> Sampled; ///< of the input at SampledTime
   vtkMTimeType SampledTime = 0;
   vtkIdType SampledPoints = -1;

@@ -14,6 +14,7 @@ Not in this flavour: SetController (distributed runs under MPI need the
 VTK-wrapped filter of the CMake build).
 """
 import operator
+import re
 import time
 
 import numpy as np
@@ -76,6 +77,7 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
         self._settings = _core.Settings()
         self._sampled = None  # (points' identity, modification time, count, the core's Sampling)
         self._sampling_unreported = 0.0  # seconds of a measurement no run has reported yet
+        self._panel_labels = False  # SetPanelLabelsInMessages
         self._clear_results()
 
     def _clear_results(self):
@@ -162,7 +164,21 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
         return self._times[2]
 
     # --- Messages, as vtkErrorMacro and vtkWarningMacro give them.
+    def SetPanelLabelsInMessages(self, on):
+        """Whether the warnings and errors name the properties by the labels of
+        ParaView's panel ("Offset Distance") instead of their names
+        (OffsetDistance, the default). The ParaView plugins turn it on; it is
+        not a setting of the method."""
+        self._panel_labels = bool(on)
+
+    def GetPanelLabelsInMessages(self):
+        """See SetPanelLabelsInMessages."""
+        return self._panel_labels
+
     def _message(self, event, text):
+        if self.GetPanelLabelsInMessages():
+            for prop in _properties.PROPERTIES:
+                text = re.sub(r"(?<!\w)%s(?!\w)" % prop.name, prop.label, text)
         if not vtkObject.GetGlobalWarningDisplay():
             return
         if self.HasObserver(event):

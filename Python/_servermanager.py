@@ -134,6 +134,13 @@ def proxy_xml(table: Any, python_class: Optional[str] = None) -> str:
     ]
     lines += property_elements(table)
     lines += [
+        '      <IntVectorProperty name="PanelLabelsInMessages" command="SetPanelLabelsInMessages" '
+        'number_of_elements="1" default_values="1" panel_visibility="never">',
+        '        <BooleanDomain name="bool"/>',
+        "        <Documentation>The filter's messages name the properties by these labels.</Documentation>",
+        "      </IntVectorProperty>",
+    ]
+    lines += [
         "      <Hints>",
         '        <ShowInMenu category="%s"/>' % MENU,
         '        <Visibility replace_input="0"/>',

@@ -16,6 +16,7 @@ Only the standard library: it runs in any Python 3 the build finds.
 """
 import argparse
 import importlib.util
+import json
 import os
 import re
 import sys
@@ -83,6 +84,13 @@ def header(table):
         "#define NV_SETTINGS(X) \\",
     ]
     rows = ["  X(%s, %s, %s)" % (cpp_type(p), p.name, cpp_default(p)) for p in table.PROPERTIES]
+    lines += [row + " \\" for row in rows[:-1]] + [rows[-1], ""]
+    lines += [
+        "// NV_PANEL_LABELS(X) calls X(Name, \"Label\") for each property: the VTK",
+        "// filter's messages name the properties by their panel labels in ParaView.",
+        "#define NV_PANEL_LABELS(X) \\",
+    ]
+    rows = ["  X(%s, %s)" % (p.name, json.dumps(p.label)) for p in table.PROPERTIES]
     lines += [row + " \\" for row in rows[:-1]] + [rows[-1], "", "#endif", ""]
     return "\n".join(lines)
 

@@ -13,7 +13,9 @@ the project's demo cloud Data/trefoil.vtp. Writes, in DIR (default out/):
   NAME.png          a picture: the shell cut open, with the input points
                   (skipped with a message when ParaView cannot render here:
                   no X display for an X-only build; use scripts/with-xvfb.sh)
-The plugin is found through PV_PLUGIN_PATH or --plugin PATH.
+The plugin: --plugin PATH, or found in PV_PLUGIN_PATH, this source tree's
+build (BUILD_DIR, default build/) or this ParaView's plugin folders; nothing
+to do where ParaView loads it already (Auto Load).
 
 The VTK XML files are written in Binary mode, not in ParaView's default
 Appended mode: with Debian 12's current libexpat, VTK 9.2's XML readers
@@ -30,20 +32,35 @@ import paraview.simple as pvs
 HERE = os.path.dirname(os.path.abspath(__file__))
 
 
-def find_plugin(explicit):
-    if explicit:
-        return explicit
-    candidates = []
-    for folder in os.environ.get("PV_PLUGIN_PATH", "").split(os.pathsep):
-        if folder:
-            candidates += [os.path.join(folder, "NarrowVolume.so"),
-                           os.path.join(folder, "NarrowVolume", "NarrowVolume.so")]
-    candidates.append(os.path.join(HERE, "..", "build", "lib", "paraview-5.11", "plugins",
-                                   "NarrowVolume", "NarrowVolume.so"))
-    for path in candidates:
-        if os.path.exists(path):
-            return path
-    sys.exit("NarrowVolume.so not found: build the project, set PV_PLUGIN_PATH or pass --plugin")
+def plugin_places():
+    """Where NarrowVolume.so may be (glob patterns), in the order tried: the
+    folders of PV_PLUGIN_PATH, this source tree's build (BUILD_DIR, default
+    build/, for any ParaView version), and this ParaView's plugin folders."""
+    places = []
+    for folder in [f for f in os.environ.get("PV_PLUGIN_PATH", "").split(os.pathsep) if f]:
+        places += [os.path.join(folder, "NarrowVolume.so"), os.path.join(folder, "NarrowVolume", "NarrowVolume.so")]
+    builds = [b for b in (os.environ.get("BUILD_DIR", ""), os.path.join(HERE, "..", "build")) if b]
+    prefixes = [os.path.dirname(os.path.dirname(os.path.realpath(sys.executable))), "/usr", "/usr/local"]
+    for root in builds + prefixes:
+        places += [os.path.join(root, "lib", "paraview-*", "plugins", "NarrowVolume", "NarrowVolume.so"),
+                   os.path.join(root, "lib*", "*", "paraview-*", "plugins", "NarrowVolume", "NarrowVolume.so")]
+    return list(dict.fromkeys(os.path.normpath(p) for p in places))
+
+
+def load_plugin(explicit):
+    """Loads the plugin (--plugin's path, else the first one found; none
+    when ParaView loaded it already: Auto Load, PV_PLUGIN_PATH)."""
+    import glob
+    if not explicit and hasattr(pvs, "NarrowVolumeReconstruction"):
+        return
+    found = [path for place in plugin_places() for path in sorted(glob.glob(place))]
+    path = explicit or (found[0] if found else None)
+    if path is None:
+        sys.exit("NarrowVolume.so not found. Build it (./scripts/build.sh in the source folder), then pass its path "
+                 "with --plugin PATH or put its folder in PV_PLUGIN_PATH. Looked in:\n  " +
+                 "\n  ".join(plugin_places()))
+    pvs.LoadPlugin(path)  # defines paraview.simple.NarrowVolumeReconstruction
+    report("plugin: %s" % path)
 
 
 def can_render():
@@ -94,7 +111,7 @@ def main():
     parser.add_argument("--up", choices="xyz", default="z", help="the model's up axis, for the picture (default z)")
     args = parser.parse_args()
 
-    pvs.LoadPlugin(find_plugin(args.plugin), ns=globals())
+    load_plugin(args.plugin)
     name = os.path.splitext(os.path.basename(args.cloud))[0]
     os.makedirs(args.out, exist_ok=True)
 
@@ -107,7 +124,7 @@ def main():
 
     # The filter's own defaults (the same in the GUI, pvpython and VTK); only
     # what was given on the command line is set.
-    shell = NarrowVolumeReconstruction(Input=reader)  # noqa: F821 (defined by LoadPlugin)
+    shell = pvs.NarrowVolumeReconstruction(Input=reader)
     shell.MaximumNumberOfIterations = args.iterations
     shell.OffsetDistance = args.offset
     shell.SampleSpacing = args.spacing

@@ -72,3 +72,19 @@ def test_without_a_display(script, plugin_path):
         os.path.exists(os.path.join(out, "trefoil_phi.vti")), "without a display: the data files are written"
     assert "no picture" in result.stdout or os.path.exists(os.path.join(out, "trefoil.png")), \
         "without a display: a picture (offscreen) or a message that says why not"
+
+
+def test_finds_the_plugin_itself(script, plugin_path):
+    """Run as the README gives it, without --plugin or PV_PLUGIN_PATH, from
+    another folder: it finds the build's plugin (BUILD_DIR, as
+    scripts/build.sh takes it, or build/ beside the source)."""
+    out = nvtesting.scratch_folder(prefix="nv-example-find-")
+    build = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(plugin_path)))))
+    env = {k: v for k, v in os.environ.items() if k != "PV_PLUGIN_PATH"}
+    env["BUILD_DIR"] = build
+    result = subprocess.run(["pvpython", script, "--max-dim", "40", "--no-picture", "--out", out], cwd=out, env=env,
+                            capture_output=True, text=True, timeout=600)
+    print(result.stdout)
+    assert result.returncode == 0, nvtesting.explain(result)
+    assert "plugin: %s" % os.path.normpath(plugin_path) in result.stdout, "found the build's plugin"
+    assert os.path.exists(os.path.join(out, "trefoil_shell.stl"))

@@ -156,10 +156,39 @@ def test_setter_marks_modified():
 
 @pytest.mark.skipif(WHEEL, reason="reads the C++ class itself (the wheel is compared with its record instead)")
 def test_table_covers_the_cpp_class():
-    """Every Set/Get pair of the C++ filter is a row of the table (but SetController)."""
+    """Every Set/Get pair of the C++ filter is a row of the table (but
+    SetController and SetPanelLabelsInMessages, which are not settings of
+    the method)."""
     api = set(nvflavours.public_api(narrowvolume.vtkNarrowVolumeReconstruction))
     pairs = {n[3:] for n in api if n.startswith("Set") and "Get" + n[3:] in api}
-    assert pairs - {"Controller"} == {p.name for p in _properties.PROPERTIES}
+    assert pairs - {"Controller", "PanelLabelsInMessages"} == {p.name for p in _properties.PROPERTIES}
+
+
+def test_messages_in_the_panels_words():
+    """With PanelLabelsInMessages (as the ParaView plugins set it) the
+    warnings name the panel's labels, otherwise the properties' names."""
+    cloud = _read(TREFOIL)
+    bounds = cloud.GetBounds()
+    extent = max(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4])
+    texts = {}
+    for labels in (False, True):
+        f = narrowvolume.vtkNarrowVolumeReconstruction()
+        f.SetInputData(cloud)
+        f.SetOffsetDistance(2.5 * extent / 320)  # a coarse grid: a warning naming SampleSpacing
+        f.SetPanelLabelsInMessages(labels)
+        assert f.GetPanelLabelsInMessages() is labels
+        caught = []
+
+        @calldata_type(VTK_STRING)
+        def on_warning(caller, event, text, caught=caught):
+            caught.append(text)
+        f.AddObserver("WarningEvent", on_warning)
+        f.Update()
+        texts[labels] = "\n".join(str(t) for t in caught)
+    print(texts[True])
+    assert "SampleSpacing" in texts[False] and "Sample Spacing" not in texts[False], texts[False]
+    assert "Sample Spacing" in texts[True] and "SampleSpacing" not in texts[True], texts[True]
+    assert "Offset Distance" in texts[True] and "Maximum Dimension" in texts[True], texts[True]
 
 
 @needs_reference

@@ -5,6 +5,8 @@ their precision, and many random small clouds and parameter sets keep the
 invariants: no NaN, phi in [-1, 1], a closed surface, the same phi on every run."""
 import numpy as np
 import pytest
+from vtkmodules.util.misc import calldata_type
+from vtkmodules.util.vtkConstants import VTK_STRING
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkFiltersCore import vtkFlyingEdges3D
 
@@ -143,3 +145,31 @@ def test_random_cloud_and_parameters(trial):
         "%s: contouring phi gives the surface's parts" % label
     again = phi_of(run(xyz, **dict(settings, NumberOfThreads=3 - settings["NumberOfThreads"])))
     assert np.array_equal(phi, again), "%s: same phi, other thread count" % label
+
+
+@pytest.mark.parametrize("shift, settings, expected", [
+    (1e17, {}, "its points merged"),  # the whole sphere rounds to one point
+    (3e15, {}, "cannot resolve the cloud"),  # a few points 0.5 apart
+    (1e13, {}, "cannot resolve the grid"),  # the cloud is resolved, a cell of its grid is not
+    (1e17, {"OffsetDistance": 0.1}, "cannot resolve the grid"),  # one point's ball, on a grid finer than 16
+], ids=["merged to one point", "merged to a few", "grid below precision", "explicit offset"])
+def test_coordinates_too_far_for_double_precision(shift, settings, expected):
+    """A unit sphere so far from the origin that doubles cannot resolve it
+    (or its grid): an error that says so and how to fix it, no output; not
+    a warning about gaps or an empty shell."""
+    errors = []
+
+    @calldata_type(VTK_STRING)
+    def on_error(caller, event, text):
+        errors.append(text)
+
+    f = vtkNarrowVolumeReconstruction()
+    f.SetInputData(nvclouds.cloud(nvclouds.sphere_points(3000, 1.0) + shift))
+    for key, value in settings.items():
+        getattr(f, "Set" + key)(value)
+    f.AddObserver("ErrorEvent", on_error)
+    f.AddObserver("WarningEvent", on_error)
+    f.Update()
+    print(errors)
+    assert len(errors) == 1 and expected in errors[0] and "near the origin" in errors[0], errors
+    assert f.GetOutput(1).GetNumberOfPoints() == 0, "no surface"

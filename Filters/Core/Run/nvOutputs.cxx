@@ -67,28 +67,27 @@ bool NoInnerSheet(const Settings& settings, std::int64_t cavities)
   return settings.Sheets == Sheets::Inner && cavities == 0;
 }
 
-// The warnings about the outputs.
-std::string GapWarning(const GapReport& gaps, double offset, double closingRadius)
+// The warnings about the outputs: one line of what happened, one of what to
+// change, with the properties' names (the VTK filter puts the panel's
+// labels in their place in ParaView, the command line its options). The
+// figures are in the Volume output's field data (RunSummary).
+std::string GapWarning(const GapReport& gaps, double closingRadius)
 {
   std::ostringstream text;
-  text << "The sampled surface has " << gaps.Gaps << (gaps.Gaps == 1 ? " gap" : " gaps")
-       << (closingRadius > 0.0 ? " left open" : "") << ": holes wider than the offset distance " << offset
-       << ", empty discs on the surface whose centre is farther than the offset from every point. The shell's wall "
-          "is pierced there, and its outer and inner sheets may join. The largest has radius "
-       << gaps.LargestGap << ", at (" << gaps.LargestGapCenter[0] << ", " << gaps.LargestGapCenter[1] << ", "
-       << gaps.LargestGapCenter[2] << "). ";
+  text << gaps.Gaps << (gaps.Gaps == 1 ? " gap" : " gaps") << " in the sampling "
+       << (gaps.Gaps == 1 ? "is" : "are") << " wider than "
+       << (closingRadius > 0.0 ? "ClosingRadius" : "the offset distance")
+       << ": the shell's wall is pierced there (the largest has radius " << gaps.LargestGap
+       << "; field data LargestGap, LargestGapCenter).\n";
   if (closingRadius > 0.0)
   {
-    text << "Gaps up to ClosingRadius (" << closingRadius << ") are bridged with points; to bridge these too "
-         << "(if they are gaps, not the surface's own openings), set ClosingRadius to at least " << gaps.LargestGap
-         << ", or OffsetDistance above it.";
+    text << "If they are gaps, not the surface's own openings, set ClosingRadius to " << gaps.LargestGap
+         << " or more, or OffsetDistance above it.";
   }
   else
   {
-    text << "Turn CloseGaps on to bridge gaps up to " << AutomaticClosingRadius << " times the offset with "
-         << "points, or set OffsetDistance to at least " << gaps.LargestGap << ".";
+    text << "Turn CloseGaps on, or set OffsetDistance to " << gaps.LargestGap << " or more.";
   }
-  text << " Field data NumberOfGaps, LargestGap and LargestGapCenter hold these figures.";
   return text.str();
 }
 
@@ -103,10 +102,10 @@ std::string CoarseGridWarning(const Reconstruction& run)
   const Grid& grid = run.GetGrid();
   const double longest = (std::max({ grid.Dims[0], grid.Dims[1], grid.Dims[2] }) - 1) * grid.Spacing;
   std::ostringstream text;
-  text << "The grid is coarse for the offset distance: offset / spacing is " << offset / grid.Spacing
-       << " (" << offset << " / " << grid.Spacing << "), below " << LeastCellsPerOffset
-       << ", and the shell may break into pieces. Set SampleSpacing to " << offset / LeastCellsPerOffset
-       << " or less (MaximumDimension " << static_cast<long long>(std::ceil(longest * LeastCellsPerOffset / offset))
+  text << "The grid is coarse for the offset distance (offset / spacing " << offset / grid.Spacing << ", below "
+       << LeastCellsPerOffset << "): the shell may break into pieces.\n"
+       << "Set SampleSpacing to " << offset / LeastCellsPerOffset << " or less (or MaximumDimension to "
+       << static_cast<long long>(std::ceil(longest * LeastCellsPerOffset / offset))
        << "), memory permitting, or raise OffsetDistance.";
   return text.str();
 }
@@ -114,27 +113,29 @@ std::string CoarseGridWarning(const Reconstruction& run)
 std::string EmptySurfaceWarning(double offset, double spacing)
 {
   std::ostringstream text;
-  text << "The surface is empty: the shell did not survive the evolution. The offset distance (" << offset
-       << ") is probably small against the gaps between points or the grid spacing (" << spacing
-       << "): increase OffsetDistance or XiCells, or refine the grid.";
+  text << "The surface is empty: the shell did not survive the evolution.\n"
+       << "Raise OffsetDistance (now " << offset << ") or XiCells, or refine the grid (SampleSpacing, now " << spacing
+       << ").";
   return text.str();
 }
 
 std::string NoInnerSheetWarning()
 {
-  return "There is no inner sheet: the shell encloses no cavity, so its two sheets join into one. The input's "
-         "surface is open (a one-sided scan, or holes wider than twice the offset distance); its shell has "
-         "only an outer sheet.";
+  return "There is no inner sheet: the shell encloses no cavity, as the surface is open (a one-sided scan, or "
+         "holes wider than twice the offset distance).\n"
+         "Keep both sheets or the outer one (Sheets), or close the holes (CloseGaps, ClosingRadius).";
 }
 
 std::string OneSheetNeedsGridWarning()
 {
-  return "Keeping one sheet needs the dense grid: memory follows the box although OutputVolume is off.";
+  return "Keeping one sheet needs the dense grid: memory follows the whole box although OutputVolume is off.\n"
+         "Keep both sheets (Sheets) where memory is short.";
 }
 
 std::string OneSheetDistributedWarning()
 {
-  return "Keeping one sheet needs the whole grid on one process: both sheets are output in a distributed run.";
+  return "A distributed run outputs both sheets: keeping one needs the whole grid on one process.\n"
+         "Run on one process to keep one sheet.";
 }
 
 /// The run's figures, as the field data of output 0.
@@ -262,7 +263,7 @@ Outcome Reconstruct(Reconstruction& run, std::vector<double> xyz, std::shared_pt
     }
     if (run.GetGaps().Gaps > 0)
     {
-      outcome.Warnings.push_back(GapWarning(run.GetGaps(), offset, run.GetPlan().ClosingRadius));
+      outcome.Warnings.push_back(GapWarning(run.GetGaps(), run.GetPlan().ClosingRadius));
     }
     if (surfacePoints == 0 && !explained)
     {

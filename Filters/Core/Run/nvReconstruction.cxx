@@ -317,7 +317,72 @@ bool Reconstruction::CheckPoints(const std::vector<double>& xyz, double bounds[6
     error << "remove such points before reconstructing.";
     return this->Fail(error.str());
   }
-  return true;
+  return this->CheckPrecision(bounds, static_cast<std::int64_t>(totals[0]));
+}
+
+namespace
+{
+/// How far apart two doubles near the cloud's largest coordinate can be at
+/// least: the precision of every coordinate and distance the run computes.
+double CoordinateStep(const double bounds[6])
+{
+  double farthest = 0.0;
+  for (int i = 0; i < 6; ++i)
+  {
+    farthest = std::max(farthest, std::abs(bounds[i]));
+  }
+  return std::nextafter(farthest, std::numeric_limits<double>::infinity()) - farthest;
+}
+
+/// A grid cell must span this many coordinate steps, so that rounding moves
+/// a distance by 1 % of a cell at most (PlanGrid); a cloud that spans fewer
+/// cannot have such a cell (CheckPrecision).
+constexpr double LeastCellSteps = 100.0;
+
+std::string FarFromOriginAdvice()
+{
+  return "Move the cloud near the origin (subtract its centre, e.g. with ParaView's Transform filter or "
+         "vtkTransformFilter) and move the results back.";
+}
+} // namespace
+
+bool Reconstruction::CheckPrecision(const double bounds[6], std::int64_t points)
+{
+  // Coordinates far from the origin that double precision cannot resolve
+  // (a cloud of a metre at 1e16 becomes a few points, or one).
+  const double step = CoordinateStep(bounds);
+  const double extent = std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
+  std::ostringstream error;
+  if (extent == 0.0)
+  {
+    // One point: with an offset set, its shell is a ball (PlanGrid checks
+    // that the grid is resolved there); the automatic offset needs two.
+    if (points < 2 || this->TheSettings.OffsetDistance > 0.0)
+    {
+      return true;
+    }
+    error << "An automatic OffsetDistance needs at least two distinct points, and all " << points
+          << " points coincide, at (" << bounds[0] << ", " << bounds[2] << ", " << bounds[4] << ").\n"
+          << "Set OffsetDistance for the ball around them";
+    if (step >= LeastCellSteps * std::numeric_limits<double>::min())
+    {
+      error << "; or, if the cloud is larger than " << step
+            << " (the step of double precision at its distance from the origin), its points merged: "
+            << "move it near the origin (subtract its centre) and move the results back";
+    }
+    error << ".";
+    return this->Fail(error.str());
+  }
+  if (extent >= LeastCellSteps * step)
+  {
+    return true;
+  }
+  error << "The coordinates cannot resolve the cloud: it spans " << extent << " at up to "
+        << std::max({ std::abs(bounds[0]), std::abs(bounds[1]), std::abs(bounds[2]), std::abs(bounds[3]),
+             std::abs(bounds[4]), std::abs(bounds[5]) })
+        << " from the origin, where double precision steps by " << step << ".\n"
+        << FarFromOriginAdvice();
+  return this->Fail(error.str());
 }
 
 bool Reconstruction::PlanGrid(
@@ -343,6 +408,16 @@ bool Reconstruction::PlanGrid(
   if (!this->ThePlan.Valid())
   {
     return this->Fail(this->ThePlan.Error);
+  }
+  const double step = CoordinateStep(bounds);
+  if (this->ThePlan.TheGrid.Spacing < LeastCellSteps * step)
+  {
+    std::ostringstream error;
+    error << "The coordinates cannot resolve the grid: its spacing " << this->ThePlan.TheGrid.Spacing
+          << " is below " << LeastCellSteps << " steps of double precision (" << step
+          << ") at the cloud's distance from the origin.\n"
+          << FarFromOriginAdvice();
+    return this->Fail(error.str());
   }
   return true;
 }

@@ -160,6 +160,8 @@ private:
   bool RunSteps(std::vector<double> xyz, std::shared_ptr<const Sampling> measured);
   // The steps of Run, in order (this file's header); each returns false when the run stops.
   bool CheckPoints(const std::vector<double>& xyz, double bounds[6]);
+  /// Whether double precision resolves the cloud at its distance from the origin.
+  bool CheckPrecision(const double bounds[6], std::int64_t points);
   bool PlanGrid(const std::vector<double>& xyz, const double bounds[6], std::shared_ptr<const Sampling> measured);
   bool GatherPoints(std::vector<double>& xyz);
   bool BuildBand(std::vector<double> xyz);
