@@ -132,3 +132,25 @@ def test_offset_default_and_slider(pvs, pts_reader):
     assert fresh.OffsetDistance == 0.0 and slider.GetMinimum(0) == 0.0 and abs(slider.GetMaximum(0) - 0.25) < 1e-3, \
         "offset default 0, slider [0, 0.25 x the largest side]: %g, [%g, %g]" % (
             fresh.OffsetDistance, slider.GetMinimum(0), slider.GetMaximum(0))
+
+
+def test_messages_name_the_panels_labels(pvs, sphere):
+    """In ParaView the filter's warnings name the panel's labels (the proxy
+    sets PanelLabelsInMessages), and the read-only values show what the run
+    chose."""
+    from vtkmodules.util.misc import calldata_type
+    from vtkmodules.util.vtkConstants import VTK_STRING
+    f = pvs.NarrowVolumeReconstruction(Input=sphere, OffsetDistance=0.01, MaximumDimension=40)  # a coarse grid
+    texts = []
+
+    @calldata_type(VTK_STRING)
+    def on_warning(caller, event, text):
+        texts.append(text)
+
+    observer = f.GetClientSideObject().AddObserver("WarningEvent", on_warning)
+    f.UpdatePipeline()
+    f.GetClientSideObject().RemoveObserver(observer)
+    print(texts, f.SampleSpacingUsed, f.GridDimensionsUsed)
+    assert any("Sample Spacing" in t and "Maximum Dimension" in t and "SampleSpacing" not in t for t in texts), texts
+    assert f.OffsetDistanceUsed == pytest.approx(0.01) and f.SampleSpacingUsed > 0.01 / 3  # coarse, as warned
+    assert max(f.GridDimensionsUsed) == 41
