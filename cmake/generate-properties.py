@@ -172,11 +172,38 @@ def code(name):
     return "`%s`" % name
 
 
-def markdown(table):
+def proxy_help():
+    """What ParaView's ? button shows above the properties: the proxy's documentation."""
+    return SERVERMANAGER_MODULE.LONG_HELP, SERVERMANAGER_MODULE.DOCUMENTATION
+
+
+def picture(prop, images_dir, images_url):
+    """The Markdown of the picture of what prop does, when images_dir holds <name>.png; else None."""
+    if not images_dir or not os.path.exists(os.path.join(images_dir, prop.name + ".png")):
+        return None
+    return "![%s: what it does](%s%s.png)" % (prop.label, images_url, prop.name)
+
+
+def markdown(table, images_dir=None, images_url=""):
+    """The parameter reference: the filter's help (the ? button's text), a
+    summary table, then each property: its facts, the picture of what it
+    does (a file <name>.png in images_dir, shown as images_url + <name>.png)
+    and its documentation, the very text of its tooltip in ParaView (with
+    the properties' names as `Name` where the tooltip has their labels)."""
+    long_help, documentation = proxy_help()
     out = ["# Parameters", "",
            "The properties of vtkNarrowVolumeReconstruction: the same names in C++, Python (`reconstruct()` "
            "also takes them in snake_case), pvpython and the command line (as `--offset-distance`); the "
-           "ParaView panel shows the labels. Made from the property table, `Python/_properties.py`.", ""]
+           "ParaView panel shows the labels. Made from the property table, `Python/_properties.py`, which "
+           "also makes the filter's help in ParaView (the panel's ? button and the tooltips): this page "
+           "and that help say the same.", "",
+           "## The filter", "", long_help, "", documentation, "",
+           "| property | panel label | default | panel |", "|---|---|---|---|"]
+    for prop in table.PROPERTIES:
+        out.append("| [`%s`](#%s) | %s | %s | %s |" % (prop.name, prop.name.lower(), prop.label,
+                                                      markdown_cell(default_text(prop)),
+                                                      "advanced" if prop.advanced else "shown"))
+    out.append("")
     group = None
     for prop in table.PROPERTIES:
         if prop.group != group:
@@ -189,8 +216,24 @@ def markdown(table):
         if range_text(prop):
             facts.append(range_text(prop))
         facts.append("command line `%s`" % table.option(prop.name))
-        out += ["; ".join(facts) + ".", "", table.describe(prop, code), ""]
+        out += ["; ".join(facts) + ".", ""]
+        image = picture(prop, images_dir, images_url)
+        if image:
+            out += [image, ""]
+        out += [table.describe(prop, code), ""]
     return "\n".join(out)
+
+
+def reference_docs(page):
+    """{property name: its documentation} as a reference page made by
+    markdown() writes it: the last paragraph of each property's section."""
+    docs = {}
+    for section in re.split(r"^### ", page, flags=re.M)[1:]:
+        name, body = section.split("\n", 1)
+        body = re.split(r"^#", body, flags=re.M)[0]
+        paragraphs = [p.strip() for p in body.strip().split("\n\n") if p.strip()]
+        docs[name.strip()] = paragraphs[-1]
+    return docs
 
 
 def readme_table(table):
