@@ -186,7 +186,9 @@ def fixtures(require_scans, scans_dir, source_dir, plugin_path):
     with open(os.path.join(bin_dir, "narrowvolume"), "w") as script:
         script.write('#!/bin/sh\nexec pvpython -m narrowvolume "$@"\n')
     os.chmod(os.path.join(bin_dir, "narrowvolume"), 0o755)
-    env = dict(os.environ)
+    # pvpython may itself be an MPI singleton: its Open MPI variables must not
+    # leak into an mpiexec a block starts (as in test_mpi.py).
+    env = {k: v for k, v in os.environ.items() if not k.startswith(("OMPI_", "PMIX_", "OPAL_", "PMI_"))}
     env.pop("DISPLAY", None)
     env["PATH"] = bin_dir + os.pathsep + env["PATH"]
     env["PYTHONUNBUFFERED"] = "1"
