@@ -4,13 +4,13 @@
 """Makes the files that follow the property table (Python/_properties.py).
 
 CMake runs it when it configures (CMakeLists.txt); by hand it rewrites or
-checks the README's table of the parameters:
+checks the summary table of the parameters (in doc/how-to/choose-parameters.md):
 
     generate-properties.py --header nvSettingsTable.h     the core's settings
     generate-properties.py --xml OUT                      the ParaView proxy
     generate-properties.py --markdown OUT                 the parameter reference
     generate-properties.py --stub OUT                     the wheel's filter's type stub
-    generate-properties.py --readme README.md [--check]   the README's table
+    generate-properties.py --readme FILE.md [--check]     the summary table between FILE's markers
 
 Only the standard library: it runs in any Python 3 the build finds.
 """
@@ -38,7 +38,7 @@ def load_module(name, path):
 
 
 # The proxy's module (it imports nothing of the package either), and its way
-# of writing numbers, which the reference and the README's table share.
+# of writing numbers, which the reference and the summary table share.
 SERVERMANAGER_MODULE = load_module("narrowvolume_servermanager", SERVERMANAGER)
 number = SERVERMANAGER_MODULE.number
 
@@ -141,7 +141,7 @@ def stub(table):
     return "\n".join(out)
 
 
-# --- Markdown: the reference, and the README's table.
+# --- Markdown: the reference (the site's parameters page), and the summary table.
 def markdown_cell(text):
     return text.replace("|", "\\|")
 
@@ -256,10 +256,10 @@ def readme(table, path, check):
     new = text[:begin] + readme_table(table) + text[end + len(README_END):]
     if check:
         if new != text:
-            print("FAILED: the README's table of the parameters differs from the property table; rewrite it "
-                  "with\n    python3 cmake/generate-properties.py --readme README.md")
+            print("FAILED: the table of the parameters in %s differs from the property table; rewrite it "
+                  "with\n    python3 cmake/generate-properties.py --readme %s" % (path, path))
             return 1
-        print("generate-properties: the README's table is the property table's (%d rows)" % len(table.PROPERTIES))
+        print("generate-properties: the table in %s is the property table's (%d rows)" % (path, len(table.PROPERTIES)))
         return 0
     write(path, new)
     return 0
@@ -272,7 +272,7 @@ def main():
     parser.add_argument("--xml", metavar="OUT", help="write the ParaView proxy")
     parser.add_argument("--markdown", metavar="OUT", help="write the parameter reference")
     parser.add_argument("--stub", metavar="OUT", help="write the type stub of the wheel's filter (_filter.pyi)")
-    parser.add_argument("--readme", metavar="README", help="rewrite the README's table of the parameters")
+    parser.add_argument("--readme", metavar="README", help="rewrite the table of the parameters between the markers of a Markdown file")
     parser.add_argument("--check", action="store_true", help="with --readme: only check it, exit 1 if it differs")
     args = parser.parse_args()
     table = load_module("narrowvolume_properties", args.table)
