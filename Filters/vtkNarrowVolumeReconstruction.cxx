@@ -392,6 +392,10 @@ void vtkNarrowVolumeReconstruction::KeepResults(const nv::Reconstruction* run, c
   this->OffsetDistanceUsed = ran ? run->GetParameters().OffsetDistance : 0.0;
   this->SampleSpacingUsed = ran ? run->GetGrid().Spacing : 0.0;
   this->ClosingRadiusUsed = ran ? run->GetPlan().ClosingRadius : 0.0;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    this->GridDimensionsUsed[axis] = ran ? static_cast<int>(run->GetGrid().Dims[axis]) : 0;
+  }
   this->SetupTime = ran ? run->SetupSeconds() : 0.0;
   this->EvolutionTime = ran ? run->EvolutionSeconds() : 0.0;
   this->OutputTime = ran ? outcome.OutputSeconds : 0.0;

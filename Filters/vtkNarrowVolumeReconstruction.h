@@ -353,7 +353,7 @@ public:
   /**
    * Results of the last run: time steps taken, band nodes and all grid nodes
    * (over all processes in a distributed run), the offset l and spacing h
-   * used (the automatic ones, or those set),
+   * used (the automatic ones, or those set), the grid's nodes along x, y, z,
    * the relative change of each step, and wall-clock seconds of the set-up
    * (distance and band), the evolution and the output (volume and surface)
    * on this process. SamplingTime: seconds spent measuring the points'
@@ -368,6 +368,7 @@ public:
   vtkGetMacro(OffsetDistanceUsed, double);
   vtkGetMacro(SampleSpacingUsed, double);
   vtkGetMacro(ClosingRadiusUsed, double);
+  vtkGetVector3Macro(GridDimensionsUsed, int);
   vtkGetMacro(SamplingTime, double);
   vtkGetMacro(SetupTime, double);
   vtkGetMacro(EvolutionTime, double);
@@ -456,6 +457,7 @@ protected:
   double OffsetDistanceUsed = 0.0;
   double SampleSpacingUsed = 0.0;
   double ClosingRadiusUsed = 0.0;
+  int GridDimensionsUsed[3] = { 0, 0, 0 };
   std::shared_ptr<const nv::Sampling> Sampled; ///< of the input at SampledTime
   vtkMTimeType SampledTime = 0;
   vtkIdType SampledPoints = -1;

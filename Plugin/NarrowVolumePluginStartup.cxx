@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "NarrowVolumePluginStartup.h"
 
+#include "NarrowVolumeClientBehaviors.h"
+
 #include "vtkNew.h"
 #include "vtkPVPluginLoader.h"
 #include "vtkPVVersion.h"
@@ -79,8 +81,9 @@ void NarrowVolumePluginStartup()
     return;
   }
   started = true;
+  StartClientBehaviors();
 
-  const std::string readers = PluginFolder() + "/NarrowVolumeScanReaders.py";
+  const std::string readers = PluginFolder() + "/python/NarrowVolumeScanReaders.py";
   if (vtksys::SystemTools::FileExists(readers, true))
   {
 #ifdef NARROWVOLUME_GETARGSPEC_SHIM

@@ -4,7 +4,7 @@
 laspy with its lazrs backend, and E57 (terrestrial scanners) through pye57.
 
 The NarrowVolume plugin loads this file when ParaView loads the plugin (it
-sits beside NarrowVolume.so); it also loads on its own with
+sits in python/ below NarrowVolume.so); it also loads on its own with
 LoadPlugin(".../NarrowVolumeScanReaders.py"). laspy and pye57 are imported
 only when a file is read: without them the readers are still listed, and
 reading a file ends in an error that gives the pip command installing them

@@ -83,6 +83,7 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
         self._grid_nodes = 0
         self._changes = ()
         self._used = (0.0, 0.0, 0.0)
+        self._dimensions = (0, 0, 0)
         self._times = (0.0, 0.0, 0.0)
         self._sampling_time = 0.0
 
@@ -136,6 +137,10 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
     def GetClosingRadiusUsed(self):
         """The closing radius of the last run (0 with CloseGaps off)."""
         return self._used[2]
+
+    def GetGridDimensionsUsed(self):
+        """The grid's nodes along x, y and z in the last run."""
+        return self._dimensions
 
     def GetSamplingTime(self):
         """Wall-clock seconds spent measuring the points' spacing (nearest
@@ -310,6 +315,7 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
             self._band_nodes = run.NumberOfBandNodes()
             self._changes = tuple(run.RelativeChanges())
             self._used = (run.GetParameters().OffsetDistance, run.GetGrid().Spacing, run.GetPlan().ClosingRadius)
+            self._dimensions = tuple(int(n) for n in run.GetGrid().Dims)
             self._times = (run.SetupSeconds(), run.EvolutionSeconds(), outcome.OutputSeconds)
         if outcome.Error:
             self._error(outcome.Error)

@@ -156,11 +156,12 @@ PROPERTIES = (
         None,
         "Tolerance of the Gauss-Seidel iteration of the implicit step (10): its red-black sweeps stop when no "
         "node changes by this much or more. Default 1e-6 (the paper's)."),
+    # --- Threads and memory
     Property(
-        "NumberOfThreads", "Number Of Threads", int, 0, 0, 1024, (), None, "Solver", True, None,
+        "NumberOfThreads", "Number Of Threads", int, 0, 0, 1024, (), None, "Threads and Memory", True, None,
         "Threads for the parallel loops; 0 (the default) uses all cores. phi is the same for any number."),
     Property(
-        "MemoryLimit", "Memory Limit", float, 0.0, 0.0, 1e12, (), None, "Solver", True, None,
+        "MemoryLimit", "Memory Limit", float, 0.0, 0.0, 1e12, (), None, "Threads and Memory", True, None,
         "Largest memory one run may allocate, in MiB; a grid that needs more is refused with a message before "
         "any large allocation. 0 (the default): half of the machine's physical memory."),
     # --- Output
@@ -198,6 +199,37 @@ PROPERTIES = (
 
 BY_NAME = {p.name: p for p in PROPERTIES}
 
+# The properties whose 0 means "chosen by the filter": the panel's groups that
+# hold one say "(0 = automatic)" in their title.
+AUTOMATIC_WHEN_ZERO = frozenset(("OffsetDistance", "ClosingRadius", "SampleSpacing", "MaximumDimension",
+                                 "NumberOfThreads", "MemoryLimit"))
+
+Result = namedtuple("Result", "name label kind size beside advanced doc")
+Result.__doc__ = """A value the last run chose, which the ParaView panel shows
+read-only (an information property) beside the property it resolves.
+
+name: the Get name (GetOffsetDistanceUsed), of the VTK filter and the
+    wheel's filter alike, and the ParaView property's name.
+label: the panel's label. kind: float or int. size: number of values.
+beside: the property it follows on the panel (and in its group).
+advanced: whether the panel shows it only in advanced mode.
+doc: what it is, with {OtherProperty} for the names of other properties."""
+
+# What the last run chose, in the panel's order.
+RESULTS = (
+    Result("OffsetDistanceUsed", "Offset Distance Used", float, 1, "OffsetDistance", False,
+           "The offset distance of the last Apply: the one set, or the automatic one when {OffsetDistance} "
+           "is 0. Read-only."),
+    Result("ClosingRadiusUsed", "Closing Radius Used", float, 1, "ClosingRadius", True,
+           "The closing radius of the last Apply: the one set, or 3 times the offset distance when "
+           "{ClosingRadius} is 0; 0 with {CloseGaps} off. Read-only."),
+    Result("SampleSpacingUsed", "Sample Spacing Used", float, 1, "SampleSpacing", False,
+           "The grid spacing of the last Apply: the one set, or the automatic one when {SampleSpacing} is 0. "
+           "Read-only."),
+    Result("GridDimensionsUsed", "Grid Dimensions Used", int, 3, "MaximumDimension", False,
+           "Grid nodes along x, y and z in the last Apply. Read-only."),
+)
+
 
 def snake_case(name: str) -> str:
     """OffsetDistance -> offset_distance (the keyword reconstruct() also accepts)."""
@@ -225,6 +257,11 @@ def describe(prop: Property, name_of: Callable[[str], str] = lambda name: name) 
     on the command line, the name itself in Python (the default)."""
     return re.sub(r"\{([A-Za-z]+)\}", lambda m: name_of(m.group(1)) if m.group(1) in BY_NAME else m.group(0),
                   prop.doc)
+
+
+def results_beside(name: str) -> tuple:
+    """The results the panel shows right after property `name`."""
+    return tuple(r for r in RESULTS if r.beside == name)
 
 
 def defaults_of(filter_object: Any) -> Dict[str, Any]:

@@ -6,8 +6,9 @@ One function serves both plugins: the compiled plugin's XML, which
 cmake/generate-properties.py writes when CMake configures, and the Python
 plugin's (NarrowVolumePythonPlugin.py), which names its Python class. The
 proxy is the same: name, label, menu, documentation, the input, the two
-named outputs, and every property with its label, default, domain, panel
-group, advanced flag and documentation.
+named outputs, every property with its label, default, domain, panel
+group, advanced flag and documentation, and beside some of them the value
+the last run chose (read-only information properties).
 
 Only the standard library, and the table passed in (the generator loads
 Python/_properties.py by its path, the package imports it).
@@ -34,6 +35,22 @@ def number(value: Any) -> str:
     """A number as C++, XML and Markdown all read it: 0 rather than 0.0, 1e-06 as is."""
     text = repr(value)
     return text[:-2] if text.endswith(".0") else text
+
+
+def result_element(table: Any, result: Any, indent: str) -> List[str]:
+    """A value the last run chose, as a read-only (information-only)
+    property that the panel shows and updates after each Apply."""
+    element, helper = (("DoubleVectorProperty", "SimpleDoubleInformationHelper") if result.kind is float
+                       else ("IntVectorProperty", "SimpleIntInformationHelper"))
+    attributes = ('name="%s" command="Get%s" label=%s information_only="1" number_of_elements="%d" '
+                  'default_values="%s" panel_visibility="%s"' % (
+                      result.name, result.name, quoteattr(result.label), result.size, " ".join(["0"] * result.size),
+                      "advanced" if result.advanced else "default"))
+    label = lambda name: table.BY_NAME[name].label  # noqa: E731
+    return ["%s<%s %s>" % (indent, element, attributes),
+            "%s  <%s/>" % (indent, helper),
+            "%s  <Documentation>%s</Documentation>" % (indent, escape(table.describe(result, label))),
+            "%s</%s>" % (indent, element)]
 
 
 def property_elements(table: Any, indent: str = "      ") -> List[str]:
@@ -69,12 +86,18 @@ def property_elements(table: Any, indent: str = "      ") -> List[str]:
                                                                      number(prop.widget[2])))
         out.append("%s<Documentation>%s</Documentation>" % (inner, escape(table.describe(prop, label))))
         out.append("%s</%s>" % (indent, element))
+        for result in table.results_beside(prop.name):
+            out += result_element(table, result, indent)
     groups = []
     for prop in table.PROPERTIES:
         if not groups or groups[-1][0] != prop.group:
-            groups.append((prop.group, []))
+            groups.append((prop.group, [], []))
         groups[-1][1].append(prop.name)
-    for group, names in groups:
+        groups[-1][1].extend(result.name for result in table.results_beside(prop.name))
+        groups[-1][2].append(prop.name)
+    for group, names, settings in groups:
+        if table.AUTOMATIC_WHEN_ZERO.intersection(settings):
+            group += " (0 = automatic)"
         out.append("%s<PropertyGroup label=%s>" % (indent, quoteattr(group)))
         out += ['%s  <Property name="%s"/>' % (indent, name) for name in names]
         out.append("%s</PropertyGroup>" % indent)

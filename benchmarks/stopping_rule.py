@@ -4,7 +4,7 @@
 the Table 1 sphere (radius 0.5, l = 0.1, default parameters): the measurement
 behind the default stopping rule. Prints a table and writes a plot.
 
-    pvpython benchmarks/stopping_rule.py [--spacing 0.01 0.005] [--steps 20] [--plot doc/stopping_rule.png]
+    pvpython benchmarks/stopping_rule.py [--spacing 0.01 0.005] [--steps 20] [--plot doc/images/stopping_rule.png]
 """
 import argparse
 import sys

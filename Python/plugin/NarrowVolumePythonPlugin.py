@@ -54,3 +54,5 @@ else:
     from narrowvolume._paraview import NarrowVolumeReconstruction  # noqa: F401 (ParaView reads its proxy)
     from narrowvolume._readers import (E57PointCloudReader, LASPointCloudReader, LAZPointCloudReader,  # noqa: F401
                                        PCDPointCloudReader, PointCloudTextReader)
+    from narrowvolume import _paraview_client
+    _paraview_client.start()  # the panel's values of the last run, the camera on the shell

@@ -6,7 +6,7 @@
 #      targets files are there and name no build or source path; the version
 #      file accepts this major.minor and refuses the next one;
 #   2. with the plugin: the plugin, the Python readers it loads
-#      (NarrowVolumeScanReaders.py) and narrowvolume.plugins.xml sit under
+#      (python/NarrowVolumeScanReaders.py) and narrowvolume.plugins.xml sit under
 #      LIBDIR/PLUGIN_SUBDIR, and ldd resolves libNarrowVolumeFilters and
 #      libNarrowVolumeReaders of the installed plugin (and Python modules) to
 #      the installed libraries;
@@ -119,8 +119,8 @@ if (WITH_PLUGIN)
   else ()
     list(APPEND installed_binaries "${plugin}")
   endif ()
-  if (NOT EXISTS "${prefix}/${LIBDIR}/${PLUGIN_SUBDIR}/NarrowVolume/NarrowVolumeScanReaders.py")
-    fail("the Python readers are not installed beside the plugin")
+  if (NOT EXISTS "${prefix}/${LIBDIR}/${PLUGIN_SUBDIR}/NarrowVolume/python/NarrowVolumeScanReaders.py")
+    fail("the Python readers are not installed in python/ below the plugin")
   endif ()
   if (NOT EXISTS "${plugins_xml}")
     fail("the plugins XML is not installed at ${plugins_xml}")

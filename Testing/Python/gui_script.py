@@ -5,13 +5,61 @@ loads the plugin (NV_PLUGIN: the compiled one, or the Python plugin's file
 with NV_MEND_GETARGSPEC=1), opens a point cloud, applies the filter with the panel's
 defaults, shows both outputs beside the points, saves a screenshot, applies
 ParaView's Slice, Clip, Threshold, Contour, Resample To Image and Plot Over
-Line to the Volume output, writes what it saw to NV_GUI_RESULT (JSON) and
-closes the client."""
+Line to the Volume output; with NV_POINTS_PLY, shows that cloud (no cells)
+and a shell of it in a view of their own as Apply does; writes what it saw
+to NV_GUI_RESULT (JSON) and closes the client."""
 import json
 import os
 import traceback
 
 result = {"ok": False}
+
+
+def drawn_pixels(view, png):
+    """Pixels of a screenshot of the view that differ from its background."""
+    from paraview.simple import SaveScreenshot
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    from vtkmodules.vtkIOImage import vtkPNGReader
+    SaveScreenshot(png, view, ImageResolution=[400, 300])
+    reader = vtkPNGReader()
+    reader.SetFileName(png)
+    reader.Update()
+    pixels = vtk_to_numpy(reader.GetOutput().GetPointData().GetScalars())[:, :3].astype(int)
+    return int((abs(pixels - pixels[0]).sum(axis=1) > 30).sum())
+
+
+def frame_in_a_view_that_drew_nothing(ply, result):
+    """A cloud that draws nothing (a PLY of points has no cells) far from the
+    origin, in a view of its own, shown as Apply shows data (pqApplyBehavior:
+    each output port through the pipeline controller, and the camera reset
+    only when the new representation is the view's one visible dataset);
+    then the filter's outputs, the same way. What the view shows after."""
+    import paraview.simple as pvs
+    from paraview import servermanager
+    view = pvs.CreateView("RenderView")
+    pvs.AssignViewToLayout(view)
+    controller = servermanager.vtkSMParaViewPipelineControllerWithRendering()
+
+    def show_as_apply_does(source):
+        for port in range(source.SMProxy.GetNumberOfOutputPorts()):
+            controller.ShowInPreferredView(source.SMProxy, port, view.SMProxy)
+            if sum(1 for r in view.Representations if r.Visibility) == 1:
+                view.ResetCamera()
+        pvs.Render(view)
+
+    cloud = pvs.OpenDataFile(ply)
+    show_as_apply_does(cloud)
+    png = os.environ["NV_SCREENSHOT"].replace(".png", "_ply.png")
+    result["ply_cloud_cells"] = cloud.GetDataInformation().GetNumberOfCells()
+    result["ply_cloud_pixels"] = drawn_pixels(view, png)
+    shell = NarrowVolumeReconstruction(Input=cloud)  # noqa: F821 (from LoadPlugin)
+    show_as_apply_does(shell)
+    result["ply_shell_cells"] = shell.GetDataInformation(1).GetNumberOfCells()
+    result["ply_shell_pixels"] = drawn_pixels(view, png)
+    result["ply_offset_used"] = shell.OffsetDistanceUsed
+    result["ply_grid_used"] = list(shell.GridDimensionsUsed)
+
+
 try:
     if os.environ.get("NV_MEND_GETARGSPEC") == "1":
         # The Python plugin in ParaView 5.11 with Python 3.11, as the README
@@ -58,6 +106,14 @@ try:
     from vtkmodules.util.numpy_support import vtk_to_numpy
     field = algorithm.GetOutputDataObject(0).GetFieldData()
     result["offset_used"] = float(field.GetArray("OffsetDistance").GetValue(0))
+    # The panel's read-only values of the last Apply (information properties).
+    result["panel_used"] = {name: (list(shell.GetPropertyValue(name)) if name == "GridDimensionsUsed" else
+                                   shell.GetPropertyValue(name))
+                            for name in ("OffsetDistanceUsed", "SampleSpacingUsed", "ClosingRadiusUsed",
+                                         "GridDimensionsUsed")}
+    result["field_used"] = {name: float(field.GetArray(name).GetValue(0))
+                            for name in ("OffsetDistance", "SampleSpacing", "ClosingRadius")}
+    result["volume_dimensions"] = list(algorithm.GetOutputDataObject(0).GetDimensions())
     result["offset_slider"] = [shell.GetProperty("OffsetDistance").SMProperty.GetDomain("bounds").GetMinimum(0),
                                shell.GetProperty("OffsetDistance").SMProperty.GetDomain("bounds").GetMaximum(0)]
     result["cloud_extent"] = max(b - a for a, b in zip(cloud.GetDataInformation().GetBounds()[::2],
@@ -100,6 +156,8 @@ try:
         result["downstream_" + name] = {"points": information.GetNumberOfPoints(),
                                         "cells": information.GetNumberOfCells(), "phi_range": phi_range}
     Render(view)
+    if os.environ.get("NV_POINTS_PLY"):
+        frame_in_a_view_that_drew_nothing(os.environ["NV_POINTS_PLY"], result)
     result["ok"] = True
 except Exception:  # reported to the test, which fails on it
     result["error"] = traceback.format_exc()

@@ -2,7 +2,10 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """The real ParaView client under Xvfb: loads the plugin, opens the demo
 cloud, applies Narrow Volume Reconstruction with the panel's defaults and
-shows both outputs; the screenshot must show the shell. The Volume's grid is
+shows both outputs; the screenshot must show the shell, and the panel's
+read-only properties the offset, spacing and grid the run chose. A PLY of
+points (no cells, so it draws nothing) far from the origin gets a view of
+its own: after its shell is shown as Apply shows it, the camera frames it. The Volume's grid is
 declared in the information pass, before the run, and ParaView's Slice,
 Clip, Threshold, Contour, Resample To Image and Plot Over Line applied to the
 Volume output give points and cells.
@@ -55,7 +58,29 @@ print("ok")
 @pytest.fixture(scope="module")
 def gui(plugin_path, trefoil, with_xvfb):
     """The client's run of gui_script.py: what it saw (its JSON), and the screenshot's path."""
-    return run_gui(plugin_path, trefoil, with_xvfb)
+    return run_gui(plugin_path, trefoil, with_xvfb, NV_POINTS_PLY=points_ply(trefoil))
+
+
+def points_ply(cloud):
+    """The cloud's points as a PLY file without cells (as scanners write
+    them), scaled by 50 and moved 500 units from the origin, where a camera
+    framed on nothing does not see them. Its path."""
+    from vtkmodules.vtkCommonCore import vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkPolyData
+    from vtkmodules.vtkIOPLY import vtkPLYWriter
+    from vtkmodules.util.numpy_support import numpy_to_vtk
+    import nvclouds
+    xyz = nvclouds.points_of_file(cloud) * 50.0 + np.array([500.0, 0.0, 0.0])
+    points = vtkPoints()
+    points.SetData(numpy_to_vtk(xyz, deep=True))
+    data = vtkPolyData()
+    data.SetPoints(points)
+    path = os.path.join(nvtesting.scratch_folder(prefix="nv-gui-ply-"), "points.ply")
+    writer = vtkPLYWriter()
+    writer.SetFileName(path)
+    writer.SetInputData(data)
+    writer.Write()
+    return path
 
 
 def run_gui(plugin_path, trefoil, with_xvfb, **environment):
@@ -115,6 +140,33 @@ def test_outputs_and_points_shown(gui):
     assert result.get("cloud_visible"), "the input points stay visible"
 
 
+def test_panel_shows_what_the_run_chose(gui):
+    """The read-only properties beside Offset Distance, Closing Radius and
+    Sample Spacing show the values of the run, as field data has them."""
+    result = gui[0]
+    panel, field = result.get("panel_used") or {}, result.get("field_used") or {}
+    print("panel: %s; field data: %s; volume dimensions %s" % (panel, field, result.get("volume_dimensions")))
+    for name in ("OffsetDistance", "SampleSpacing", "ClosingRadius"):
+        assert panel.get(name + "Used", 0.0) > 0.0 and panel.get(name + "Used") == pytest.approx(field.get(name)), \
+            "the panel's %sUsed is the run's %s" % (name, name)
+    assert panel.get("GridDimensionsUsed") == result.get("volume_dimensions"), "the panel's grid is the volume's"
+
+
+def test_camera_framed_where_the_cloud_drew_nothing(gui):
+    """A PLY of points draws nothing, so its view keeps an empty framing;
+    after the filter's outputs are shown as Apply shows them, the shell is
+    in the picture."""
+    result = gui[0]
+    print("PLY cloud: %s cells, %s pixels drawn; its shell: %s triangles, %s pixels drawn (of 120000)" % (
+        result.get("ply_cloud_cells"), result.get("ply_cloud_pixels"), result.get("ply_shell_cells"),
+        result.get("ply_shell_pixels")))
+    # (the orientation axes in the corner draw about 100 pixels)
+    assert result.get("ply_cloud_cells") == 0 and result.get("ply_cloud_pixels", 1e6) < 0.005 * 400 * 300, \
+        "the PLY cloud has no cells and draws nothing"
+    assert result.get("ply_shell_cells", 0) > 10000, "the shell of the PLY cloud was computed"
+    assert result.get("ply_shell_pixels", 0) > 0.05 * 400 * 300, "the camera frames the shell"
+
+
 def test_information_pass(gui):
     """The information pass declared the grid the run produced."""
     result = gui[0]
@@ -152,3 +204,33 @@ def test_screenshot(gui):
     print("screenshot: %.1f %% content, %.1f %% shell-coloured" % (100 * content.mean(), 100 * orange.mean()))
     assert content.mean() > 0.05, "the screenshot has content"
     assert orange.mean() > 0.02, "the shell is in the picture"
+
+
+START_SCRIPT = """import json, os
+from paraview import servermanager
+definitions = servermanager.ProxyManager().SMProxyManager.GetProxyDefinitionManager()
+json.dump({"filter": bool(definitions.HasDefinition("filters", "NarrowVolumeReconstruction")),
+           "laz_reader": bool(definitions.HasDefinition("sources", "LAZPointCloudReader"))},
+          open(os.environ["NV_START_RESULT"], "w"))
+os._exit(0)
+"""
+
+
+def test_start_with_pv_plugin_path(plugin_path, with_xvfb):
+    """ParaView started with PV_PLUGIN_PATH naming the plugin's folder loads
+    the filter and the Python readers, and prints no Python traceback (the
+    readers sit in a folder ParaView does not load by itself)."""
+    folder = nvtesting.scratch_folder(prefix="nv-gui-start-")
+    script = os.path.join(folder, "start.py")
+    with open(script, "w") as f:
+        f.write(START_SCRIPT)
+    env = dict(os.environ, PV_PLUGIN_PATH=os.path.dirname(plugin_path), NV_FORCE_XVFB="1",
+               NV_START_RESULT=os.path.join(folder, "start.json"))
+    run = subprocess.run([with_xvfb, "paraview", "--dr", "--script=" + script], env=env, capture_output=True,
+                         text=True, timeout=300)
+    output = run.stdout + run.stderr
+    assert os.path.exists(env["NV_START_RESULT"]), "the client ran the script: %s" % nvtesting.explain(run)
+    loaded = json.load(open(env["NV_START_RESULT"]))
+    print("PV_PLUGIN_PATH start: %s; output: %r" % (loaded, output.strip()[-500:]))
+    assert "Traceback" not in output, "no Python traceback at start: %s" % output
+    assert loaded == {"filter": True, "laz_reader": True}, "the filter and the Python readers are loaded"

@@ -209,10 +209,12 @@ def test_readers_open_each_format(python_plugin, work):
 def test_gui(python_plugin, trefoil, with_xvfb):
     """The real client under Xvfb with the Python plugin, as gui_script.py
     drives the compiled one (test_gui.py): the panel's defaults give the
-    shell, both outputs show beside the points, and ParaView's filters run on
-    the Volume output."""
+    shell, both outputs show beside the points, ParaView's filters run on
+    the Volume output, the panel shows what the run chose, and a view that
+    drew nothing frames the shell."""
     import test_gui
-    result, screenshot = test_gui.run_gui(python_plugin, trefoil, with_xvfb, NV_MEND_GETARGSPEC="1")
+    result, screenshot = test_gui.run_gui(python_plugin, trefoil, with_xvfb, NV_MEND_GETARGSPEC="1",
+                                          NV_POINTS_PLY=test_gui.points_ply(trefoil))
     assert result.get("ok"), "script ran through: %s" % result.get("error")
     assert result.get("label") == "Narrow Volume Reconstruction"
     assert result.get("offset_default") == 0.0 and result.get("offset_used", 0.0) > 0.0
@@ -221,6 +223,8 @@ def test_gui(python_plugin, trefoil, with_xvfb):
     for name in test_gui.DOWNSTREAM:
         assert result["downstream_" + name]["points"] > 0, name
     assert os.path.getsize(screenshot) > 0
+    test_gui.test_panel_shows_what_the_run_chose((result, screenshot))
+    test_gui.test_camera_framed_where_the_cloud_drew_nothing((result, screenshot))
 
 
 @pytest.mark.mpi

@@ -1,9 +1,9 @@
 # SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
 # SPDX-License-Identifier: BSD-3-Clause
-"""Renders doc/parameter_guide.png: what l, xi and eps do, on a sparse
+"""Renders doc/images/parameter_guide.png: what l, xi and eps do, on a sparse
 version of the demo cloud (every 6th point of Data/trefoil.vtp).
 
-    scripts/with-xvfb.sh pvpython doc/make_parameter_guide.py
+    scripts/with-xvfb.sh pvpython doc/pictures/make_parameter_guide.py
 """
 import os
 import tempfile
@@ -12,10 +12,12 @@ import numpy as np
 import paraview.simple as pvs
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-PLUGIN = os.path.join(HERE, "..", "build", "lib", "paraview-5.11", "plugins", "NarrowVolume", "NarrowVolume.so")
+SOURCE = os.path.normpath(os.path.join(HERE, "..", ".."))
+BUILD = os.environ.get("BUILD_DIR") or os.path.join(SOURCE, "build")
+PLUGIN = os.path.join(BUILD, "lib", "paraview-5.11", "plugins", "NarrowVolume", "NarrowVolume.so")
 pvs.LoadPlugin(PLUGIN, ns=globals())
 
-reader = pvs.XMLPolyDataReader(FileName=[os.path.join(HERE, "..", "Data", "trefoil.vtp")])
+reader = pvs.XMLPolyDataReader(FileName=[os.path.join(SOURCE, "Data", "trefoil.vtp")])
 sparse = pvs.MaskPoints(Input=reader, OnRatio=6, MaximumNumberofPoints=10 ** 7, GenerateVertices=1)
 sparse.UpdatePipeline()
 H = 2.2 / 120  # cells of the 120-cell grid used below
@@ -68,5 +70,5 @@ for ax, (title, path) in zip(axes.ravel(), images):
     ax.axis("off")
 fig.suptitle("Outer sheet of the shell around 5,000 sparse points (h = 1/120 of the cloud)", fontsize=11)
 fig.tight_layout()
-fig.savefig(os.path.join(HERE, "parameter_guide.png"), dpi=80)
-print("wrote doc/parameter_guide.png")
+fig.savefig(os.path.join(SOURCE, "doc", "images", "parameter_guide.png"), dpi=80)
+print("wrote doc/images/parameter_guide.png")
