@@ -13,7 +13,8 @@ the proxy's long help and documentation word for word; for every property of
 the table, the tooltip and the page's text must both be the table's doc with
 its {OtherProperty} names filled in, the tooltip with the panel's labels and
 the page with the properties' names, naming the same properties in the same
-places. Visible properties with a picture in doc/images/parameters show it.
+places; likewise for the read-only values the panel shows (the table's
+RESULTS). Visible properties with a picture in doc/images/parameters show it.
 
     check_parameter_docs.py build/generated/NarrowVolumeReconstruction.xml
 """
@@ -58,7 +59,8 @@ def main(xml_path):
             failures.append("the filter's %s (the ? button) is not on the reference page: %r" % (what, text))
 
     checked = pictures = 0
-    for prop in table.PROPERTIES:
+    # The properties, and the read-only values the panel shows beside them.
+    for prop in list(table.PROPERTIES) + list(table.RESULTS):
         element = proxy.find("*[@name='%s']" % prop.name)
         tooltip = element.find("Documentation").text if element is not None else None
         text = page_docs.get(prop.name)
@@ -81,7 +83,7 @@ def main(xml_path):
             pictures += 1
             if "(../images/parameters/%s.png)" % prop.name not in page:
                 failures.append("%s: doc/images/parameters/%s.png is not shown" % (prop.name, prop.name))
-        elif not prop.advanced:
+        elif not prop.advanced and prop in table.PROPERTIES:
             print("note: %s is shown in the panel and has no picture yet (doc/images/parameters/%s.png)"
                   % (prop.name, prop.name))
         checked += 1

@@ -221,6 +221,13 @@ def markdown(table, images_dir=None, images_url=""):
         if image:
             out += [image, ""]
         out += [table.describe(prop, code), ""]
+        for result in table.results_beside(prop.name):
+            out += ["### %s" % result.name, "",
+                    "read-only: what the last run chose, shown in the panel after *%s* as *%s*%s; %s; "
+                    "Python and C++ `Get%s()`." % (prop.label, result.label, " (advanced)" if result.advanced else "",
+                                                   "%d values" % result.size if result.size > 1 else
+                                                   result.kind.__name__, result.name), "",
+                    table.describe(result, code), ""]
     return "\n".join(out)
 
 

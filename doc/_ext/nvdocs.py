@@ -87,6 +87,9 @@ def _signatures(declaration):
             return (["void Set%s(%s value)" % (name, args[1]), "%s Get%sMinValue()" % (args[1], name),
                      "%s Get%sMaxValue()" % (args[1], name)],
                     "Set%s clamps to [%s, %s]." % (name, args[2], args[3]))
+        if kind in ("vtkGetVector3Macro", "vtkGetVectorMacro"):
+            size = args[2] if kind == "vtkGetVectorMacro" else "3"
+            return ["%s* Get%s()" % (args[1], name), "void Get%s(%s data[%s])" % (name, args[1], size)], None
         if kind == "vtkGetObjectMacro":
             return ["%s* Get%s()" % (args[1], name)], None
         return [], None  # vtkTypeMacro and the like: no method of this class's own
