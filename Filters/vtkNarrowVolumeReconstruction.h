@@ -205,8 +205,9 @@ public:
   /**
    * Stop when ||phi^{n+1} - phi^n||_2 / ||phi^n||_2 over the updated nodes
    * drops below this value (the paper's rule, section 4, with 1e-5). 0 runs
-   * exactly MaximumNumberOfIterations steps. Default 0: see the README for
-   * why the default stopping rule is a fixed number of steps.
+   * exactly MaximumNumberOfIterations steps. Default 0: the documentation
+   * (doc/explanation/choices.md, the stopping rule) says why the default
+   * stopping rule is a fixed number of steps.
    */
   vtkSetClampMacro(ConvergenceTolerance, double, 0.0, 1.0);
   vtkGetMacro(ConvergenceTolerance, double);

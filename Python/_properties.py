@@ -18,16 +18,17 @@ when CMake configures, writes the generated files into the build):
   binds (Python/nvBindings.cxx), field by field through one macro;
 - the ParaView server-manager XML of the filter (_servermanager.py makes
   the whole proxy, for the compiled plugin and for the Python plugin);
-- the parameter reference (Markdown), and the README's table of the
-  parameters, which the ctest PropertyTable checks;
+- the parameter reference (Markdown: the site's doc/reference/parameters.md),
+  and the summary table of the parameters in doc/how-to/choose-parameters.md,
+  which the ctest PropertyTable checks;
 - at run time: the wheel's Python filter (its Set/Get methods and their
   docstrings, _filter.py), reconstruct()'s keywords and the command line's
   options (_cli.py).
 
 Adding a property: a row here, the core code that uses it, and its Set/Get
 (with its doc comment and its member) in Filters/vtkNarrowVolumeReconstruction.h,
-as VTK's wrapping needs real declarations; then rewrite the README's table
-with `python3 cmake/generate-properties.py --readme README.md`. The tests
+as VTK's wrapping needs real declarations; then rewrite the summary table
+with `python3 cmake/generate-properties.py --readme doc/how-to/choose-parameters.md`. The tests
 check the table against the wrapped C++ class (PythonApi: names, defaults,
 clamping) and the wheel's filter against the C++ filter (PipVtkOldest,
 PipVtkNewest).

@@ -4,13 +4,13 @@
 """Makes the files that follow the property table (Python/_properties.py).
 
 CMake runs it when it configures (CMakeLists.txt); by hand it rewrites or
-checks the README's table of the parameters:
+checks the summary table of the parameters (in doc/how-to/choose-parameters.md):
 
     generate-properties.py --header nvSettingsTable.h     the core's settings
     generate-properties.py --xml OUT                      the ParaView proxy
     generate-properties.py --markdown OUT                 the parameter reference
     generate-properties.py --stub OUT                     the wheel's filter's type stub
-    generate-properties.py --readme README.md [--check]   the README's table
+    generate-properties.py --readme FILE.md [--check]     the summary table between FILE's markers
 
 Only the standard library: it runs in any Python 3 the build finds.
 """
@@ -39,7 +39,7 @@ def load_module(name, path):
 
 
 # The proxy's module (it imports nothing of the package either), and its way
-# of writing numbers, which the reference and the README's table share.
+# of writing numbers, which the reference and the summary table share.
 SERVERMANAGER_MODULE = load_module("narrowvolume_servermanager", SERVERMANAGER)
 number = SERVERMANAGER_MODULE.number
 
@@ -149,7 +149,7 @@ def stub(table):
     return "\n".join(out)
 
 
-# --- Markdown: the reference, and the README's table.
+# --- Markdown: the reference (the site's parameters page), and the summary table.
 def markdown_cell(text):
     return text.replace("|", "\\|")
 
@@ -180,11 +180,38 @@ def code(name):
     return "`%s`" % name
 
 
-def markdown(table):
+def proxy_help():
+    """What ParaView's ? button shows above the properties: the proxy's documentation."""
+    return SERVERMANAGER_MODULE.LONG_HELP, SERVERMANAGER_MODULE.DOCUMENTATION
+
+
+def picture(prop, images_dir, images_url):
+    """The Markdown of the picture of what prop does, when images_dir holds <name>.png; else None."""
+    if not images_dir or not os.path.exists(os.path.join(images_dir, prop.name + ".png")):
+        return None
+    return "![%s: what it does](%s%s.png)" % (prop.label, images_url, prop.name)
+
+
+def markdown(table, images_dir=None, images_url=""):
+    """The parameter reference: the filter's help (the ? button's text), a
+    summary table, then each property: its facts, the picture of what it
+    does (a file <name>.png in images_dir, shown as images_url + <name>.png)
+    and its documentation, the very text of its tooltip in ParaView (with
+    the properties' names as `Name` where the tooltip has their labels)."""
+    long_help, documentation = proxy_help()
     out = ["# Parameters", "",
            "The properties of vtkNarrowVolumeReconstruction: the same names in C++, Python (`reconstruct()` "
            "also takes them in snake_case), pvpython and the command line (as `--offset-distance`); the "
-           "ParaView panel shows the labels. Made from the property table, `Python/_properties.py`.", ""]
+           "ParaView panel shows the labels. Made from the property table, `Python/_properties.py`, which "
+           "also makes the filter's help in ParaView (the panel's ? button and the tooltips): this page "
+           "and that help say the same.", "",
+           "## The filter", "", long_help, "", documentation, "",
+           "| property | panel label | default | panel |", "|---|---|---|---|"]
+    for prop in table.PROPERTIES:
+        out.append("| [`%s`](#%s) | %s | %s | %s |" % (prop.name, prop.name.lower(), prop.label,
+                                                      markdown_cell(default_text(prop)),
+                                                      "advanced" if prop.advanced else "shown"))
+    out.append("")
     group = None
     for prop in table.PROPERTIES:
         if prop.group != group:
@@ -197,8 +224,31 @@ def markdown(table):
         if range_text(prop):
             facts.append(range_text(prop))
         facts.append("command line `%s`" % table.option(prop.name))
-        out += ["; ".join(facts) + ".", "", table.describe(prop, code), ""]
+        out += ["; ".join(facts) + ".", ""]
+        image = picture(prop, images_dir, images_url)
+        if image:
+            out += [image, ""]
+        out += [table.describe(prop, code), ""]
+        for result in table.results_beside(prop.name):
+            out += ["### %s" % result.name, "",
+                    "read-only: what the last run chose, shown in the panel after *%s* as *%s*%s; %s; "
+                    "Python and C++ `Get%s()`." % (prop.label, result.label, " (advanced)" if result.advanced else "",
+                                                   "%d values" % result.size if result.size > 1 else
+                                                   result.kind.__name__, result.name), "",
+                    table.describe(result, code), ""]
     return "\n".join(out)
+
+
+def reference_docs(page):
+    """{property name: its documentation} as a reference page made by
+    markdown() writes it: the last paragraph of each property's section."""
+    docs = {}
+    for section in re.split(r"^### ", page, flags=re.M)[1:]:
+        name, body = section.split("\n", 1)
+        body = re.split(r"^#", body, flags=re.M)[0]
+        paragraphs = [p.strip() for p in body.strip().split("\n\n") if p.strip()]
+        docs[name.strip()] = paragraphs[-1]
+    return docs
 
 
 def readme_table(table):
@@ -221,10 +271,10 @@ def readme(table, path, check):
     new = text[:begin] + readme_table(table) + text[end + len(README_END):]
     if check:
         if new != text:
-            print("FAILED: the README's table of the parameters differs from the property table; rewrite it "
-                  "with\n    python3 cmake/generate-properties.py --readme README.md")
+            print("FAILED: the table of the parameters in %s differs from the property table; rewrite it "
+                  "with\n    python3 cmake/generate-properties.py --readme %s" % (path, path))
             return 1
-        print("generate-properties: the README's table is the property table's (%d rows)" % len(table.PROPERTIES))
+        print("generate-properties: the table in %s is the property table's (%d rows)" % (path, len(table.PROPERTIES)))
         return 0
     write(path, new)
     return 0
@@ -237,7 +287,7 @@ def main():
     parser.add_argument("--xml", metavar="OUT", help="write the ParaView proxy")
     parser.add_argument("--markdown", metavar="OUT", help="write the parameter reference")
     parser.add_argument("--stub", metavar="OUT", help="write the type stub of the wheel's filter (_filter.pyi)")
-    parser.add_argument("--readme", metavar="README", help="rewrite the README's table of the parameters")
+    parser.add_argument("--readme", metavar="README", help="rewrite the table of the parameters between the markers of a Markdown file")
     parser.add_argument("--check", action="store_true", help="with --readme: only check it, exit 1 if it differs")
     args = parser.parse_args()
     table = load_module("narrowvolume_properties", args.table)

@@ -2,7 +2,7 @@
 # SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
 # SPDX-License-Identifier: BSD-3-Clause
 # The benchmark (benchmarks/table2.py): installs OpenVDB too, builds with the
-# OpenVDB peer program, and prints the tables that the README keeps.
+# OpenVDB peer program, and prints the tables that doc/performance.md keeps.
 # Extra arguments go to table2.py (e.g. --cases sphere dragon --repeat 5).
 set -euo pipefail
 source_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"

@@ -6,7 +6,8 @@
 # clang build of the module with AddressSanitizer, UndefinedBehaviorSanitizer
 # and LeakSanitizer that runs the C++ tests and the libFuzzer target for a
 # bounded time. Extra arguments go to the first ctest (e.g. -L cxx, -R Table1);
-# NV_SKIP_SANITIZE=1 skips the second build.
+# NV_SKIP_SANITIZE=1 skips the second build. The documentation site is built
+# too (scripts/docs.sh, every warning an error); NV_SKIP_DOCS=1 skips it.
 #
 # Every stage runs even when an earlier one failed (a stage that needs a
 # failed one is reported as not run), a summary of the stages is printed at
@@ -58,8 +59,12 @@ sanitize_ctest() {
 if stage "install packages" "$source_dir/scripts/install-deps.sh"; then
   if stage "build" "$source_dir/scripts/build.sh"; then
     stage "ctest (build/)" run_ctest "$build_dir" "$@"
+    if [ "${NV_SKIP_DOCS:-0}" != "1" ]; then
+      stage "docs (scripts/docs.sh)" env BUILD_DIR="$build_dir" "$source_dir/scripts/docs.sh" --clean
+    fi
   else
     skipped "ctest (build/)" "the build failed"
+    skipped "docs (scripts/docs.sh)" "the build failed"
   fi
   if [ "${NV_SKIP_SANITIZE:-0}" != "1" ]; then
     if stage "sanitizer build" build_sanitize; then

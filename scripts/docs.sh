@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+# SPDX-License-Identifier: BSD-3-Clause
+# Builds the documentation site (doc/, Sphinx with MyST Markdown) into
+# BUILD_DIR/docs/html, every warning an error. Needs the build (scripts/build.sh):
+# the Python API reference imports the built `narrowvolume` package, which
+# needs Debian's ParaView VTK, hence a virtual environment over /usr/bin/python3
+# with --system-site-packages. The tools come from PyPI, pinned, once; later
+# runs reuse the environment and need no network.
+#
+#   ./scripts/docs.sh            # then open build/docs/html/index.html
+#   ./scripts/docs.sh --clean    # from an empty build/docs
+set -euo pipefail
+source_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build_dir="${BUILD_DIR:-$source_dir/build}"
+docs_dir="$build_dir/docs"
+venv="$build_dir/docs-venv"
+requirements="$source_dir/doc/requirements.txt"
+
+if [ "${1:-}" = "--clean" ]; then
+  rm -rf "$docs_dir"
+fi
+if [ ! -d "$build_dir/lib/python3.11/dist-packages/narrowvolume" ]; then
+  echo "docs.sh: no built package in $build_dir; run scripts/build.sh first" >&2
+  exit 1
+fi
+# The environment, made again when the pinned list changes.
+if ! cmp -s "$requirements" "$venv/requirements.txt" 2>/dev/null; then
+  rm -rf "$venv"
+  /usr/bin/python3 -m venv --system-site-packages "$venv"
+  "$venv/bin/python" -m pip install --quiet --disable-pip-version-check -r "$requirements"
+  cp "$requirements" "$venv/requirements.txt"
+fi
+mkdir -p "$docs_dir"
+# -W: warnings are errors; -n: every reference must resolve; --keep-going: all of them at once.
+PYTHONPATH="$build_dir/lib/python3.11/dist-packages${PYTHONPATH:+:$PYTHONPATH}" \
+NV_BUILD_DIR="$build_dir" \
+  "$venv/bin/python" -m sphinx -W --keep-going -n -q -b html -d "$docs_dir/doctrees" \
+  "$source_dir/doc" "$docs_dir/html"
+echo "docs.sh: the site is in $docs_dir/html (index.html)"
