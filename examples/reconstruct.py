@@ -29,7 +29,7 @@ import time
 from paraview import servermanager
 import paraview.simple as pvs
 
-HERE = os.path.dirname(os.path.abspath(__file__))
+HERE = os.path.dirname(os.path.realpath(__file__))
 
 
 def plugin_places():
