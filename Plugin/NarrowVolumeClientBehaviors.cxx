@@ -8,12 +8,12 @@
 #include "vtkSMPropertyHelper.h"
 #include "vtkSMProxyIterator.h"
 #include "vtkSMProxyManager.h"
-#include "vtkSMRenderViewProxy.h"
-#include "vtkSMRepresentationProxy.h"
 #include "vtkSMSessionProxyManager.h"
 #include "vtkSMSourceProxy.h"
 #include "vtkSmartPointer.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <set>
 
@@ -34,25 +34,115 @@ bool IsNarrowVolume(vtkSMProxy* proxy)
   return proxy && proxy->GetXMLName() && std::strcmp(proxy->GetXMLName(), "NarrowVolumeReconstruction") == 0;
 }
 
+/// The data a representation shows: its input's, at its output port (what
+/// the server manager knows, without the views' module).
+vtkPVDataInformation* DataOf(vtkSMProxy* representation)
+{
+  auto* producer = vtkSMSourceProxy::SafeDownCast(ProducerOf(representation));
+  if (!producer)
+  {
+    return nullptr;
+  }
+  const unsigned int port = vtkSMPropertyHelper(representation, "Input", /*quiet=*/true).GetOutputPort();
+  return port < producer->GetNumberOfOutputPorts() ? producer->GetDataInformation(port) : nullptr;
+}
+
+bool Visible(vtkSMProxy* representation)
+{
+  return representation->GetProperty("Visibility") &&
+    vtkSMPropertyHelper(representation, "Visibility", /*quiet=*/true).GetAsInt() != 0;
+}
+
 /// Whether a representation puts something on the screen: visible, and its
 /// data has cells (Point Gaussian draws points without cells too).
-bool Draws(vtkSMProxy* proxy)
+bool Draws(vtkSMProxy* representation)
 {
-  auto* representation = vtkSMRepresentationProxy::SafeDownCast(proxy);
-  if (!representation || vtkSMPropertyHelper(proxy, "Visibility", /*quiet=*/true).GetAsInt() == 0)
+  if (!representation || !Visible(representation))
   {
     return false;
   }
-  if (proxy->GetProperty("Representation"))
+  if (representation->GetProperty("Representation"))
   {
-    const char* type = vtkSMPropertyHelper(proxy, "Representation", /*quiet=*/true).GetAsString();
+    const char* type = vtkSMPropertyHelper(representation, "Representation", /*quiet=*/true).GetAsString();
     if (type && std::strcmp(type, "Point Gaussian") == 0)
     {
       return true;
     }
   }
-  vtkPVDataInformation* data = representation->GetRepresentedDataInformation();
+  vtkPVDataInformation* data = DataOf(representation);
   return data && data->GetNumberOfCells() > 0;
+}
+
+/// Frames a render view's camera on `bounds` as ParaView's Reset Camera
+/// does (vtkRenderer::ResetCamera): the same direction of view, the focal
+/// point at the centre, the whole box in the view angle.
+void FrameCamera(vtkSMProxy* view, const double bounds[6])
+{
+  double center[3], position[3], focal[3], direction[3];
+  double radius = 0.0;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    center[axis] = 0.5 * (bounds[2 * axis] + bounds[2 * axis + 1]);
+    radius += 0.25 * (bounds[2 * axis + 1] - bounds[2 * axis]) * (bounds[2 * axis + 1] - bounds[2 * axis]);
+  }
+  radius = std::sqrt(radius);
+  radius = radius > 0.0 ? radius : 0.5;
+  vtkSMPropertyHelper(view, "CameraPosition").Get(position, 3);
+  vtkSMPropertyHelper(view, "CameraFocalPoint").Get(focal, 3);
+  double length = 0.0;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    direction[axis] = position[axis] - focal[axis];
+    length += direction[axis] * direction[axis];
+  }
+  length = std::sqrt(length);
+  if (!(length > 0.0))
+  {
+    direction[0] = direction[1] = 0.0;
+    direction[2] = length = 1.0;
+  }
+  const double pi = 3.14159265358979323846;
+  const double angle = vtkSMPropertyHelper(view, "CameraViewAngle", /*quiet=*/true).GetAsDouble();
+  const double distance = radius / std::sin(0.5 * (angle > 0.0 ? angle : 30.0) * pi / 180.0);
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    position[axis] = center[axis] + direction[axis] / length * distance;
+  }
+  vtkSMPropertyHelper(view, "CameraFocalPoint").Set(center, 3);
+  vtkSMPropertyHelper(view, "CameraPosition").Set(position, 3);
+  vtkSMPropertyHelper(view, "CameraParallelScale", /*quiet=*/true).Set(radius);
+  vtkSMPropertyHelper(view, "CenterOfRotation", /*quiet=*/true).Set(center, 3);
+  view->UpdateVTKObjects();
+}
+
+/// The filter's input, where the view shows it and it draws nothing (points
+/// without cells), as Point Gaussian discs of a fifth of the offset used.
+void ShowInputAsPoints(vtkSMProxy* view, vtkSMProxy* filter)
+{
+  vtkSMProxy* input = vtkSMPropertyHelper(filter, "Input", /*quiet=*/true).GetAsProxy();
+  const double offset = vtkSMPropertyHelper(filter, "OffsetDistanceUsed", /*quiet=*/true).GetAsDouble();
+  if (!input || !(offset > 0.0))
+  {
+    return;
+  }
+  vtkSMPropertyHelper representations(view, "Representations");
+  for (unsigned int i = 0; i < representations.GetNumberOfElements(); ++i)
+  {
+    vtkSMProxy* representation = representations.GetAsProxy(i);
+    if (!representation || ProducerOf(representation) != input || !representation->GetProperty("GaussianRadius") ||
+      !Visible(representation) || Draws(representation))
+    {
+      continue;
+    }
+    vtkPVDataInformation* data = DataOf(representation);
+    if (data && data->GetNumberOfPoints() > 0)
+    {
+      vtkSMPropertyHelper(representation, "Representation").Set("Point Gaussian");
+      vtkSMPropertyHelper(representation, "GaussianRadius").Set(0.2 * offset);
+      vtkSMPropertyHelper(representation, "ShaderPreset", /*quiet=*/true).Set("Plain circle");
+      representation->UpdateVTKObjects();
+    }
+  }
 }
 
 /// Watches the session proxy managers (for new filters and render views),
@@ -116,7 +206,7 @@ public:
     else if (event == vtkCommand::PropertyModifiedEvent && data &&
       std::strcmp(static_cast<const char*>(data), "Representations") == 0)
     {
-      this->RepresentationsChanged(vtkSMRenderViewProxy::SafeDownCast(caller));
+      this->RepresentationsChanged(vtkSMProxy::SafeDownCast(caller));
     }
   }
 
@@ -131,7 +221,9 @@ private:
 
   void WatchView(vtkSMProxy* proxy)
   {
-    if (vtkSMRenderViewProxy::SafeDownCast(proxy) && this->WatchedViews.insert(proxy->GetGlobalID()).second)
+    // Render views: those with a camera (ParaView's RenderView and its kin).
+    if (proxy && proxy->GetProperty("CameraPosition") && proxy->GetProperty("Representations") &&
+      this->WatchedViews.insert(proxy->GetGlobalID()).second)
     {
       proxy->AddObserver(vtkCommand::PropertyModifiedEvent, this);
     }
@@ -140,7 +232,7 @@ private:
   /// A representation was added to (or removed from) the view: when it is
   /// the view's first of the filter's outputs and nothing else draws,
   /// frame the camera on that output.
-  void RepresentationsChanged(vtkSMRenderViewProxy* view)
+  void RepresentationsChanged(vtkSMProxy* view)
   {
     if (!view)
     {
@@ -167,11 +259,12 @@ private:
     {
       return;
     }
+    ShowInputAsPoints(view, source);
     double bounds[6];
     source->GetDataInformation(0)->GetBounds(bounds);
     if (bounds[0] <= bounds[1] && bounds[2] <= bounds[3] && bounds[4] <= bounds[5])
     {
-      view->ResetCamera(bounds);
+      FrameCamera(view, bounds);
     }
   }
 

@@ -16,8 +16,10 @@
 ///    shell shows as a sliver or not at all. So when a render view first
 ///    shows an output of the filter and none of its other visible
 ///    representations draws anything (no cells, and not Point Gaussian),
-///    the camera is reset on the output's bounds. Views that already show
-///    something keep their camera.
+///    the camera is reset on the output's bounds, and the filter's input, if
+///    it is one of those representations, is shown as Point Gaussian discs
+///    (a fifth of the offset used) so that the cloud shows too. Views that
+///    already show something keep their camera and representations.
 /// Both watch the server manager, not the Qt client. Runs once per process.
 void StartClientBehaviors();
 

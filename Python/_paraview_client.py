@@ -9,7 +9,9 @@ filter, as the compiled plugin does (Plugin/NarrowVolumeClientBehaviors.cxx):
 2. When a render view first shows an output of the filter and none of its
    other visible representations draws anything (a point cloud without
    cells, such as a PLY of points, draws nothing, and ParaView then keeps
-   an empty framing), the camera is reset on the output's bounds.
+   an empty framing), the camera is reset on the output's bounds, and the
+   filter's input, if it is one of those, is shown as Point Gaussian discs
+   (a fifth of the offset used).
 
 Both watch the server manager, so the GUI, pvpython and pvbatch behave
 alike. start() runs once per process.
@@ -91,6 +93,28 @@ def _draws(representation):
     return data is not None and data.GetNumberOfCells() > 0
 
 
+def _show_input_as_points(view, shell):
+    """The filter's input, where the view shows it and it draws nothing
+    (points without cells), as Point Gaussian discs of a fifth of the offset used."""
+    source = vtkSMPropertyHelper(shell, "Input", True).GetAsProxy()
+    offset = vtkSMPropertyHelper(shell, "OffsetDistanceUsed", True).GetAsDouble()
+    if source is None or not offset > 0.0:
+        return
+    representations = vtkSMPropertyHelper(view, "Representations")
+    for i in range(representations.GetNumberOfElements()):
+        representation = representations.GetAsProxy(i)
+        if not isinstance(representation, vtkSMRepresentationProxy) or _producer(representation) != source or \
+                representation.GetProperty("GaussianRadius") is None or \
+                not vtkSMPropertyHelper(representation, "Visibility", True).GetAsInt() or _draws(representation):
+            continue
+        data = representation.GetRepresentedDataInformation()
+        if data is not None and data.GetNumberOfPoints() > 0:
+            vtkSMPropertyHelper(representation, "Representation").Set("Point Gaussian")
+            vtkSMPropertyHelper(representation, "GaussianRadius").Set(0.2 * offset)
+            vtkSMPropertyHelper(representation, "ShaderPreset", True).Set("Plain circle")
+            representation.UpdateVTKObjects()
+
+
 def _representations_changed(view):
     """Frames the camera on the filter's output the view shows first, when nothing else draws."""
     representations = vtkSMPropertyHelper(view, "Representations")
@@ -105,6 +129,7 @@ def _representations_changed(view):
             shown = shown or producer
     if shown is None or something_else_draws:
         return
+    _show_input_as_points(view, shown)
     bounds = shown.GetDataInformation(0).GetBounds()
     if bounds[0] <= bounds[1] and bounds[2] <= bounds[3] and bounds[4] <= bounds[5]:
         view.ResetCamera(bounds)

@@ -193,6 +193,10 @@ def fixtures(require_scans, scans_dir, source_dir, plugin_path):
     env["PATH"] = bin_dir + os.pathsep + env["PATH"]
     env["PYTHONUNBUFFERED"] = "1"
     env["OMPI_ALLOW_RUN_AS_ROOT"] = env["OMPI_ALLOW_RUN_AS_ROOT_CONFIRM"] = "1"
+    # The build the pages call build/ (examples/reconstruct.py looks there,
+    # or in BUILD_DIR as scripts/build.sh takes it): the plugin's.
+    env["BUILD_DIR"] = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(
+        os.path.abspath(plugin_path))))))
     return {"folder": folder, "env": env, "source_dir": source_dir, "plugin": plugin_path}
 
 

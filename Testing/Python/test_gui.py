@@ -155,7 +155,7 @@ def test_panel_shows_what_the_run_chose(gui):
 def test_camera_framed_where_the_cloud_drew_nothing(gui):
     """A PLY of points draws nothing, so its view keeps an empty framing;
     after the filter's outputs are shown as Apply shows them, the shell is
-    in the picture."""
+    in the picture, and the cloud shows as points (Point Gaussian)."""
     result = gui[0]
     print("PLY cloud: %s cells, %s pixels drawn; its shell: %s triangles, %s pixels drawn (of 120000)" % (
         result.get("ply_cloud_cells"), result.get("ply_cloud_pixels"), result.get("ply_shell_cells"),
@@ -165,6 +165,10 @@ def test_camera_framed_where_the_cloud_drew_nothing(gui):
         "the PLY cloud has no cells and draws nothing"
     assert result.get("ply_shell_cells", 0) > 10000, "the shell of the PLY cloud was computed"
     assert result.get("ply_shell_pixels", 0) > 0.05 * 400 * 300, "the camera frames the shell"
+    print("the PLY cloud after: %s, %s pixels drawn" % (result.get("ply_cloud_representation"),
+                                                       result.get("ply_cloud_pixels_after")))
+    assert result.get("ply_cloud_representation") == "Point Gaussian" and \
+        result.get("ply_cloud_pixels_after", 0) > 0.02 * 400 * 300, "the cloud shows as points"
 
 
 def test_information_pass(gui):
