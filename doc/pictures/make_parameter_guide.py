@@ -11,6 +11,8 @@ import tempfile
 import numpy as np
 import paraview.simple as pvs
 
+import nvpictures
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 SOURCE = os.path.normpath(os.path.join(HERE, "..", ".."))
 BUILD = os.environ.get("BUILD_DIR") or os.path.join(SOURCE, "build")
@@ -34,14 +36,7 @@ scratch = tempfile.TemporaryDirectory()  # the panels, removed at exit
 folder = scratch.name
 images = []
 for title, settings in panels:
-    view = pvs.CreateView("RenderView")
-    view.ViewSize = [500, 420]
-    view.OrientationAxesVisibility = 0
-    view.Background = [1, 1, 1]
-    try:
-        view.UseColorPaletteForBackground = 0
-    except AttributeError:
-        pass
+    view = nvpictures.new_view((500, 420))
     shell = NarrowVolumeReconstruction(Input=sparse, SampleSpacing=H, Sheets="Outer", **settings)  # noqa: F821
     shown = pvs.Show(pvs.OutputPort(shell, 1), view)
     shown.ColorArrayName = ["POINTS", ""]
