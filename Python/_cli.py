@@ -18,7 +18,6 @@ from __future__ import annotations
 
 import argparse
 import os
-import re
 import signal
 import sys
 import threading
@@ -294,9 +293,7 @@ def default_text(prop: Any, value: Any) -> str:
 def in_option_words(text: str) -> str:
     """A message of the filter with the properties' names as the command
     line's options (OffsetDistance -> --offset-distance)."""
-    for prop in _properties.PROPERTIES:
-        text = re.sub(r"(?<![\w-])%s(?!\w)" % prop.name, _properties.option(prop.name), text)
-    return text
+    return _properties.in_words(text, _properties.option)
 
 
 def chosen(volume: vtkImageData) -> str:

@@ -14,7 +14,6 @@ Not in this flavour: SetController (distributed runs under MPI need the
 VTK-wrapped filter of the CMake build).
 """
 import operator
-import re
 import time
 
 import numpy as np
@@ -177,8 +176,7 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
 
     def _message(self, event, text):
         if self.GetPanelLabelsInMessages():
-            for prop in _properties.PROPERTIES:
-                text = re.sub(r"(?<!\w)%s(?!\w)" % prop.name, prop.label, text)
+            text = _properties.in_words(text, lambda name: _properties.BY_NAME[name].label)
         if not vtkObject.GetGlobalWarningDisplay():
             return
         if self.HasObserver(event):

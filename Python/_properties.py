@@ -259,6 +259,15 @@ def describe(prop: Property, name_of: Callable[[str], str] = lambda name: name) 
                   prop.doc)
 
 
+def in_words(text: str, name_of: Callable[[str], str]) -> str:
+    """A message of the filter, which names properties by their names
+    (OffsetDistance), with each name as name_of(name) gives it: the panel's
+    label, the command line's option. Whole names only."""
+    for prop in PROPERTIES:
+        text = re.sub(r"(?<![\w-])%s(?!\w)" % prop.name, name_of(prop.name), text)
+    return text
+
+
 def results_beside(name: str) -> tuple:
     """The results the panel shows right after property `name`."""
     return tuple(r for r in RESULTS if r.beside == name)
