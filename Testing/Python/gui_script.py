@@ -28,18 +28,15 @@ def drawn_pixels(view, png):
     return int((abs(pixels - pixels[0]).sum(axis=1) > 30).sum())
 
 
-def frame_in_a_view_that_drew_nothing(ply, result):
+def frame_in_a_view_that_drew_nothing(ply, view, result):
     """A cloud that draws nothing (a PLY of points has no cells) far from the
-    origin, in the client's first view, shown as Apply shows data
+    origin, in the client's first view (`view`), shown as Apply shows data
     (pqApplyBehavior: each output port through the pipeline controller, and
     the camera reset only when the new representation is the view's one
     visible dataset); then the filter's outputs, the same way. What the view
     shows after."""
     import paraview.simple as pvs
     from paraview import servermanager
-    view = pvs.GetActiveViewOrCreate("RenderView")
-    if os.environ.get("NV_NO_LOD") == "1":  # ParaView 6.1's LOD aborts on flat data: see test_gui.py
-        view.LODThreshold = 1.0e6  # MB
     controller = servermanager.vtkSMParaViewPipelineControllerWithRendering()
 
     def show_as_apply_does(source):
@@ -81,17 +78,17 @@ try:
     import paraview.simple as pvs
 
     LoadPlugin(os.environ["NV_PLUGIN"], ns=globals())
-    if os.environ.get("NV_POINTS_PLY"):
-        # A run of its own: after another view showed a Slice, ParaView 6.1
-        # aborts in its LOD when the client renders again (see test_gui.py).
-        frame_in_a_view_that_drew_nothing(os.environ["NV_POINTS_PLY"], result)
-        result["ok"] = True
-        raise SystemExit
-    cloud = OpenDataFile(os.environ["NV_CLOUD"])
     view = GetActiveViewOrCreate("RenderView")
     if os.environ.get("NV_NO_LOD") == "1":  # ParaView 6.1's LOD aborts on flat data: see test_gui.py
         view.LODThreshold = 1.0e6  # MB
         result["lod_threshold"] = view.LODThreshold
+    if os.environ.get("NV_POINTS_PLY"):
+        # A run of its own: after another view showed a Slice, ParaView 6.1
+        # aborts in its LOD when the client renders again (see test_gui.py).
+        frame_in_a_view_that_drew_nothing(os.environ["NV_POINTS_PLY"], view, result)
+        result["ok"] = True
+        raise SystemExit
+    cloud = OpenDataFile(os.environ["NV_CLOUD"])
     Show(cloud, view)
     cloud.UpdatePipeline()
     shell = NarrowVolumeReconstruction(Input=cloud)  # noqa: F821 (from LoadPlugin)
@@ -118,7 +115,6 @@ try:
     result["volume_extent"] = list(shell.GetDataInformation(0).GetExtent())
     SaveScreenshot(os.environ["NV_SCREENSHOT"], view, ImageResolution=[800, 600])
     # The offset the run chose, and the slider's range (the offset property's bounds domain).
-    from vtkmodules.util.numpy_support import vtk_to_numpy
     field = algorithm.GetOutputDataObject(0).GetFieldData()
     result["offset_used"] = float(field.GetArray("OffsetDistance").GetValue(0))
     # The panel's read-only values of the last Apply (information properties).
@@ -136,14 +132,7 @@ try:
     # The points alone, as they show after Apply: drawn pixels differ from the background.
     pvs.Hide(OutputPort(shell, 1), view)
     pvs.Hide(OutputPort(shell, 0), view)
-    cloud_png = os.environ["NV_SCREENSHOT"].replace(".png", "_points.png")
-    SaveScreenshot(cloud_png, view, ImageResolution=[400, 300])
-    from vtkmodules.vtkIOImage import vtkPNGReader
-    png = vtkPNGReader()
-    png.SetFileName(cloud_png)
-    png.Update()
-    pixels = vtk_to_numpy(png.GetOutput().GetPointData().GetScalars())[:, :3].astype(int)
-    result["cloud_pixels"] = int((abs(pixels - pixels[0]).sum(axis=1) > 30).sum())
+    result["cloud_pixels"] = drawn_pixels(view, os.environ["NV_SCREENSHOT"].replace(".png", "_points.png"))
     pvs.Show(OutputPort(shell, 1), view)
     pvs.Show(OutputPort(shell, 0), view)
     # ParaView's filters on the Volume port, as a user applies them (and

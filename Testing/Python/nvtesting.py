@@ -106,6 +106,16 @@ _EXPLAINING = re.compile(r"ERROR|Error|error:|ERR\||FAILED|Traceback|Exception|X
                          r"cannot|not found|No such")
 
 
+def build_of(plugin_path):
+    """The build folder of a compiled plugin,
+    BUILD/lib/paraview-X.Y/plugins/NarrowVolume/NarrowVolume.so: what
+    scripts/build.sh takes as BUILD_DIR."""
+    folder = os.path.abspath(plugin_path)
+    for _ in range(5):
+        folder = os.path.dirname(folder)
+    return folder
+
+
 def explain(run, tail=8):
     """A failed subprocess.run(..., capture_output=True, text=True) in a few
     lines: its exit code, every line of its output that names an error (however

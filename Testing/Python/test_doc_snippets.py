@@ -195,8 +195,7 @@ def fixtures(require_scans, scans_dir, source_dir, plugin_path):
     env["OMPI_ALLOW_RUN_AS_ROOT"] = env["OMPI_ALLOW_RUN_AS_ROOT_CONFIRM"] = "1"
     # The build the pages call build/ (examples/reconstruct.py looks there,
     # or in BUILD_DIR as scripts/build.sh takes it): the plugin's.
-    env["BUILD_DIR"] = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(
-        os.path.abspath(plugin_path))))))
+    env["BUILD_DIR"] = nvtesting.build_of(plugin_path)
     return {"folder": folder, "env": env, "source_dir": source_dir, "plugin": plugin_path}
 
 

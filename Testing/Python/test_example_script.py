@@ -79,9 +79,8 @@ def test_finds_the_plugin_itself(script, plugin_path):
     another folder: it finds the build's plugin (BUILD_DIR, as
     scripts/build.sh takes it, or build/ beside the source)."""
     out = nvtesting.scratch_folder(prefix="nv-example-find-")
-    build = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(plugin_path)))))
     env = {k: v for k, v in os.environ.items() if k != "PV_PLUGIN_PATH"}
-    env["BUILD_DIR"] = build
+    env["BUILD_DIR"] = nvtesting.build_of(plugin_path)
     result = subprocess.run(["pvpython", script, "--max-dim", "40", "--no-picture", "--out", out], cwd=out, env=env,
                             capture_output=True, text=True, timeout=600)
     print(result.stdout)
