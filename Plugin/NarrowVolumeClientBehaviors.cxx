@@ -161,19 +161,17 @@ public:
     }
     this->WatchedManagers.insert(proxies);
     proxies->AddObserver(vtkCommand::RegisterEvent, this);
-    vtkNew<vtkSMProxyIterator> views;
-    views->SetSessionProxyManager(proxies);
-    views->SetModeToOneGroup();
-    for (views->Begin("views"); !views->IsAtEnd(); views->Next())
+    // The views and filters made before the plugin loaded.
+    vtkNew<vtkSMProxyIterator> registered;
+    registered->SetSessionProxyManager(proxies);
+    registered->SetModeToOneGroup();
+    for (registered->Begin("views"); !registered->IsAtEnd(); registered->Next())
     {
-      this->WatchView(views->GetProxy());
+      this->WatchView(registered->GetProxy());
     }
-    vtkNew<vtkSMProxyIterator> sources;
-    sources->SetSessionProxyManager(proxies);
-    sources->SetModeToOneGroup();
-    for (sources->Begin("sources"); !sources->IsAtEnd(); sources->Next())
+    for (registered->Begin("sources"); !registered->IsAtEnd(); registered->Next())
     {
-      this->WatchFilter(sources->GetProxy());
+      this->WatchFilter(registered->GetProxy());
     }
   }
 

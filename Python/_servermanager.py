@@ -37,16 +37,16 @@ def number(value: Any) -> str:
     return text[:-2] if text.endswith(".0") else text
 
 
-def result_element(table: Any, result: Any, indent: str) -> List[str]:
+def result_element(table: Any, result: Any, indent: str, label: Any) -> List[str]:
     """A value the last run chose, as a read-only (information-only)
-    property that the panel shows and updates after each Apply."""
+    property that the panel shows and updates after each Apply; label(name):
+    another property's panel label."""
     element, helper = (("DoubleVectorProperty", "SimpleDoubleInformationHelper") if result.kind is float
                        else ("IntVectorProperty", "SimpleIntInformationHelper"))
     attributes = ('name="%s" command="Get%s" label=%s information_only="1" number_of_elements="%d" '
                   'default_values="%s" panel_visibility="%s"' % (
                       result.name, result.name, quoteattr(result.label), result.size, " ".join(["0"] * result.size),
                       "advanced" if result.advanced else "default"))
-    label = lambda name: table.BY_NAME[name].label  # noqa: E731
     return ["%s<%s %s>" % (indent, element, attributes),
             "%s  <%s/>" % (indent, helper),
             "%s  <Documentation>%s</Documentation>" % (indent, escape(table.describe(result, label))),
@@ -87,7 +87,7 @@ def property_elements(table: Any, indent: str = "      ") -> List[str]:
         out.append("%s<Documentation>%s</Documentation>" % (inner, escape(table.describe(prop, label))))
         out.append("%s</%s>" % (indent, element))
         for result in table.results_beside(prop.name):
-            out += result_element(table, result, indent)
+            out += result_element(table, result, indent, label)
     groups = []
     for prop in table.PROPERTIES:
         if not groups or groups[-1][0] != prop.group:

@@ -322,15 +322,22 @@ bool Reconstruction::CheckPoints(const std::vector<double>& xyz, double bounds[6
 
 namespace
 {
-/// How far apart two doubles near the cloud's largest coordinate can be at
-/// least: the precision of every coordinate and distance the run computes.
-double CoordinateStep(const double bounds[6])
+/// The largest absolute coordinate of the bounds.
+double Farthest(const double bounds[6])
 {
   double farthest = 0.0;
   for (int i = 0; i < 6; ++i)
   {
     farthest = std::max(farthest, std::abs(bounds[i]));
   }
+  return farthest;
+}
+
+/// How far apart two doubles near the cloud's largest coordinate can be at
+/// least: the precision of every coordinate and distance the run computes.
+double CoordinateStep(const double bounds[6])
+{
+  const double farthest = Farthest(bounds);
   return std::nextafter(farthest, std::numeric_limits<double>::infinity()) - farthest;
 }
 
@@ -377,9 +384,7 @@ bool Reconstruction::CheckPrecision(const double bounds[6], std::int64_t points)
   {
     return true;
   }
-  error << "The coordinates cannot resolve the cloud: it spans " << extent << " at up to "
-        << std::max({ std::abs(bounds[0]), std::abs(bounds[1]), std::abs(bounds[2]), std::abs(bounds[3]),
-             std::abs(bounds[4]), std::abs(bounds[5]) })
+  error << "The coordinates cannot resolve the cloud: it spans " << extent << " at up to " << Farthest(bounds)
         << " from the origin, where double precision steps by " << step << ".\n"
         << FarFromOriginAdvice();
   return this->Fail(error.str());
