@@ -25,14 +25,15 @@
  * the sampled surface up to 3 l wide (radius) are bridged with points
  * before the distance is computed (CloseGaps, ClosingRadius), so that a
  * closed scan gives a closed shell with a cavity; a warning names the holes
- * left open, wider than that.
+ * left open that pierce the evolved shell.
  * Output port 0 (vtkImageData): point array "phi" (float, in [-1, 1]), and on
  * request "InitialPhi" (eq. 2), "Distance" (eq. 6) and "NarrowBand" (1 on
  * band nodes). Its field data holds "NumberOfIterations", "NarrowBandNodes",
  * "RelativeChange" (one value per time step), the "OffsetDistance" and
  * "SampleSpacing" used, the cloud's "MedianPointSpacing", the gap closing
  * ("ClosingRadius" used, "AddedPoints"), the holes left open ("NumberOfGaps",
- * "LargestGap", the radius of the widest, "LargestGapCenter") and the small pieces
+ * "LargestGap", the radius of the widest, "LargestGapCenter"; "PiercedGaps",
+ * those that pierce the evolved shell) and the small pieces
  * removed ("RemovedPieces", "RemovedVoids").
  * Output port 1 (vtkPolyData): the phi = 0 surfaces, with point normals out
  * of the shell, contoured by marching cubes in the band's bricks from the

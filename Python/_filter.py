@@ -50,7 +50,7 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
     "NumberOfIterations", "NarrowBandNodes", "RelativeChange" (one value per
     step), "OffsetDistance" and "SampleSpacing" (l and h used),
     "MedianPointSpacing", "ClosingRadius", "AddedPoints", "NumberOfGaps",
-    "LargestGap" (a radius), "LargestGapCenter",
+    "LargestGap" (a radius), "LargestGapCenter", "PiercedGaps",
     "RemovedPieces" and "RemovedVoids".
     Output port 1 (vtkPolyData): the phi = 0 surfaces with point normals
     ("Normals") and double-precision points, made by the core (marching cubes

@@ -86,9 +86,11 @@ PROPERTIES = (
         "joins its outer and inner sheets, so a closed scan gives no cavity. Holes up to {ClosingRadius} are "
         "filled with points before the distance is computed, so that the wall over them stays at least 0.66 "
         "of the offset thick on each side; wider openings (a scan's border, the mouth of a cup, an open base) "
-        "are left open, and a warning reports them. Concavities and thin parts are not filled. Off: the points "
+        "are left open. After the evolution each hole left open is probed, and a warning names those that "
+        "pierce the shell's wall. Concavities and thin parts are not filled. Off: the points "
         "as given (the paper's method). Field data \"AddedPoints\" counts the points added; \"NumberOfGaps\", "
-        "\"LargestGap\" (a radius) and \"LargestGapCenter\" describe the holes left open."),
+        "\"LargestGap\" (a radius) and \"LargestGapCenter\" describe the holes left open, \"PiercedGaps\" "
+        "counts those that pierce the shell."),
     Property(
         "ClosingRadius", "Closing Radius", float, 0.0, None, None, (), None, "Offset Distance", True, None,
         "The widest hole {CloseGaps} bridges, as the radius of its empty disc, in world units. 0 (the "

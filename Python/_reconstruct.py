@@ -84,8 +84,8 @@ def reconstruct(points: Any, progress: Optional[Callable[[float], None]] = None,
     properties (no points, a NaN coordinate, an offset < 0, a grid too large
     for the memory limit), with the filter's message; TypeError for an
     unknown property. Ctrl-C stops the run within a progress step and raises
-    KeyboardInterrupt. The filter's warnings (gaps wider than the offset, an
-    empty surface, no inner sheet) come as ReconstructionWarning.
+    KeyboardInterrupt. The filter's warnings (holes that pierce the shell, an
+    empty surface, no cavity, a coarsened grid) come as ReconstructionWarning.
 
         volume, surface = narrowvolume.reconstruct(xyz, OffsetDistance=0.05)
     """

@@ -261,7 +261,7 @@ def test_pvserver_with_a_pvpython_client(serial, plugin_path, trefoil):
 # with holes of radius 1.5 l to 3 l at several heights (some across the
 # faces between slabs), and one of 4 l left open. With 2 and 3 ranks: the
 # serial points added, gaps, surface and phi.
-CLOSING_NAMES = ("AddedPoints", "NumberOfGaps", "LargestGap", "LargestGapCenter", "ClosingRadius")
+CLOSING_NAMES = ("AddedPoints", "NumberOfGaps", "PiercedGaps", "LargestGap", "LargestGapCenter", "ClosingRadius")
 
 
 @pytest.fixture(scope="module")
@@ -286,6 +286,7 @@ def holey():
 def test_holey_sphere_serial(holey):
     assert holey.figures["AddedPoints"][0] > 0 and holey.figures["NumberOfGaps"] == [1.0], \
         "holey sphere: points added, the 4 l hole left open"
+    assert holey.figures["PiercedGaps"] == [1.0], "holey sphere: the hole left open pierces the shell"
 
 
 @pytest.mark.parametrize("ranks", [2, 3])

@@ -322,6 +322,10 @@ RemovedPieces RemoveSmallPieces(SurfaceArrays& surface, double offset, const Gri
       part.Drop = true;
       ++removed.Voids;
     }
+    else if (part.Volume < 0.0)
+    {
+      ++removed.Cavities;
+    }
   }
   if (removed.Pieces + removed.Voids == 0)
   {

@@ -32,6 +32,7 @@ struct RemovedPieces
 {
   std::int64_t Pieces = 0; ///< loose pieces made outside
   std::int64_t Voids = 0;  ///< tiny voids made inside
+  std::int64_t Cavities = 0; ///< voids kept: the cavities the shell encloses
 };
 
 /// The volume below which a piece is removed: a ball of radius 2 l.

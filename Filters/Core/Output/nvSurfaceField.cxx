@@ -77,6 +77,11 @@ void BandField::Values(std::int64_t brick, float values[BrickNodes]) const
 {
   const NarrowBand& band = this->Band;
   const std::int64_t a = std::lower_bound(band.Bricks.begin(), band.Bricks.end(), brick) - band.Bricks.begin();
+  if (a == static_cast<std::int64_t>(band.Bricks.size()) || band.Bricks[a] != brick)
+  {
+    std::fill(values, values + BrickNodes, this->Psi.Outside()); // a brick no point reaches
+    return;
+  }
   // Nodes off the band: their side of the shell.
   const std::uint64_t* inside = &band.Inside[8 * a];
   for (int n = 0; n < BrickNodes; ++n)

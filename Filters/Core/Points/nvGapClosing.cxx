@@ -17,10 +17,6 @@ namespace
 /// Directions of the circles through each point, evenly around it (a
 /// circle's centre lies on its direction).
 constexpr int Directions = 32;
-/// After a hole is found, the rims are measured again down to this share of
-/// l: the wall over a bridged hole keeps sqrt(1 - 0.75^2) = 0.66 of its
-/// half-thickness.
-constexpr double BridgeTarget = 0.75;
 /// The holes are looked for among one point per cube of this side (in l).
 constexpr double ThinCells = 0.5;
 /// Rounds of bridging points; each about halves the empty discs left.
@@ -399,6 +395,7 @@ public:
           finding.Disc.Center[a] = centre[a];
         }
         finding.Disc.Radius = empty;
+        finding.Disc.Normal = { { this->Normal[0], this->Normal[1], this->Normal[2] } };
         break;
       }
     }
@@ -784,11 +781,23 @@ GapReport SummarizeHoles(std::vector<Hole> holes, double offset)
       }
     }
   }
+  std::vector<std::size_t> holeOf(n, n);
   for (std::size_t i = 0; i < n; ++i)
   {
     if (root(i) == i)
     {
-      ++report.Gaps;
+      holeOf[i] = report.Holes.size();
+      report.Holes.emplace_back();
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    OpenHole& hole = report.Holes[holeOf[root(i)]];
+    hole.Discs.push_back(holes[i]);
+    if (holes[i].Radius > hole.Radius)
+    {
+      hole.Radius = holes[i].Radius;
+      hole.Center = holes[i].Center;
     }
     if (holes[i].Radius > report.LargestGap)
     {
@@ -796,8 +805,18 @@ GapReport SummarizeHoles(std::vector<Hole> holes, double offset)
       report.LargestGapCenter = holes[i].Center;
     }
   }
+  // Widest first (the order of the centres on ties: the same on every process).
+  std::stable_sort(report.Holes.begin(), report.Holes.end(),
+    [](const OpenHole& a, const OpenHole& b) { return a.Radius > b.Radius; });
+  report.Gaps = static_cast<std::int64_t>(report.Holes.size());
   report.GapPoints = static_cast<std::int64_t>(n);
   return report;
+}
+
+std::int64_t GapReport::PiercedGaps() const
+{
+  return std::count_if(
+    this->Holes.begin(), this->Holes.end(), [](const OpenHole& hole) { return hole.Pierced; });
 }
 
 } // namespace nv

@@ -59,6 +59,28 @@ namespace nv
 {
 class Monitor;
 
+/// One empty disc seen from one rim point: centre (x, y, z), radius, and
+/// the normal of the surface's tangent plane there.
+struct Hole
+{
+  std::array<double, 3> Center;
+  double Radius;
+  std::array<double, 3> Normal{ { 0.0, 0.0, 0.0 } };
+};
+
+/// One hole left open: the empty discs its rim's points see, grouped.
+struct OpenHole
+{
+  double Radius = 0.0;                                    ///< the widest disc's radius (world units)
+  std::array<double, 3> Center{ { 0.0, 0.0, 0.0 } };      ///< the widest disc's centre
+  std::vector<Hole> Discs;                                ///< every disc, where the wall is probed
+  /// Set after the evolution (Reconstruction::ProbeHoles): whether the
+  /// shell's wall has a tunnel there, so that its outer and inner sheets
+  /// join (nvHoleProbe.h). A hole the evolved wall covers is measured but
+  /// harmless.
+  bool Pierced = false;
+};
+
 /// The holes the shell cannot bridge, measured after the gap closing.
 struct GapReport
 {
@@ -66,17 +88,19 @@ struct GapReport
   std::int64_t GapPoints = 0; ///< rim points of those holes
   double LargestGap = 0.0;    ///< radius of the largest empty disc left open (world units)
   std::array<double, 3> LargestGapCenter{ { 0.0, 0.0, 0.0 } }; ///< its centre
-};
+  std::vector<OpenHole> Holes; ///< the Gaps holes, widest first
 
-/// One empty disc seen from one rim point: centre (x, y, z) and radius.
-struct Hole
-{
-  std::array<double, 3> Center;
-  double Radius;
+  /// The holes that pierce the evolved shell.
+  std::int64_t PiercedGaps() const;
 };
 
 /// The automatic closing radius, in offsets: holes of radius up to 3 l.
 constexpr double AutomaticClosingRadius = 3.0;
+/// After a hole is found, the rims are measured again down to this share of
+/// l: the wall over a bridged hole keeps sqrt(1 - 0.75^2) = 0.66 of its
+/// half-thickness. An offset of R / BridgeTarget covers a hole of radius R
+/// with the same margin.
+constexpr double BridgeTarget = 0.75;
 
 class GapClosing
 {

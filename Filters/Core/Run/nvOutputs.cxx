@@ -71,22 +71,129 @@ bool NoInnerSheet(const Settings& settings, std::int64_t cavities)
 // change, with the properties' names (the VTK filter puts the panel's
 // labels in their place in ParaView, the command line its options). The
 // figures are in the Volume output's field data (RunSummary).
-std::string GapWarning(const GapReport& gaps, double closingRadius)
+/// A value rounded up to three significant digits: the least value to set
+/// that a message can print exactly.
+double RoundUp(double value)
+{
+  if (!(value > 0.0) || !std::isfinite(value))
+  {
+    return value;
+  }
+  const double unit = std::pow(10.0, std::floor(std::log10(value)) - 2.0);
+  return std::ceil(value / unit) * unit;
+}
+
+std::string Plural(std::int64_t count, const char* one, const char* many)
+{
+  return std::to_string(count) + " " + (count == 1 ? one : many);
+}
+
+std::string HoleFigures(const OpenHole& widest, std::int64_t count)
 {
   std::ostringstream text;
-  text << gaps.Gaps << (gaps.Gaps == 1 ? " gap" : " gaps") << " in the sampling "
-       << (gaps.Gaps == 1 ? "is" : "are") << " wider than "
-       << (closingRadius > 0.0 ? "ClosingRadius" : "the offset distance")
-       << ": the shell's wall is pierced there (the largest has radius " << gaps.LargestGap
-       << "; field data LargestGap, LargestGapCenter).\n";
-  if (closingRadius > 0.0)
+  text << (count == 1 ? "(radius " : "(the widest has radius ") << widest.Radius << ", centre (" << widest.Center[0]
+       << ", " << widest.Center[1] << ", " << widest.Center[2] << "); field data PiercedGaps)";
+  return text.str();
+}
+
+/// The warnings about the holes left open that pierce the evolved shell
+/// (OpenHole::Pierced; the others are covered by the wall and only counted
+/// in NumberOfGaps), in two kinds, each with the change that covers it:
+/// holes wider than ClosingRadius (or than l when nothing is bridged), which
+/// a larger radius bridges, and holes the bridging left open although they
+/// are narrower (its rounds ran out, or their rim is not flat enough to
+/// bridge: nvGapClosing.h), which only a thicker wall covers.
+std::vector<std::string> GapWarnings(const GapReport& gaps, double closingRadius, double offset)
+{
+  const OpenHole* widest[2] = { nullptr, nullptr };
+  std::int64_t count[2] = { 0, 0 };
+  for (const OpenHole& hole : gaps.Holes) // widest first
   {
-    text << "If they are gaps, not the surface's own openings, set ClosingRadius to " << gaps.LargestGap
-         << " or more, or OffsetDistance above it.";
+    if (hole.Pierced)
+    {
+      const int left = closingRadius > 0.0 && hole.Radius <= closingRadius ? 1 : 0;
+      ++count[left];
+      widest[left] = widest[left] ? widest[left] : &hole;
+    }
+  }
+  std::vector<std::string> warnings;
+  if (count[0] > 0)
+  {
+    std::ostringstream text;
+    text << Plural(count[0], "hole", "holes") << " in the sampling " << (count[0] == 1 ? "is" : "are")
+         << " wider than " << (closingRadius > 0.0 ? "ClosingRadius (" : "OffsetDistance (")
+         << (closingRadius > 0.0 ? closingRadius : offset) << ") and pierce" << (count[0] == 1 ? "s" : "")
+         << " the shell's wall " << HoleFigures(*widest[0], count[0])
+         << ".\n";
+    if (closingRadius > 0.0)
+    {
+      text << "If they are gaps, not the surface's own openings, set ClosingRadius to " << RoundUp(widest[0]->Radius)
+           << " or more to bridge them.";
+    }
+    else
+    {
+      text << "Turn CloseGaps on, or set OffsetDistance to " << RoundUp(widest[0]->Radius / BridgeTarget)
+           << " or more to cover them.";
+    }
+    warnings.push_back(text.str());
+  }
+  if (count[1] > 0)
+  {
+    std::ostringstream text;
+    text << Plural(count[1], "hole", "holes") << " narrower than ClosingRadius (" << closingRadius << ") "
+         << (count[1] == 1 ? "was" : "were")
+         << " left open by the gap closing (its rounds ran out, or the rim is too uneven to bridge) and pierce"
+         << (count[1] == 1 ? "s" : "") << " the shell's wall " << HoleFigures(*widest[1], count[1]) << ".\n"
+         << "A larger ClosingRadius does not change that: set OffsetDistance to "
+         << RoundUp(widest[1]->Radius / BridgeTarget) << " or more, and the wall covers "
+         << (count[1] == 1 ? "it." : "them.");
+    warnings.push_back(text.str());
+  }
+  return warnings;
+}
+
+std::string OffsetOverCloudWarning(double offset, double diagonal)
+{
+  std::ostringstream text;
+  text << "OffsetDistance (" << offset << ") is larger than the cloud itself (the diagonal of its bounds is "
+       << diagonal << "): the shell is a ball around all the points, with none of their shape.\n"
+       << "Set OffsetDistance well below " << diagonal << ", or to 0 for the value the sampling asks for.";
+  return text.str();
+}
+
+std::string CoarsenedGridWarning(const Reconstruction& run)
+{
+  const Plan& plan = run.GetPlan();
+  const Grid& grid = run.GetGrid();
+  std::ostringstream text;
+  text << "The grid was coarsened to keep it within " << AutomaticMaximumDimension
+       << " cells on its longest side: SampleSpacing " << grid.Spacing << " instead of " << plan.CoarsenedFrom;
+  if (plan.AutomaticOffset && run.GetParameters().OffsetDistance > plan.OffsetBeforeCoarsening)
+  {
+    text << ", and OffsetDistance raised from " << plan.OffsetBeforeCoarsening << " (what the sampling asks for) to "
+         << run.GetParameters().OffsetDistance << " (4 cells)";
+  }
+  text << ".\nFor the finer grid set SampleSpacing to " << plan.CoarsenedFrom << " (or MaximumDimension to "
+       << static_cast<long long>(std::ceil(AutomaticMaximumDimension * grid.Spacing / plan.CoarsenedFrom))
+       << "), memory permitting.";
+  return text.str();
+}
+
+std::string OpenShellWarning(const GapReport& gaps, double closingRadius, double offset)
+{
+  std::ostringstream text;
+  text << "The shell encloses no cavity, so it is a thickened sheet or a solid, not a hollow: the sampled surface is "
+          "open (right for an open scan), or the object is thinner than twice OffsetDistance ("
+       << offset << ") and the wall fills it.\n";
+  if (gaps.PiercedGaps() > 0)
+  {
+    text << "For a hollow, bridge the holes that pierce the wall (the warning before this one), or lower "
+            "OffsetDistance for a thin object; a scan's own open edges stay open.";
   }
   else
   {
-    text << "Turn CloseGaps on, or set OffsetDistance to " << gaps.LargestGap << " or more.";
+    text << "For a hollow, lower OffsetDistance for a thin object; an opening is bridged only up to ClosingRadius ("
+         << closingRadius << "): raise it to the opening's radius, or scan the missing side.";
   }
   return text.str();
 }
@@ -152,6 +259,7 @@ std::vector<SummaryArray> RunSummary(const Reconstruction& run, const RemovedPie
     { "ClosingRadius", SummaryArray::Double, 1, { run.GetPlan().ClosingRadius } },
     { "AddedPoints", SummaryArray::Id, 1, { static_cast<double>(run.AddedPoints()) } },
     { "NumberOfGaps", SummaryArray::Double, 1, { static_cast<double>(gaps.Gaps) } },
+    { "PiercedGaps", SummaryArray::Double, 1, { static_cast<double>(gaps.PiercedGaps()) } },
     { "LargestGap", SummaryArray::Double, 1, { gaps.LargestGap } },
     { "LargestGapCenter", SummaryArray::Double, 3,
       { gaps.LargestGapCenter[0], gaps.LargestGapCenter[1], gaps.LargestGapCenter[2] } },
@@ -256,14 +364,32 @@ Outcome Reconstruct(Reconstruction& run, std::vector<double> xyz, std::shared_pt
   }
   if (run.FirstProcess())
   {
+    const Settings& settings = run.GetSettings();
+    const Plan& plan = run.GetPlan();
     const double offset = run.GetParameters().OffsetDistance;
+    if (plan.Diagonal > 0.0 && offset > plan.Diagonal)
+    {
+      outcome.Warnings.push_back(OffsetOverCloudWarning(offset, plan.Diagonal));
+    }
+    if (plan.CoarsenedFrom > 0.0)
+    {
+      outcome.Warnings.push_back(CoarsenedGridWarning(run));
+    }
     if (offset < LeastCellsPerOffset * run.GetGrid().Spacing)
     {
       outcome.Warnings.push_back(CoarseGridWarning(run));
     }
-    if (run.GetGaps().Gaps > 0)
+    for (std::string& warning : GapWarnings(run.GetGaps(), plan.ClosingRadius, offset))
     {
-      outcome.Warnings.push_back(GapWarning(run.GetGaps(), run.GetPlan().ClosingRadius));
+      outcome.Warnings.push_back(std::move(warning));
+    }
+    // The cavities are counted with the small pieces, on the whole surface
+    // of both sheets.
+    const bool counted = settings.RemoveSmallPieces && !distributed && settings.Sheets == Sheets::Both;
+    if (counted && surfacePoints > 0 && outcome.Removed.Cavities == 0 &&
+      plan.Diagonal > 0.0 && !(offset > plan.Diagonal))
+    {
+      outcome.Warnings.push_back(OpenShellWarning(run.GetGaps(), plan.ClosingRadius, offset));
     }
     if (surfacePoints == 0 && !explained)
     {

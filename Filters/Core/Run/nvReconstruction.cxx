@@ -3,6 +3,7 @@
 #include "nvReconstruction.h"
 
 #include "nvCommunicator.h"
+#include "nvHoleProbe.h"
 #include "nvMemory.h"
 #include "nvParallel.h"
 #include "nvSurface.h"
@@ -79,6 +80,8 @@ Settings ResolveAutomatic(const Settings& settings, const SamplingStatistics& sa
       SpacingForMaximumDimension(bounds, values.OffsetDistance, values.XiCells, AutomaticMaximumDimension);
     if (coarsest > spacing)
     {
+      plan.CoarsenedFrom = spacing;
+      plan.OffsetBeforeCoarsening = values.OffsetDistance;
       spacing = coarsest;
       if (automaticOffset)
       {
@@ -229,6 +232,8 @@ Plan MakePlan(const Settings& chosen, const double bounds[6], const SamplingStat
     return plan;
   }
   plan.TheGrid = MakeGrid(bounds, parameters.Spacing, padding);
+  plan.Diagonal = std::sqrt(std::pow(bounds[1] - bounds[0], 2) + std::pow(bounds[3] - bounds[2], 2) +
+    std::pow(bounds[5] - bounds[4], 2));
   if (settings.CloseGaps)
   {
     plan.ClosingRadius = settings.ClosingRadius > 0.0 ? settings.ClosingRadius
@@ -286,7 +291,7 @@ bool Reconstruction::RunSteps(std::vector<double> xyz, std::shared_ptr<const Sam
   // The steps of this file's header, each false when the run stops.
   double bounds[6];
   return this->CheckPoints(xyz, bounds) && this->PlanGrid(xyz, bounds, std::move(measured)) &&
-    this->GatherPoints(xyz) && this->BuildBand(std::move(xyz)) && this->Evolve();
+    this->GatherPoints(xyz) && this->BuildBand(std::move(xyz)) && this->Evolve() && this->ProbeHoles();
 }
 
 bool Reconstruction::CheckPoints(const std::vector<double>& xyz, double bounds[6])
@@ -568,6 +573,40 @@ bool Reconstruction::Evolve()
   return true;
 }
 
+bool Reconstruction::ProbeHoles()
+{
+  // 6b. Whether each hole left open pierces the evolved shell
+  // (nvHoleProbe.h). Each process probes the discs in its own brick layers.
+  std::vector<OpenHole>& holes = this->Gaps.Holes;
+  if (holes.empty())
+  {
+    return true;
+  }
+  const Grid& grid = this->ThePlan.TheGrid;
+  const std::int64_t layers = BrickLayers(grid);
+  const LayerRange owned = this->Part.Owned;
+  const BandField field(this->Band, this->Solver->GetPhi(), this->ThePlan.Scheme);
+  std::vector<double> pierced(holes.size(), 0.0);
+  ParallelFor(0, static_cast<std::int64_t>(holes.size()), 1, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t i = begin; i < end; ++i)
+    {
+      pierced[i] = Pierces(field, grid, holes[i], this->ThePlan.Scheme.OffsetDistance,
+                     [&](const Hole& disc) { return owned.Contains(BrickLayerOf(grid, disc.Center[2], layers)); })
+        ? 1.0
+        : 0.0;
+    }
+  });
+  if (this->Comm)
+  {
+    this->Comm->SumAll(pierced.data(), static_cast<int>(pierced.size()));
+  }
+  for (std::size_t i = 0; i < holes.size(); ++i)
+  {
+    holes[i].Pierced = pierced[i] > 0.0;
+  }
+  return true;
+}
+
 void Reconstruction::ReleaseBand()
 {
   this->TheHalo.reset();
@@ -633,14 +672,16 @@ bool Reconstruction::CloseGaps(std::vector<double>& xyz, GapClosing& closing)
     std::vector<double> mine;
     for (const Hole& hole : holes)
     {
-      mine.insert(mine.end(), { hole.Center[0], hole.Center[1], hole.Center[2], hole.Radius });
+      mine.insert(mine.end(), { hole.Center[0], hole.Center[1], hole.Center[2], hole.Radius, hole.Normal[0],
+                                hole.Normal[1], hole.Normal[2] });
     }
     const std::vector<double> all =
       this->Comm->Exchange(std::vector<std::vector<double>>(static_cast<std::size_t>(this->Comm->Size()), mine));
     holes.clear();
-    for (std::size_t i = 0; i + 3 < all.size(); i += 4)
+    for (std::size_t i = 0; i + 6 < all.size(); i += 7)
     {
-      holes.push_back(Hole{ { { all[i], all[i + 1], all[i + 2] } }, all[i + 3] });
+      holes.push_back(
+        Hole{ { { all[i], all[i + 1], all[i + 2] } }, all[i + 3], { { all[i + 4], all[i + 5], all[i + 6] } } });
     }
     added = this->SumAll(added);
   }

@@ -19,7 +19,8 @@
 //      and, on request, the dense arrays of the output from the same
 //      distances (nvVolume.h);
 //   6. the time steps of the operator-split scheme (eq. 10-12), then the
-//      band's phi into the dense arrays;
+//      band's phi into the dense arrays, and whether each hole left open
+//      pierces the evolved shell (GapReport);
 //   7. the phi = 0 surface, from the band (ExtractSurface, nvSurface.h).
 //
 // The VTK filter (vtkNarrowVolumeReconstruction) only converts: the input's
@@ -60,6 +61,12 @@ struct Plan
   double ClosingRadius = 0.0;
   bool AutomaticOffset = false;
   bool AutomaticSpacing = false;
+  /// The automatic grid was coarsened to AutomaticMaximumDimension cells on
+  /// its longest side: the spacing l / 4 asked for (0: not coarsened), and
+  /// the automatic offset before it was raised to 4 h on that grid.
+  double CoarsenedFrom = 0.0;
+  double OffsetBeforeCoarsening = 0.0;
+  double Diagonal = 0.0; ///< the diagonal of the points' bounding box
   std::string Error; ///< why there is no grid; empty when there is one
   bool Valid() const { return this->Error.empty(); }
 };
@@ -166,6 +173,7 @@ private:
   bool GatherPoints(std::vector<double>& xyz);
   bool BuildBand(std::vector<double> xyz);
   bool Evolve();
+  bool ProbeHoles();
   bool Fail(const std::string& message);
   bool CheckMemory(double gridNodes, double points);
   void Partition(const std::vector<double>& xyz, std::int64_t layers);
