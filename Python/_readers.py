@@ -34,6 +34,11 @@ def read_text(filename):
         raise PCDError(str(error))
 
 
+# The compiled plugin's text reader is ASCIIPointCloudReader, a name that
+# ParaView's reader factory tries before its CSV and PLOT3D readers, since
+# its CanReadFile accepts only files of numbers (Plugin/NarrowVolumeReaders.xml).
+# A Python reader cannot answer CanReadFile, so this one keeps the name that
+# comes after them: OpenDataFile leaves .xyz, .txt and .csv to ParaView's readers.
 @smproxy.reader(name="PointCloudTextReader", label="Point Cloud Text Reader",
                 extensions=["xyz", "txt", "csv"], file_description="Point Cloud Text Files (x y z)")
 class PointCloudTextReader(ScanFileReader):
