@@ -346,6 +346,12 @@ bool CheckAsciiData(const nv::ply::Header& header, std::istream& data, std::stri
         return Fail(error, "the file ends after ", record, " of the ", element.Count, " records of ",
           Describe(element), ": it is truncated or its count is wrong (copy or export the file again)");
       }
+      if (data.eof())
+      {
+        // vtkPLYReader aborts on a last record without its newline.
+        return Fail(error, "line ", lineNumber + 1, ", the last, has no end of line: the file is truncated (if "
+          "it is whole, add a newline at its end)");
+      }
       ++lineNumber;
       const std::vector<std::string> tokens = Tokens(line);
       std::size_t at = 0;
@@ -463,7 +469,12 @@ bool nv::ply::ParseHeader(
     at = static_cast<std::size_t>(newline - text) + 1;
     ++lineNumber;
     const std::vector<std::string> tokens = Tokens(line);
-    if (lineNumber == 1 || tokens.empty() || tokens[0] == "comment" || tokens[0] == "obj_info")
+    if (tokens.empty())
+    {
+      // vtkPLYReader crashes on an empty header line.
+      return Fail(error, "header line ", lineNumber, " is empty: a PLY header has no empty lines");
+    }
+    if (lineNumber == 1 || tokens[0] == "comment" || tokens[0] == "obj_info")
     {
       continue;
     }
@@ -585,11 +596,22 @@ bool nv::ply::ParseHeader(
     }
   }
 
+  // vtkPLYReader reads the corners of faces from this list, whatever it finds.
+  const int face = header.Find("face");
+  if (face >= 0 && header.Elements[face].Count > 0)
+  {
+    const Element& faces = header.Elements[face];
+    int corners = faces.Find("vertex_indices");
+    corners = corners >= 0 ? corners : faces.Find("vertex_index");
+    if (corners < 0 || !faces.Properties[corners].IsList)
+    {
+      return Fail(error, "the face element has no vertex_indices list (the corners of each face)");
+    }
+  }
+
   // The least the data can take: binary values and list counts at their
   // sizes (lists may be empty), ASCII values at 2 bytes ("0" and a space).
   const std::uint64_t available = fileSize - header.DataOffset;
-  // The last ASCII value may lack its newline.
-  const std::uint64_t budget = available + (header.DataFormat == Format::Ascii ? 1 : 0);
   std::uint64_t needed = 0;
   for (const Element& element : header.Elements)
   {
@@ -604,7 +626,7 @@ bool nv::ply::ParseHeader(
         ? 2
         : static_cast<std::uint64_t>(SizeOf(property.IsList ? property.CountType : property.ValueType));
     }
-    if (least > 0 && element.Count > (budget - needed) / least)
+    if (least > 0 && element.Count > (available - needed) / least)
     {
       return Fail(error, "the header announces ", element.Count, " records of ", Describe(element), " (at least ", element.Count, " x ", least, " bytes), but the file holds ", available,
         " bytes after its header: it is truncated or the count is wrong (copy or export the file again)");
