@@ -38,13 +38,17 @@ namespace
 /// the user's (VTK_DOUBLE_MAX), which ParaView loads at start-up.
 constexpr double SettingsPriority = 0.5;
 
-// An entry of the "Default reader details" setting: file patterns, the
-// description of the file type, the reader's proxy name.
-const char* const XYZEntry[3] = { "*.xyz", "Point Cloud Text Files (x y z)", "PointCloudTextReader" };
-const char* const XYZDefaultReader = R"json({
+// The entries of the "Default reader details" setting, three strings each:
+// file patterns, the description of the file type, the reader's proxy name.
+// .xyz: ParaView's PLOT3D and XYZ readers claim it too; .ply: ParaView's PLY
+// reader, which the plugin's replaces (it checks the file first).
+const char* const DefaultReaders[6] = { "*.xyz", "Point Cloud Text Files (x y z)", "ASCIIPointCloudReader",
+  "*.ply", "PLY Files (checked)", "PLYPointCloudReader" };
+const char* const DefaultReadersSetting = R"json({
   "settings": {
     ")json" NARROWVOLUME_READER_SETTINGS R"json(": {
-      "ReaderDetails": ["*.xyz", "Point Cloud Text Files (x y z)", "PointCloudTextReader"]
+      "ReaderDetails": ["*.xyz", "Point Cloud Text Files (x y z)", "ASCIIPointCloudReader",
+                        "*.ply", "PLY Files (checked)", "PLYPointCloudReader"]
     }
   }
 })json";
@@ -103,7 +107,7 @@ void NarrowVolumePluginStartup()
     loader->LoadPluginSilently(readers.c_str());
   }
 
-  vtkSMSettings::GetInstance()->AddCollectionFromString(XYZDefaultReader, SettingsPriority);
+  vtkSMSettings::GetInstance()->AddCollectionFromString(DefaultReadersSetting, SettingsPriority);
   // A settings proxy created before this reads its values from the settings
   // then, without the entry; ParaView writes the proxy's values back over the
   // user's settings whenever the Settings dialog is applied, and an empty list
@@ -116,9 +120,9 @@ void NarrowVolumePluginStartup()
     vtkSMPropertyHelper details(proxy, "ReaderDetails", /*quiet=*/true);
     if (details.GetNumberOfElements() == 0)
     {
-      for (unsigned int k = 0; k < 3; ++k)
+      for (unsigned int k = 0; k < 6; ++k)
       {
-        details.Set(k, XYZEntry[k]);
+        details.Set(k, DefaultReaders[k]);
       }
     }
   }

@@ -8,7 +8,9 @@ sits in python/ below NarrowVolume.so); it also loads on its own with
 LoadPlugin(".../NarrowVolumeScanReaders.py"). laspy and pye57 are imported
 only when a file is read: without them the readers are still listed, and
 reading a file ends in an error that gives the pip command installing them
-for this ParaView's Python.
+for this ParaView's Python. The command line of both packages reads these
+files with read_laz and read_e57, importing this file as
+narrowvolume._scanreaders.
 
 Both readers give what the C++ readers give: a vtkPolyData with the points
 in double precision and one vertex cell per point. LAZ files have the point
@@ -22,7 +24,22 @@ import sys
 import sysconfig
 
 import numpy as np
-from paraview.util.vtkAlgorithm import VTKPythonAlgorithmBase, smdomain, smhint, smproperty, smproxy
+
+try:
+    from paraview.util.vtkAlgorithm import VTKPythonAlgorithmBase, smdomain, smhint, smproperty, smproxy
+except ImportError:
+    # Without ParaView: the command line of the pip package reads .las, .laz
+    # and .e57 files with read_laz and read_e57 (it imports this file as
+    # narrowvolume._scanreaders); the reader classes below are then plain
+    # classes that nothing registers.
+    class _Undecorated:
+        """ParaView's decorators as no-ops."""
+
+        def __getattr__(self, name):
+            return lambda *args, **kwargs: (lambda decorated: decorated)
+
+    VTKPythonAlgorithmBase = object
+    smdomain = smhint = smproperty = smproxy = _Undecorated()
 from vtkmodules.util.numpy_support import numpy_to_vtk
 from vtkmodules.util.vtkConstants import VTK_ID_TYPE
 from vtkmodules.vtkCommonCore import vtkCommand, vtkOutputWindow, vtkPoints
@@ -42,20 +59,23 @@ def install_command(*requirements):
     (pvpython and paraview run /usr/bin/python3.11's on Debian 12). Debian
     marks its Python externally managed, so pip wants
     --break-system-packages even for a --user install there."""
+    if sys.prefix != sys.base_prefix:  # a virtual environment (the pip package's command line)
+        return "%s -m pip install %s" % (sys.executable, " ".join("'%s'" % r for r in requirements))
     python = os.path.join(sys.base_prefix, "bin", "python%d.%d" % sys.version_info[:2])
     managed = os.path.exists(os.path.join(sysconfig.get_path("stdlib"), "EXTERNALLY-MANAGED"))
     return "%s -m pip install --user%s %s" % (python, " --break-system-packages" if managed else "",
                                               " ".join("'%s'" % r for r in requirements))
 
 
-def import_laspy():
-    """laspy, with a LAZ backend (lazrs or laszip)."""
+def import_laspy(compressed=True):
+    """laspy, with a LAZ backend (lazrs or laszip) for `compressed` files."""
     try:
         import laspy
     except ImportError as error:
-        raise MissingModule("reading .laz files needs the Python modules laspy and lazrs, which do not import "
-                            "here (%s). Install them with: %s" % (error, install_command("laspy[lazrs]")))
-    if not laspy.LazBackend.detect_available():
+        raise MissingModule("reading .%s files needs the Python modules laspy and lazrs, which do not import "
+                            "here (%s). Install them with: %s" % ("laz" if compressed else "las", error,
+                                                                  install_command("laspy[lazrs]")))
+    if compressed and not laspy.LazBackend.detect_available():
         raise MissingModule("laspy imports but has no LAZ backend to decompress with. Install lazrs with: %s"
                             % install_command("lazrs"))
     return laspy
@@ -98,7 +118,7 @@ def point_cloud(xyz, arrays, scalars=None):
 def read_laz(filename):
     """A .laz (or .las) file as a vtkPolyData with the arrays of
     vtkLASPointCloudReader."""
-    laspy = import_laspy()
+    laspy = import_laspy(compressed=not filename.lower().endswith(".las"))
     las = laspy.read(filename)
     point_format = las.header.point_format.id
     names = set(las.point_format.dimension_names)

@@ -17,7 +17,8 @@ The package comes in two flavours with the same API:
   (module NarrowVolume::Readers), which give vtkPolyData clouds with a vertex
   per point: vtkPointCloudTextReader reads .xyz / .pts text,
   vtkLASPointCloudReader LAS 1.0-1.4, vtkPCDPointCloudReader PCD (ascii,
-  binary, binary_compressed);
+  binary, binary_compressed); vtkPLYPointCloudReader reads PLY as
+  vtkPLYReader does, once it has checked the file;
 - installed by pip (`pip install .`; FLAVOUR "wheel"): the same C++ core,
   built without VTK, driven by a Python filter that uses the vtk installed
   beside it. The readers are None there.
@@ -27,18 +28,19 @@ import sys
 
 if importlib.util.find_spec(__name__ + ".NarrowVolumeFilters") is not None:
     from .NarrowVolumeFilters import vtkNarrowVolumeReconstruction
-    from .NarrowVolumeReaders import vtkLASPointCloudReader, vtkPCDPointCloudReader, vtkPointCloudTextReader
+    from .NarrowVolumeReaders import (vtkLASPointCloudReader, vtkPCDPointCloudReader, vtkPLYPointCloudReader,
+                                      vtkPointCloudTextReader)
     FLAVOUR = "vtk-module"
 else:
     from ._filter import vtkNarrowVolumeReconstruction
-    vtkLASPointCloudReader = vtkPCDPointCloudReader = vtkPointCloudTextReader = None
+    vtkLASPointCloudReader = vtkPCDPointCloudReader = vtkPLYPointCloudReader = vtkPointCloudTextReader = None
     FLAVOUR = "wheel"
 
 from ._reconstruct import ReconstructionError, ReconstructionWarning, reconstruct
 from ._version import __version__
 
 __all__ = ["vtkNarrowVolumeReconstruction", "vtkLASPointCloudReader", "vtkPCDPointCloudReader",
-           "vtkPointCloudTextReader", "reconstruct", "ReconstructionError", "ReconstructionWarning", "FLAVOUR", "__version__"]
+           "vtkPLYPointCloudReader", "vtkPointCloudTextReader", "reconstruct", "ReconstructionError", "ReconstructionWarning", "FLAVOUR", "__version__"]
 
 # With pyvista already imported, point sets get cloud.narrowvolume.reconstruct()
 # now (otherwise pyvista 0.48 and later load it through the wheel's entry point).

@@ -7,8 +7,12 @@
     pvpython -m narrowvolume scan.ply -o shell.stl      (the CMake build's package)
 
 The cloud: any file VTK reads as a point set (by extension: .vtp .vtu .vts
-.vtk .ply .stl .obj .pts, and their parallel .pvtp .pvtu), and plain-text
-clouds .xyz .txt .csv (x y z in the first three columns). Each output is
+.vtk .ply .stl .obj .pts, and their parallel .pvtp .pvtu; a .ply is checked
+before VTK reads it), plain-text clouds .xyz .txt .csv (x y z in the first
+three columns), LiDAR .las and .laz, PCL's .pcd, and .e57 scans (.laz and
+.e57, and .las and .pcd in the pip package, through the Python modules
+laspy with lazrs, and pye57: an error names the pip package a file needs
+when its module is missing). Each output is
 written by its extension: .stl, .vtp or .ply the surface, .vti the volume (VTK
 XML files in Binary mode). Every property of the filter is an option, with the
 filter's default. Exit status: 0 done, 1 the run or a file failed (the message
@@ -46,6 +50,11 @@ READERS = {
     ".pts": ("vtkIOGeometry", "vtkPTSReader"),
 }
 TEXT = (".xyz", ".txt", ".csv")
+# Clouds the project's readers read: the CMake build's C++ readers (.las,
+# .pcd), else the Python ones (.las and .laz through laspy, .e57 through
+# pye57: the ParaView plugin's Python readers' functions; .pcd in numpy).
+SCANS = (".las", ".laz", ".pcd", ".e57")
+CLOUDS = sorted(set(READERS) | set(TEXT) | set(SCANS))
 # Writers by extension: (module, class, which output, binary file).
 WRITERS = {
     ".stl": ("vtkIOGeometry", "vtkSTLWriter", "surface"),
@@ -71,7 +80,10 @@ def _errors_of(algorithm, event="ErrorEvent"):
     from vtkmodules.util.vtkConstants import VTK_STRING
 
     errors = []
-    algorithm.AddObserver(event, calldata_type(VTK_STRING)(lambda caller, event, text: errors.append(text)))
+    # VTK hands over None for a message that is not valid UTF-8 (a line of
+    # binary bytes quoted in it).
+    algorithm.AddObserver(event, calldata_type(VTK_STRING)(lambda caller, event, text: errors.append(
+        text if text is not None else "(a message with bytes that are not text)")))
     return errors
 
 
@@ -123,7 +135,8 @@ def _read_text_columns(text):
 def _read_text_lines(text, path):
     """x y z line by line, with the number of a line that is not a point."""
     rows = []
-    for number, line in enumerate(text.splitlines(), 1):
+    lines = text.splitlines()
+    for number, line in enumerate(lines, 1):
         fields, values = _text_row(line)
         if fields is None:
             continue
@@ -135,6 +148,9 @@ def _read_text_lines(text, path):
             rows.append(values)
         elif not (len(fields) == 1 and not rows):  # a .pts file's point count
             raise Failure("%s, line %d: not a point (x y z): %r" % (path, number, line.strip()))
+    if not rows:
+        raise Failure("%s: no line of x y z numbers in its %d lines: not a text point cloud%s" % (
+            path, len(lines), " (it holds binary data)" if "\ufffd" in text or "\0" in text else ""))
     return np.array(rows, dtype=np.float64).reshape(-1, 3)
 
 
@@ -158,6 +174,37 @@ def _read_text(path):
     return point_cloud(read_text_points(path))
 
 
+def _named(path, message):
+    """A reader's message, with the file's name in front unless it names it already."""
+    return message if path in message else "%s: %s" % (path, message)
+
+
+def _read_scan(path, extension):
+    """.las, .laz and .e57 through laspy and pye57 (the ParaView plugin's
+    Python readers' functions), .pcd in numpy: what the pip package reads
+    without C++ readers, and the CMake build's package for .laz and .e57."""
+    from . import _scanreaders
+    try:
+        if extension == ".pcd":
+            from ._pcd import read_pcd
+            return read_pcd(path)
+        return (_scanreaders.read_e57 if extension == ".e57" else _scanreaders.read_laz)(path)
+    except _scanreaders.MissingModule as error:
+        raise Failure("%s: %s" % (path, error))
+    except Exception as error:  # the modules' own errors on a damaged file
+        raise Failure("%s: cannot read it: %s: %s" % (path, type(error).__name__, error))
+
+
+def _check_ply(path):
+    """The pip package's check of a .ply file before vtk's vtkPLYReader
+    reads it (nv::ply::CheckFile, which the CMake build's
+    vtkPLYPointCloudReader runs itself)."""
+    from . import _core
+    problem = _core.check_ply_file(path)
+    if problem:
+        raise Failure("%s: %s." % (path, problem))
+
+
 def read_cloud(path: str) -> vtkPointSet:
     """The point set of a cloud file."""
     if not os.path.isfile(path):
@@ -165,36 +212,43 @@ def read_cloud(path: str) -> vtkPointSet:
     extension = os.path.splitext(path)[1].lower()
     import narrowvolume
 
-    # The CMake build's package has the project's readers (None in the wheel).
-    ours = {".las": narrowvolume.vtkLASPointCloudReader, ".pcd": narrowvolume.vtkPCDPointCloudReader}
+    # The CMake build's package has the project's C++ readers (None in the wheel).
+    ours = {".las": narrowvolume.vtkLASPointCloudReader, ".pcd": narrowvolume.vtkPCDPointCloudReader,
+            ".ply": narrowvolume.vtkPLYPointCloudReader}
     if extension in TEXT or (extension == ".pts" and narrowvolume.vtkPointCloudTextReader is not None):
         if narrowvolume.vtkPointCloudTextReader is None:
             return _read_text(path)
         reader = narrowvolume.vtkPointCloudTextReader()
     elif ours.get(extension) is not None:
         reader = ours[extension]()
-    elif extension in ours:
-        raise Failure("%s: %s files need the CMake build's package (pvpython -m narrowvolume), whose readers "
-                      "are C++ VTK modules" % (path, extension))
+    elif extension in SCANS:
+        cloud = _read_scan(path, extension)
+        if cloud.GetNumberOfPoints() == 0:
+            raise Failure("%s: holds no points" % path)
+        return cloud
     elif extension in READERS:
+        if extension == ".ply":
+            _check_ply(path)
         reader = _vtk_class(*READERS[extension])()
     else:
-        raise Failure("%s: unknown cloud format %r; known: %s" % (
-            path, extension, " ".join(sorted(set(READERS) | set(TEXT)))))
+        raise Failure("%s: unknown cloud format %r; known: %s" % (path, extension, " ".join(CLOUDS)))
     reader.SetFileName(path)
     from ._reconstruct import _message_of
 
     errors = _errors_of(reader)
     warnings = _errors_of(reader, "WarningEvent")  # vtkPLYReader reports an unreadable file as a warning
+    _errors_of(reader.GetExecutive())  # a failed request's dump of the pipeline: the reader's error says why
     reader.Update()
     data = reader.GetOutputDataObject(0)
     if errors:
-        raise Failure("%s: %s" % (path, _message_of(errors[-1])))
+        raise Failure(_named(path, _message_of(errors[-1])))
     if warnings and (data is None or data.GetNumberOfPoints() == 0):
-        raise Failure("%s: %s" % (path, _message_of(warnings[-1])))
+        raise Failure(_named(path, _message_of(warnings[-1])))
     from vtkmodules.vtkCommonDataModel import vtkPointSet
     if not isinstance(data, vtkPointSet):
         raise Failure("%s: holds a %s, not a point set" % (path, data.GetClassName() if data else "nothing"))
+    if data.GetNumberOfPoints() == 0:
+        raise Failure("%s: holds no points" % path)
     return data
 
 
@@ -314,8 +368,7 @@ def make_parser(defaults: Dict[str, Any]) -> argparse.ArgumentParser:
     """The command line's parser; `defaults`: the filter's {property: default}."""
     parser = argparse.ArgumentParser(
         prog="narrowvolume", description=__doc__.split("\n")[0],
-        epilog="Outputs by extension: .stl .ply .vtp (surface), .vti (volume). Clouds: %s." % " ".join(
-            sorted(set(READERS) | set(TEXT))))
+        epilog="Outputs by extension: .stl .ply .vtp (surface), .vti (volume). Clouds: %s." % " ".join(CLOUDS))
     parser.add_argument("--paraview-plugin", action=_PrintPythonPlugin,
                         help="print the path of the ParaView Python plugin (load it in ParaView) and exit")
     from ._version import __version__

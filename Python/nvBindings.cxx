@@ -3,7 +3,8 @@
 // narrowvolume._core: the numerical core for Python (nanobind), in the wheel
 // that pip builds without VTK. The Python filter (_filter.py) drives a run
 // through these names, which are the core's own (nvReconstruction.h,
-// nvOutputs.h, nvSampling.h): nothing of the method is decided here.
+// nvOutputs.h, nvSampling.h): nothing of the method is decided here. It
+// also holds the readers' PLY check (nvPLY.h), for the command line.
 //
 // The GIL is released while the core computes (Sampling.Measure,
 // Reconstruction.Reconstruct: nv::Reconstruct, the run and its outputs). The core reports progress and asks
@@ -16,6 +17,7 @@
 // here and handed to numpy without a copy; the Python filter hands them to
 // VTK without a copy either.
 #include "nvOutputs.h"
+#include "nvPLY.h"
 #include "nvParallel.h"
 #include "nvReconstruction.h"
 #include "nvSampling.h"
@@ -390,6 +392,16 @@ NB_MODULE(_core, m)
       "cores), without the GIL. The monitor (optional) gets the search's progress in its current stage and "
       "may stop it: then None (Ctrl-C raises KeyboardInterrupt).")
     .def("Statistics", &nv::Sampling::Statistics);
+
+  m.def(
+    "check_ply_file",
+    [](const std::string& path) {
+      std::string error;
+      return nv::ply::CheckFile(path, error) ? std::string() : error;
+    },
+    "path"_a,
+    "Why the PLY file at `path` cannot be read (nv::ply::CheckFile: its header, counts and data), or an empty "
+    "string if vtkPLYReader can read it safely.");
 
   m.def(
     "MakePlan",

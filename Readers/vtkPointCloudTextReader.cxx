@@ -62,6 +62,31 @@ bool LooksLikeAtom(const std::string& line)
     values.size() >= 3;
 }
 
+/// True if a line holds bytes that no text has (NUL and other control
+/// characters): a binary file, or binary bytes inside a text one.
+bool IsBinary(const std::string& line)
+{
+  for (unsigned char c : line)
+  {
+    if (c < 32 && c != '\t' && c != '\r')
+      return true;
+  }
+  return false;
+}
+
+/// A line as the messages quote it: at most 60 characters, a byte that is
+/// not printable ASCII as '?' (a message must stay valid text).
+std::string Quoted(const std::string& line)
+{
+  std::string shown = line.substr(0, 60);
+  for (char& c : shown)
+  {
+    const unsigned char byte = static_cast<unsigned char>(c);
+    c = byte < 32 || byte > 126 ? '?' : c;
+  }
+  return "\"" + shown + (line.size() > 60 ? "...\"" : "\"");
+}
+
 bool IsComment(const std::string& line)
 {
   const auto first = line.find_first_not_of(" \t\r");
@@ -184,7 +209,15 @@ int vtkPointCloudTextReader::RequestData(
     }
     if (!ParseLine(line, v))
     {
-      vtkErrorMacro(<< this->FileName << ", line " << lineNumber << ": not a list of numbers: \"" << line << "\"."
+      if (IsBinary(line))
+      {
+        vtkErrorMacro(<< this->FileName << ", line " << lineNumber
+                      << ": binary data, not text: a text point cloud holds lines of x y z numbers.");
+        output->Initialize();
+        return 0;
+      }
+      vtkErrorMacro(<< this->FileName << ", line " << lineNumber << ": not a list of numbers: " << Quoted(line)
+                    << "."
                     << (LooksLikeAtom(line)
                            ? " This looks like a molecular XYZ file (an element, then x y z): open it with "
                              "ParaView's XYZ Reader (File > Open, file type \"XMol Molecule Files\")."
@@ -236,6 +269,13 @@ int vtkPointCloudTextReader::RequestData(
       others[o]->InsertNextValue(static_cast<float>(v[layout.Others[o]]));
   }
 
+  if (points->GetNumberOfPoints() == 0)
+  {
+    vtkErrorMacro(<< this->FileName << ": no line of x y z numbers: "
+                  << (lineNumber == 0 ? "the file is empty." : "this is not a text point cloud."));
+    output->Initialize();
+    return 0;
+  }
   output->SetPoints(points);
   output->SetVerts(nv::VertexCells(points->GetNumberOfPoints()));
   if (layout.IntensityColumn >= 0)

@@ -214,6 +214,60 @@ inline Bytes TextFile(const std::vector<double>& xyz)
   return Bytes(text.begin(), text.end());
 }
 
+/// A PLY file of the points (float x y z and a uchar intensity) and one
+/// triangle per three points, in `format`: "ascii", "binary_little_endian"
+/// or "binary_big_endian".
+inline Bytes PLYFile(const std::string& format, const std::vector<double>& xyz)
+{
+  const std::size_t n = xyz.size() / 3;
+  std::string header = "ply\nformat " + format + " 1.0\ncomment a seed\nelement vertex " + std::to_string(n) +
+    "\nproperty float x\nproperty float y\nproperty float z\nproperty uchar intensity\nelement face " +
+    std::to_string(n / 3) + "\nproperty list uchar int vertex_indices\nend_header\n";
+  Bytes bytes(header.begin(), header.end());
+  const bool big = format == "binary_big_endian";
+  auto put = [&bytes, big](const void* value, std::size_t size) {
+    const auto* p = static_cast<const std::uint8_t*>(value);
+    for (std::size_t b = 0; b < size; ++b)
+    {
+      bytes.push_back(p[big ? size - 1 - b : b]); // little-endian machines only
+    }
+  };
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    if (format == "ascii")
+    {
+      char line[128];
+      std::snprintf(line, sizeof line, "%g %g %g %d\n", xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2],
+        static_cast<int>(i % 256));
+      bytes.insert(bytes.end(), line, line + std::strlen(line));
+      continue;
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      const float value = static_cast<float>(xyz[3 * i + c]);
+      put(&value, sizeof value);
+    }
+    bytes.push_back(static_cast<std::uint8_t>(i % 256));
+  }
+  for (std::size_t f = 0; f + 2 < n; f += 3)
+  {
+    if (format == "ascii")
+    {
+      const std::string line = "3 " + std::to_string(f) + " " + std::to_string(f + 1) + " " +
+        std::to_string(f + 2) + "\n";
+      bytes.insert(bytes.end(), line.begin(), line.end());
+      continue;
+    }
+    bytes.push_back(3);
+    for (std::size_t k = 0; k < 3; ++k)
+    {
+      const std::int32_t index = static_cast<std::int32_t>(f + k);
+      put(&index, sizeof index);
+    }
+  }
+  return bytes;
+}
+
 inline bool WriteFile(const std::string& path, const Bytes& bytes)
 {
   std::FILE* file = std::fopen(path.c_str(), "wb");

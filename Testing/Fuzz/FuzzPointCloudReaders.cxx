@@ -1,12 +1,15 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
 // SPDX-License-Identifier: BSD-3-Clause
 // libFuzzer target for the native point cloud readers: the input bytes are
-// written to a file that vtkLASPointCloudReader, vtkPCDPointCloudReader and
-// vtkPointCloudTextReader each read. Whatever the bytes, a reader must not
-// crash, read out of bounds, leak or allocate without bound (run with
-// -rss_limit_mb / -malloc_limit_mb), and its output must be consistent: no
-// points after an error, else one vertex per point and every array as long
-// as the points. The seeds (MakeReaderSeeds) are valid files of each format.
+// written to a file that vtkLASPointCloudReader, vtkPCDPointCloudReader,
+// vtkPLYPointCloudReader and vtkPointCloudTextReader each read. Whatever the
+// bytes, a reader must not crash, read out of bounds, leak or allocate
+// without bound (run with -rss_limit_mb / -malloc_limit_mb), and its output
+// must be consistent: no points after an error, else one vertex per point
+// (the PLY reader gives vtkPLYReader's cells instead) and every array as
+// long as the points. The seeds (MakeReaderSeeds) are valid files of each
+// format. For the PLY reader this fuzzes nv::ply::CheckFile and what
+// vtkPLYReader does with every file that check lets through.
 #include <vtkCommand.h>
 #include <vtkDataArray.h>
 #include <vtkExecutive.h>
@@ -14,6 +17,7 @@
 #include <vtkNew.h>
 #include <vtkObject.h>
 #include <vtkPCDPointCloudReader.h>
+#include <vtkPLYPointCloudReader.h>
 #include <vtkPointCloudTextReader.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
@@ -43,7 +47,7 @@ public:
 };
 
 template <typename Reader>
-void ReadAndCheck(const std::string& path)
+void ReadAndCheck(const std::string& path, bool vertexPerPoint = true)
 {
   vtkNew<Reader> reader;
   vtkNew<ErrorCounter> counter;
@@ -58,7 +62,7 @@ void ReadAndCheck(const std::string& path)
     Require(n == 0 && cloud->GetNumberOfCells() == 0);
     return;
   }
-  Require(cloud->GetNumberOfVerts() == n);
+  Require(!vertexPerPoint || cloud->GetNumberOfVerts() == n);
   for (int a = 0; a < cloud->GetPointData()->GetNumberOfArrays(); ++a)
   {
     Require(cloud->GetPointData()->GetArray(a)->GetNumberOfTuples() == n);
@@ -77,6 +81,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::fclose(file);
   ReadAndCheck<vtkLASPointCloudReader>(path);
   ReadAndCheck<vtkPCDPointCloudReader>(path);
+  ReadAndCheck<vtkPLYPointCloudReader>(path, /*vertexPerPoint=*/false);
   ReadAndCheck<vtkPointCloudTextReader>(path);
   return 0;
 }

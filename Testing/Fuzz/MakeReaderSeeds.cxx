@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Writes the seed corpus of FuzzPointCloudReaders into the folder given as
 // its argument (emptied first): small valid LAS files (1.0 to 1.4, formats
-// 0, 1, 3, 6, 8, 10), PCD files in the three encodings and a text cloud, so
+// 0, 1, 3, 6, 8, 10), PCD files in the three encodings, PLY files in the
+// three formats (points and triangles) and a text cloud, so
 // that the fuzzer starts from inputs that pass the signature and header
 // checks and mutates its way into the data.
 #include "nvTestPointFiles.h"
@@ -38,7 +39,11 @@ int main(int argc, char* argv[])
   {
     written += nvtest::WriteFile(folder + "/" + encoding + ".pcd", nvtest::PCDFile(encoding, xyz));
   }
+  for (const char* format : { "ascii", "binary_little_endian", "binary_big_endian" })
+  {
+    written += nvtest::WriteFile(folder + "/" + format + ".ply", nvtest::PLYFile(format, xyz));
+  }
   written += nvtest::WriteFile(folder + "/cloud.xyz", nvtest::TextFile(xyz));
   std::printf("MakeReaderSeeds: %d seeds in %s\n", written, folder.c_str());
-  return written == 11 ? 0 : 1;
+  return written == 14 ? 0 : 1;
 }

@@ -134,7 +134,7 @@ def test_file_open(files, plugins_xml, with_xvfb, label, autoload):
     opened = json.load(open(result_path))
     print("%s: %s" % (label, json.dumps(opened)))
     by_file = {entry["file"]: entry for entry in opened.values()}
-    expected = {"plain.xyz": "PointCloudTextReader", "cloud.las": "LASPointCloudReader",
+    expected = {"plain.xyz": "ASCIIPointCloudReader", "cloud.las": "LASPointCloudReader",
                 "cloud.pcd": "PCDPointCloudReader", "cloud.laz": "LAZPointCloudReader",
                 "cloud.e57": "E57PointCloudReader"}
     for name, reader in expected.items():
