@@ -27,6 +27,7 @@
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkTable.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <cctype>
@@ -163,6 +164,7 @@ vtkNarrowVolumeReconstruction::~vtkNarrowVolumeReconstruction()
 int vtkNarrowVolumeReconstruction::FillInputPortInformation(int, vtkInformation* info)
 {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
+  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkTable"); // refused with a message (RequestData)
   return 1;
 }
 
@@ -337,6 +339,11 @@ int vtkNarrowVolumeReconstruction::RequestData(
   volume->Initialize();
   surface->Initialize();
   this->KeepResults(nullptr, nv::Outcome());
+  if (vtkTable::GetData(inputVector[0], 0))
+  {
+    vtkErrorMacro(<< this->InWordsOfReader(nv::TableInputError()));
+    return 1;
+  }
 
   // Distributed (see SetController), or one process computes everything:
   // then the requests for pieces other than 0 leave their outputs empty, so

@@ -22,8 +22,8 @@ from vtkmodules.util.vtkAlgorithm import VTKPythonAlgorithmBase
 from vtkmodules.vtkCommonCore import (VTK_FLOAT, vtkCommand, vtkDoubleArray, vtkFloatArray, vtkIdTypeArray,
                                       vtkInformationVector, vtkIntArray, vtkObject, vtkOutputWindow, vtkPoints,
                                       vtkTypeInt64Array, vtkUnsignedCharArray)
-from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkDataObject, vtkImageData, vtkPointSet, vtkPolyData
-from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline as sddp
+from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkDataObject, vtkImageData, vtkPointSet, vtkPolyData, vtkTable
+from vtkmodules.vtkCommonExecutionModel import vtkAlgorithm, vtkStreamingDemandDrivenPipeline as sddp
 
 from . import _core
 from . import _properties
@@ -197,6 +197,11 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
         self._message(vtkCommand.WarningEvent, text)
 
     # --- The pipeline passes.
+    def FillInputPortInformation(self, port, info):
+        info.Set(vtkAlgorithm.INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet")
+        info.Append(vtkAlgorithm.INPUT_REQUIRED_DATA_TYPE(), "vtkTable")  # refused with a message (RequestData)
+        return 1
+
     def RequestInformation(self, request, inInfoVec, outInfoVec):
         """Declares the volume's grid (whole extent, origin, spacing, float
         scalars), which follows the input's points and their sampling: the
@@ -292,6 +297,9 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
         # One process computes everything: a request for another piece is left empty.
         piece_info = outInfoVec.GetInformationObject(1)
         if piece_info.Has(sddp.UPDATE_PIECE_NUMBER()) and piece_info.Get(sddp.UPDATE_PIECE_NUMBER()) > 0:
+            return 1
+        if vtkTable.GetData(inInfoVec[0], 0) is not None:
+            self._error(_core.TableInputError())
             return 1
         try:
             summary = self._run(vtkPointSet.GetData(inInfoVec[0], 0), volume, surface)

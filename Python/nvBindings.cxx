@@ -393,6 +393,7 @@ NB_MODULE(_core, m)
       "may stop it: then None (Ctrl-C raises KeyboardInterrupt).")
     .def("Statistics", &nv::Sampling::Statistics);
 
+  m.def("TableInputError", &nv::TableInputError, "The error for a table given as input (nv::TableInputError).");
   m.def(
     "check_ply_file",
     [](const std::string& path) {

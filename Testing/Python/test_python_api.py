@@ -273,6 +273,31 @@ def test_reconstruct_errors():
     assert str(refused.value).startswith("The input has no points"), str(refused.value)
 
 
+def test_a_table_is_refused_with_table_to_points():
+    """A table (a CSV file read as columns) as input: one error that names
+    Table To Points, both outputs empty (issue 37: it gave six identical
+    errors of the pipeline and an empty surface)."""
+    from vtkmodules.util.numpy_support import numpy_to_vtk
+    from vtkmodules.vtkCommonDataModel import vtkTable
+    table = vtkTable()
+    for axis, name in enumerate("xyz"):
+        column = numpy_to_vtk(np.ascontiguousarray(SPHERE[:, axis]), deep=1)
+        column.SetName(name)
+        table.AddColumn(column)
+    f = narrowvolume.vtkNarrowVolumeReconstruction()
+    errors = []
+
+    @calldata_type(VTK_STRING)
+    def on_error(caller, event, text):
+        errors.append(text)
+
+    f.AddObserver("ErrorEvent", on_error)
+    f.SetInputData(table)
+    f.Update()
+    assert len(errors) == 1 and "Table To Points" in errors[0], errors
+    assert f.GetOutputDataObject(1).GetNumberOfPoints() == 0 and f.GetOutputDataObject(0).GetNumberOfPoints() == 0
+
+
 def test_truth_values_for_switches():
     """Switches take any truth value, as VTK's wrapping does (numpy bools too)."""
     f = narrowvolume.vtkNarrowVolumeReconstruction()

@@ -320,6 +320,13 @@ bool MakeSurface(Reconstruction& run, SurfaceSink& sink, const VolumeArrays& den
 }
 } // namespace
 
+std::string TableInputError()
+{
+  return "The input is a table (a CSV file read as columns), not points.\n"
+         "Apply Table To Points to it (its X, Y and Z columns) and reconstruct from that, or open the file with "
+         "the Point Cloud Text Reader.";
+}
+
 Outcome Reconstruct(Reconstruction& run, std::vector<double> xyz, std::shared_ptr<const Sampling> sampling,
   SurfaceSink& sink, const VolumeRequest& volume, bool distributed)
 {

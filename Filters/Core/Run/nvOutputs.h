@@ -85,6 +85,10 @@ struct VolumeRequest
   Reconstruction::VolumeAllocator Allocate;
 };
 
+/// The error for a table given as input (a CSV file read as a vtkTable):
+/// both filters refuse it with this message.
+std::string TableInputError();
+
 /**
  * Runs `run` on this process's points (xyz triples) with their sampling
  * (null: measured here) and makes the outputs: steps 1-5 above, with the
