@@ -509,8 +509,12 @@ void vtkNarrowVolumeReconstruction::AddRunSummary(
         array = vtkSmartPointer<vtkDoubleArray>::New();
     }
     array->SetName(values.Name.c_str());
-    array->SetNumberOfComponents(values.Components);
-    array->SetNumberOfTuples(static_cast<vtkIdType>(values.Values.size()) / values.Components);
+    array->SetNumberOfComponents(std::max(1, values.Components));
+    for (std::size_t c = 0; c < values.ComponentNames.size(); ++c)
+    {
+      array->SetComponentName(static_cast<vtkIdType>(c), values.ComponentNames[c].c_str());
+    }
+    array->SetNumberOfTuples(static_cast<vtkIdType>(values.Values.size()) / std::max(1, values.Components));
     for (std::size_t v = 0; v < values.Values.size(); ++v)
     {
       array->SetVariantValue(static_cast<vtkIdType>(v), values.Values[v]);

@@ -364,6 +364,22 @@ def chosen(volume: vtkImageData) -> str:
         + (int(value("NarrowBandNodes")),))
 
 
+def timings(volume: vtkImageData) -> str:
+    """The seconds of the run's stages (field data StageSeconds), one line each."""
+    array = volume.GetFieldData().GetArray("StageSeconds")
+    if array is None or array.GetNumberOfTuples() == 0:
+        return ""
+    stages = [(array.GetComponentName(c), array.GetComponent(0, c)) for c in range(array.GetNumberOfComponents())]
+    width = max(len(name) for name, _ in stages)
+    total = sum(seconds for _, seconds in stages)
+    lines = ["narrowvolume:   %s %9s %6s" % ("stage".ljust(width), "seconds", "share")]
+    for name, seconds in stages:
+        lines.append("narrowvolume:   %s %9.3f %5.1f%%" % (name.ljust(width), seconds,
+                                                          100.0 * seconds / total if total else 0.0))
+    lines.append("narrowvolume:   %s %9.3f" % ("(stages)".ljust(width), total))
+    return "\n".join(lines)
+
+
 def make_parser(defaults: Dict[str, Any]) -> argparse.ArgumentParser:
     """The command line's parser; `defaults`: the filter's {property: default}."""
     parser = argparse.ArgumentParser(
@@ -377,6 +393,8 @@ def make_parser(defaults: Dict[str, Any]) -> argparse.ArgumentParser:
     parser.add_argument("-o", "--output", action="append", default=[], metavar="FILE",
                         help="a file to write (repeat for several); default: CLOUD's name with _shell.stl")
     parser.add_argument("-q", "--quiet", action="store_true", help="no progress bar and no summary")
+    parser.add_argument("--timings", action="store_true",
+                        help="print the seconds of the run's stages (field data StageSeconds) in the summary")
     group = parser.add_argument_group("the filter's properties (vtkNarrowVolumeReconstruction)")
     for prop in _properties.PROPERTIES:
         help_text = "%s (default: %s)" % (_properties.describe(prop, _properties.option).replace("%", "%%"),
@@ -430,6 +448,8 @@ def main(argv: Optional[List[str]] = None) -> int:
             print("narrowvolume: warning: %s" % in_option_words(str(warning.message)), file=sys.stderr)
         if not args.quiet:
             print("narrowvolume: %s" % chosen(volume), file=_stdout(), flush=True)
+        if args.timings:
+            print(timings(volume), file=_stdout(), flush=True)
         empty = [p for p in outputs if WRITERS[os.path.splitext(p)[1].lower()][2] == "surface"
                  and surface.GetNumberOfPolys() == 0]
         if empty:

@@ -421,11 +421,13 @@ def _polydata(points, normals, triangles):
 def _add_field_data(volume, summary):
     """The run's figures (the core's RunSummary) as the volume's field data."""
     kinds = {"int": vtkIntArray, "id": vtkIdTypeArray, "double": vtkDoubleArray}
-    for name, kind, components, values in summary:
+    for name, kind, components, values, component_names in summary:
         array = kinds[kind]()
         array.SetName(name)
-        array.SetNumberOfComponents(components)
-        array.SetNumberOfTuples(len(values) // components)
+        array.SetNumberOfComponents(max(1, components))
+        for c, component_name in enumerate(component_names):
+            array.SetComponentName(c, component_name)
+        array.SetNumberOfTuples(len(values) // max(1, components))
         for v, value in enumerate(values):
             array.SetValue(v, int(value) if kind != "double" else value)
         volume.GetFieldData().AddArray(array)

@@ -471,11 +471,11 @@ NB_MODULE(_core, m)
           const char* kind = array.Kind == nv::SummaryArray::Int ? "int"
             : array.Kind == nv::SummaryArray::Id                 ? "id"
                                                                  : "double";
-          summary.append(nb::make_tuple(array.Name, kind, array.Components, array.Values));
+          summary.append(nb::make_tuple(array.Name, kind, array.Components, array.Values, array.ComponentNames));
         }
         return summary;
       },
-      "[(name, 'int' | 'id' | 'double', components, values)]: the volume's field data.");
+      "[(name, 'int' | 'id' | 'double', components, values, component names)]: the volume's field data.");
 
   nb::class_<PythonRun>(m, "Reconstruction", "The whole run of the method (nv::Reconstruction), serial.")
     .def(nb::init<const nv::Settings&, std::shared_ptr<PythonMonitor>>(), "settings"_a, "monitor"_a = nb::none())

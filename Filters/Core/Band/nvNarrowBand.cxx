@@ -343,8 +343,10 @@ void ConnectNeighbours(const BrickIndex& index, const Parameters& parameters, Na
 } // namespace
 
 NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& parameters, Monitor* monitor,
-  const Subdomain* part, const BrickVisitor& visitor)
+  const Subdomain* part, const BrickVisitor& visitor, StageTimes* times)
 {
+  StageTimes untimed;
+  times = times ? times : &untimed;
   NarrowBand band;
   band.GridNodes = distance.GetGrid();
   const Subdomain whole = Subdomain::Whole(distance.GetBrickDims()[2]);
@@ -355,12 +357,12 @@ NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& 
   // Step 1: the bricks to visit and their band nodes.
   band.Bricks = BricksToVisit(distance, parameters, *part);
   std::vector<BrickBand> perBrick;
-  if (!CollectBandNodes(distance, parameters, monitor, visitor, band, perBrick))
+  if (!times->Time("band: collect", [&]() { return CollectBandNodes(distance, parameters, monitor, visitor, band, perBrick); }))
   {
     return NarrowBand{};
   }
   // Step 2: stored compactly, unless the band is too large.
-  const std::int64_t tooLarge = StoreBandNodes(perBrick, parameters, band);
+  const std::int64_t tooLarge = times->Time("band: store", [&]() { return StoreBandNodes(perBrick, parameters, band); });
   if (tooLarge > 0)
   {
     NarrowBand refused;
@@ -369,7 +371,8 @@ NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& 
   }
   ReleaseFreedMemory(); // before the neighbour indices, the band's largest array
   // Step 3: each node's six neighbours.
-  ConnectNeighbours(IndexBricks(distance, band), parameters, band);
+  const BrickIndex index = times->Time("band: index bricks", [&]() { return IndexBricks(distance, band); });
+  times->Time("band: neighbours", [&]() { ConnectNeighbours(index, parameters, band); });
   band.OwnedLayers = part->Owned;
   if (monitor)
   {

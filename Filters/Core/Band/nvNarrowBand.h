@@ -9,6 +9,7 @@
 #include "nvGrid.h"
 #include "nvParameters.h"
 #include "nvPartition.h"
+#include "nvStageTimes.h"
 #include "nvTruncatedDistance.h"
 
 #include <cstdint>
@@ -99,10 +100,13 @@ using BrickVisitor = std::function<void(std::int64_t brick, const double distanc
  * every node of the grid. Returns an empty band if the monitor asks to stop.
  * part: in a distributed run, the layers this process computes and owns
  * (nvPartition.h); null for the whole grid. visitor: if set, also called
- * with the distances of every reached brick (none is skipped then).
+ * with the distances of every reached brick (none is skipped then). times:
+ * if set, gets the seconds of steps 1 ("band: collect", the distances), 2
+ * ("band: store"), and 3 ("band: index bricks", "band: neighbours").
  */
 NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& parameters,
-  Monitor* monitor = nullptr, const Subdomain* part = nullptr, const BrickVisitor& visitor = nullptr);
+  Monitor* monitor = nullptr, const Subdomain* part = nullptr, const BrickVisitor& visitor = nullptr,
+  StageTimes* times = nullptr);
 
 } // namespace nv
 

@@ -23,7 +23,10 @@ public:
   /// twice adds up).
   void Add(const std::string& name, Clock::time_point start)
   {
-    const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    this->Add(name, std::chrono::duration<double>(Clock::now() - start).count());
+  }
+  void Add(const std::string& name, double seconds)
+  {
     for (auto& stage : this->Stages)
     {
       if (stage.first == name)

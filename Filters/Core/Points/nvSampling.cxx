@@ -7,6 +7,7 @@
 #include "nvParallel.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -442,10 +443,15 @@ std::int64_t QuantileIndex(double q, std::int64_t count)
 //------------------------------------------------------------------------------
 bool Sampling::Measure(const std::vector<double>& xyz, Communicator* communicator, Monitor* monitor)
 {
-  if (communicator && communicator->Size() > 1)
-  {
-    return this->MeasureDistributed(xyz, *communicator, monitor);
-  }
+  const auto start = std::chrono::steady_clock::now();
+  const bool done = communicator && communicator->Size() > 1 ? this->MeasureDistributed(xyz, *communicator, monitor)
+                                                             : this->MeasureHere(xyz, monitor);
+  this->Time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return done;
+}
+
+bool Sampling::MeasureHere(const std::vector<double>& xyz, Monitor* monitor)
+{
   // The caller's points are measured where they are: no copy of the cloud
   // is made, and only the figures are kept.
   this->Held = 0;

@@ -63,11 +63,15 @@ public:
   /// serial run (the caller's, not copied); in a distributed run, its slab's.
   /// None is kept after the measurement, only the figures.
   std::int64_t HeldPoints() const { return this->Held; }
+  /// Wall-clock seconds the measurement took.
+  double Seconds() const { return this->Time; }
 
 private:
+  bool MeasureHere(const std::vector<double>& xyz, Monitor* monitor);
   bool MeasureDistributed(const std::vector<double>& xyz, Communicator& communicator, Monitor* monitor);
 
   std::int64_t Held = 0;
+  double Time = 0.0;
   SamplingStatistics Stats;
 };
 

@@ -245,6 +245,19 @@ std::string OneSheetDistributedWarning()
          "Run on one process to keep one sheet.";
 }
 
+/// The seconds of the run's stages on this process: one tuple, a component
+/// per stage, named after it.
+SummaryArray StageSeconds(const StageTimes& times)
+{
+  SummaryArray array{ "StageSeconds", SummaryArray::Double, static_cast<int>(times.Get().size()), {}, {} };
+  for (const auto& stage : times.Get())
+  {
+    array.ComponentNames.push_back(stage.first);
+    array.Values.push_back(stage.second);
+  }
+  return array;
+}
+
 /// The run's figures, as the field data of output 0.
 std::vector<SummaryArray> RunSummary(const Reconstruction& run, const RemovedPieces& removed)
 {
@@ -265,6 +278,7 @@ std::vector<SummaryArray> RunSummary(const Reconstruction& run, const RemovedPie
       { gaps.LargestGapCenter[0], gaps.LargestGapCenter[1], gaps.LargestGapCenter[2] } },
     { "RemovedPieces", SummaryArray::Double, 1, { static_cast<double>(removed.Pieces) } },
     { "RemovedVoids", SummaryArray::Double, 1, { static_cast<double>(removed.Voids) } },
+    StageSeconds(run.GetStageTimes()),
   };
 }
 
@@ -287,7 +301,7 @@ bool MakeSurface(Reconstruction& run, SurfaceSink& sink, const VolumeArrays& den
     {
       outcome.Warnings.push_back(OneSheetDistributedWarning());
     }
-    done = run.ExtractSurface(sink);
+    done = run.GetStageTimes().Time("surface", [&]() { return run.ExtractSurface(sink); });
   }
   else
   {
@@ -299,7 +313,7 @@ bool MakeSurface(Reconstruction& run, SurfaceSink& sink, const VolumeArrays& den
     const std::int64_t nodes = run.GetGrid().NumberOfNodes();
     std::vector<float> phi(dense.Phi, dense.Phi + nodes);
     std::int64_t cavities = 0;
-    done = ContourDense(run, phi.data(), sink, monitor, cavities);
+    done = run.GetStageTimes().Time("surface", [&]() { return ContourDense(run, phi.data(), sink, monitor, cavities); });
     noInnerSheet = NoInnerSheet(settings, cavities);
     if (noInnerSheet)
     {
@@ -311,10 +325,12 @@ bool MakeSurface(Reconstruction& run, SurfaceSink& sink, const VolumeArrays& den
   if (done && settings.RemoveSmallPieces && !distributed && !stopped)
   {
     // The surface's small parts go, and phi follows in the same regions.
+    const auto start = StageTimes::Clock::now();
     WithThreads(settings.NumberOfThreads, [&]() {
       outcome.Removed = RemoveSmallPieces(sink, run.GetParameters().OffsetDistance, run.GetGrid(),
         outcome.DenseArrays ? dense.Phi : nullptr, outcome.VolumeBegin, outcome.VolumeEnd - outcome.VolumeBegin);
     });
+    run.GetStageTimes().Add("small pieces", start);
   }
   return done && !(monitor && monitor->Aborted());
 }

@@ -16,7 +16,8 @@
 //      (RemoveSmallPieces, nvPieces.h);
 //   5. the warnings (a grid too coarse for the offset, holes left open, an
 //      empty surface, no inner sheet) and the run's figures for the
-//      volume's field data.
+//      volume's field data, the seconds of its stages among them
+//      ("StageSeconds", one component per stage).
 #ifndef nvOutputs_h
 #define nvOutputs_h
 
@@ -55,6 +56,7 @@ struct SummaryArray
   Type Kind;
   int Components;
   std::vector<double> Values;
+  std::vector<std::string> ComponentNames; ///< empty, or one per component
 };
 
 /// What the caller of Reconstruct gets besides the arrays it owns (the

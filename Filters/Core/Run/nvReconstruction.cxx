@@ -291,7 +291,8 @@ bool Reconstruction::RunSteps(std::vector<double> xyz, std::shared_ptr<const Sam
   // The steps of this file's header, each false when the run stops.
   double bounds[6];
   return this->CheckPoints(xyz, bounds) && this->PlanGrid(xyz, bounds, std::move(measured)) &&
-    this->GatherPoints(xyz) && this->BuildBand(std::move(xyz)) && this->Evolve() && this->ProbeHoles();
+    this->GatherPoints(xyz) && this->BuildBand(std::move(xyz)) && this->Evolve() &&
+    this->Stages.Time("hole probe", [&]() { return this->ProbeHoles(); });
 }
 
 bool Reconstruction::CheckPoints(const std::vector<double>& xyz, double bounds[6])
@@ -414,6 +415,7 @@ bool Reconstruction::PlanGrid(
     measured = sampling;
   }
   this->TheSampling = measured;
+  this->Stages.Add("sampling", measured->Seconds());
   this->ThePlan = MakePlan(this->TheSettings, bounds, this->TheSampling->Statistics());
   if (!this->ThePlan.Valid())
   {
@@ -464,7 +466,7 @@ bool Reconstruction::GatherPoints(std::vector<double>& xyz)
     xyz = ExchangePoints(*this->Comm, xyz, zRanges);
   }
   // (3, continued) The points that bridge the holes of the sampling.
-  return this->CloseGaps(xyz, closing);
+  return this->Stages.Time("gap closing", [&]() { return this->CloseGaps(xyz, closing); });
 }
 
 bool Reconstruction::BuildBand(std::vector<double> xyz)
@@ -491,10 +493,13 @@ bool Reconstruction::BuildBand(std::vector<double> xyz)
   }
   {
     // The points sorted into bricks, for the band only: gone once it is built.
+    const auto sorting = StageTimes::Clock::now();
     const TruncatedDistance distance(
       grid, xyz.data(), static_cast<std::int64_t>(xyz.size() / 3), this->ThePlan.Scheme.Reach());
     std::vector<double>().swap(xyz);
-    this->Band = BuildNarrowBand(distance, this->ThePlan.Scheme, this->TheMonitor, &this->Part, writeBrick);
+    this->Stages.Add("distance", sorting);
+    this->Band =
+      BuildNarrowBand(distance, this->ThePlan.Scheme, this->TheMonitor, &this->Part, writeBrick, &this->Stages);
   }
   ReleaseFreedMemory();
   this->SetupTime = Seconds(start);
@@ -556,6 +561,7 @@ bool Reconstruction::Evolve()
     this->Changes.push_back(step.RelativeChange);
   }
   this->EvolutionTime = Seconds(start);
+  this->Stages.Add("evolution", this->EvolutionTime);
   if (this->Anywhere(this->TheMonitor && this->TheMonitor->Aborted()))
   {
     this->Stopped = true;
@@ -567,8 +573,10 @@ bool Reconstruction::Evolve()
   ReleaseFreedMemory();
   if (this->Writer)
   {
+    const auto writing = StageTimes::Clock::now();
     this->Writer->WriteBand(this->Band, this->Solver->GetPhi());
     this->Writer.reset();
+    this->Stages.Add("volume", writing);
   }
   return true;
 }

@@ -37,6 +37,7 @@
 #include "nvPartition.h"
 #include "nvSampling.h"
 #include "nvSettings.h"
+#include "nvStageTimes.h"
 #include "nvVolume.h"
 
 #include <cstdint>
@@ -143,6 +144,10 @@ public:
   /// Band nodes of all processes.
   std::int64_t NumberOfBandNodes() const { return this->BandNodes; }
   const std::vector<double>& RelativeChanges() const { return this->Changes; }
+  /// The seconds of the run's stages, in the order they ran (the outputs
+  /// add theirs, nvOutputs.h).
+  const StageTimes& GetStageTimes() const { return this->Stages; }
+  StageTimes& GetStageTimes() { return this->Stages; }
   double SetupSeconds() const { return this->SetupTime; }
   double EvolutionSeconds() const { return this->EvolutionTime; }
 
@@ -202,6 +207,7 @@ private:
   std::vector<double> Changes;
   double SetupTime = 0.0;
   double EvolutionTime = 0.0;
+  StageTimes Stages;
   std::string Message;
   bool Stopped = false;
 };
