@@ -23,6 +23,8 @@ extensions = [
     "myst_parser",
     "sphinx.ext.autodoc",
     "nvdocs",  # _ext/nvdocs.py: the parameter reference from the property table, the C++ class from its header
+    "sphinx.ext.mathjax",
+    "sphinx-mathjax-offline",  # MathJax served from the site itself (_static/mathjax), not from a CDN
 ]
 source_suffix = {".md": "markdown", ".rst": "restructuredtext"}
 exclude_patterns = ["requirements.txt", "_ext", "images/README.md"]
@@ -46,3 +48,7 @@ nitpick_ignore_regex = [
 html_theme = "furo"
 html_title = "NarrowVolume %s" % release
 html_static_path = []
+# The equations ($...$, $$...$$) are typeset by the MathJax that
+# sphinx-mathjax-offline copies into _static/mathjax: the pages read offline,
+# and scripts/docs.sh checks that no page loads a script from elsewhere.
+mathjax_path = "mathjax/tex-chtml.js"

@@ -37,4 +37,15 @@ PYTHONPATH="$build_dir/lib/python3.11/dist-packages${PYTHONPATH:+:$PYTHONPATH}" 
 NV_BUILD_DIR="$build_dir" \
   "$venv/bin/python" -m sphinx -W --keep-going -n -q -b html -d "$docs_dir/doctrees" \
   "$source_dir/doc" "$docs_dir/html"
+# The site reads offline: no page loads a script or a stylesheet from another
+# host (the equations' MathJax is in _static/mathjax, see doc/conf.py).
+if remote=$(grep -rnoE '<(script|link)[^>]*(src|href)="(https?:)?//[^"]*"' --include='*.html' "$docs_dir/html"); then
+  echo "docs.sh: pages load files from the network:" >&2
+  echo "$remote" >&2
+  exit 1
+fi
+if [ ! -f "$docs_dir/html/_static/mathjax/tex-chtml.js" ]; then
+  echo "docs.sh: the site has no _static/mathjax/tex-chtml.js (doc/conf.py's mathjax_path)" >&2
+  exit 1
+fi
 echo "docs.sh: the site is in $docs_dir/html (index.html)"

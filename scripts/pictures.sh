@@ -23,6 +23,7 @@ run() {
   echo "   $((SECONDS - start)) s"
 }
 run "$xvfb" pvpython doc/pictures/shell_cut_open.py
+run "$xvfb" pvpython doc/pictures/hollow_scan.py
 run "$xvfb" pvpython doc/pictures/offset_effect.py
 run "$xvfb" pvpython doc/pictures/closing_radius_effect.py
 run "$xvfb" pvpython doc/pictures/parameters.py
