@@ -307,9 +307,7 @@ public:
 
     if (prefilter)
     {
-      double widest[Directions];
-      this->Radii(this->Near, widest);
-      finding.Suspect = *std::max_element(widest, widest + Directions) > threshold;
+      finding.Suspect = this->WiderThan(this->Near, threshold);
       if (!finding.Suspect)
       {
         return finding;
@@ -418,16 +416,44 @@ private:
     }
   }
 
-  /// Per direction, the radius of the largest empty circle through p among
-  /// the neighbours within 2 l (+infinity where none bounds it).
-  void Radii(const std::vector<std::array<double, 3>>& points, double radius[Directions]) const
+  /// Whether, among the neighbours within 2 l, the largest empty circle
+  /// through p in some direction is wider than the threshold: whether a
+  /// direction is left that no neighbour bounds to the threshold or less
+  /// (the bound of Bound, compared alike). Stops once every direction is
+  /// bounded, which on a densely sampled surface takes a few neighbours.
+  bool WiderThan(const std::vector<std::array<double, 3>>& points, double threshold) const
   {
-    std::fill(radius, radius + Directions, std::numeric_limits<double>::infinity());
-    for (const auto& v : points)
+    static_assert(Directions == 32, "one bit a direction");
+    std::uint32_t open = ~std::uint32_t(0); // the directions not bounded yet
+    // The neighbours within the threshold first: each bounds the directions
+    // within 60 degrees of its own or more, so that a few of them bound all.
+    const double near = threshold * threshold;
+    for (const bool first : { true, false })
     {
-      this->Bound(v[0] * this->Tangent[0][0] + v[1] * this->Tangent[0][1] + v[2] * this->Tangent[0][2],
-        v[0] * this->Tangent[1][0] + v[1] * this->Tangent[1][1] + v[2] * this->Tangent[1][2], radius);
+      for (const auto& v : points)
+      {
+        if ((v[0] * v[0] + v[1] * v[1] + v[2] * v[2] <= near) != first)
+        {
+          continue;
+        }
+        const double u = v[0] * this->Tangent[0][0] + v[1] * this->Tangent[0][1] + v[2] * this->Tangent[0][2];
+        const double w = v[0] * this->Tangent[1][0] + v[1] * this->Tangent[1][1] + v[2] * this->Tangent[1][2];
+        const double squared = u * u + w * w;
+        for (int k = 0; k < Directions; ++k)
+        {
+          const double along = u * this->Cos[k] + w * this->Sin[k];
+          if (along > 0.0 && squared / (2.0 * along) <= threshold)
+          {
+            open &= ~(std::uint32_t(1) << k);
+          }
+        }
+        if (open == 0)
+        {
+          return false;
+        }
+      }
     }
+    return true;
   }
 
   /// The same among the points in the plane, exact up to `limit` (a larger
