@@ -7,6 +7,7 @@
 #define nvNarrowBand_h
 
 #include "nvGrid.h"
+#include "nvMemory.h"
 #include "nvParameters.h"
 #include "nvPartition.h"
 #include "nvStageTimes.h"
@@ -36,9 +37,9 @@ struct NarrowBand
   std::int64_t RedCount = 0;           ///< nodes [0, RedCount) are red
   /// Where band node s sits in its brick: i + 8 (j + 8 k) from the brick's
   /// first node (2 bytes a node; the brick gives the rest of the position).
-  std::vector<std::uint16_t> Offset;
-  std::vector<double> Distance;        ///< d of eq. (6) at band node s (+inf: beyond reach)
-  std::vector<std::uint32_t> Neighbor; ///< 6 per node: -x, +x, -y, +y, -z, +z
+  UninitializedVector<std::uint16_t> Offset;
+  UninitializedVector<double> Distance;        ///< d of eq. (6) at band node s (+inf: beyond reach)
+  UninitializedVector<std::uint32_t> Neighbor; ///< 6 per node: -x, +x, -y, +y, -z, +z
 
   /// The bricks visited (ascending brick index) and, per brick b, its red
   /// nodes [RedStart[b], RedStart[b+1]) and black ones [BlackStart[b], BlackStart[b+1]).

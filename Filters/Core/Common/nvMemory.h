@@ -5,6 +5,11 @@
 #ifndef nvMemory_h
 #define nvMemory_h
 
+#include <memory>
+#include <new>
+#include <utility>
+#include <vector>
+
 namespace nv
 {
 /**
@@ -17,6 +22,45 @@ namespace nv
  * were freed and its neighbour indices made without one.
  */
 void ReleaseFreedMemory();
+
+/// std::allocator, but resize() leaves new values unset instead of zeroing
+/// them: the band's and the solver's arrays are first written by parallel
+/// loops, so each thread touches (and the kernel places) its own pages, and
+/// no single thread zeroes gigabytes first.
+template <typename T>
+struct UninitializedAllocator : std::allocator<T>
+{
+  template <typename U>
+  struct rebind
+  {
+    using other = UninitializedAllocator<U>;
+  };
+  UninitializedAllocator() = default;
+  template <typename U>
+  UninitializedAllocator(const UninitializedAllocator<U>&) noexcept
+  {
+  }
+  template <typename U>
+  void construct(U* p) noexcept
+  {
+    ::new (static_cast<void*>(p)) U;
+  }
+  template <typename U, typename... Args>
+  void construct(U* p, Args&&... args)
+  {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+};
+/// A vector whose resize() leaves its new values unset (UninitializedAllocator).
+template <typename T>
+using UninitializedVector = std::vector<T, UninitializedAllocator<T>>;
+
+/// Frees a vector's memory (clear() keeps it).
+template <typename Vector>
+void Free(Vector& v)
+{
+  Vector().swap(v);
+}
 } // namespace nv
 
 #endif

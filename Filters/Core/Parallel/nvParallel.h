@@ -13,10 +13,12 @@
 #ifndef nvParallel_h
 #define nvParallel_h
 
+#include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <functional>
 #include <thread>
+#include <vector>
 
 namespace nv
 {
@@ -38,6 +40,33 @@ class Monitor;
  */
 bool MonitoredFor(
   std::int64_t begin, std::int64_t end, std::int64_t grain, Monitor* monitor, const RangeFunction& fn);
+
+/// Sorts v: fixed chunks sorted in parallel, then merged pairwise, in
+/// parallel while there are several pairs (the result is the sorted
+/// sequence, whatever the threads).
+template <typename T, typename Allocator>
+void ParallelSort(std::vector<T, Allocator>& v)
+{
+  constexpr std::int64_t Chunks = 32;
+  const std::int64_t n = static_cast<std::int64_t>(v.size());
+  auto bound = [&](std::int64_t c) { return v.begin() + static_cast<std::ptrdiff_t>(n * c / Chunks); };
+  ParallelFor(0, Chunks, 1, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t c = begin; c < end; ++c)
+    {
+      std::sort(bound(c), bound(c + 1));
+    }
+  });
+  for (std::int64_t width = 1; width < Chunks; width *= 2)
+  {
+    ParallelFor(0, Chunks / (2 * width), 1, [&](std::int64_t begin, std::int64_t end) {
+      for (std::int64_t m = begin; m < end; ++m)
+      {
+        const std::int64_t first = 2 * width * m;
+        std::inplace_merge(bound(first), bound(first + width), bound(first + 2 * width));
+      }
+    });
+  }
+}
 
 /// Sum of fn over fixed chunks of [0, n), added in chunk order (deterministic).
 double ParallelSum(std::int64_t n, const RangeReduction& fn);

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <mutex>
 #include <numeric>
 
@@ -53,23 +54,37 @@ public:
       this->Dims[a] = static_cast<std::int64_t>(extent[a] / this->Size) + 1;
       cells *= this->Dims[a];
     }
+    // The points by cell, in ascending order within each (a sort of the
+    // pairs (cell, point), in parallel), and where each cell's begin.
     const std::int64_t n = static_cast<std::int64_t>(rel.size() / 3);
-    std::vector<std::int64_t> cellOf(static_cast<std::size_t>(n));
-    this->Start.assign(static_cast<std::size_t>(cells + 1), 0);
-    for (std::int64_t p = 0; p < n; ++p)
-    {
-      std::int64_t c[3];
-      this->CellOf(&rel[3 * p], c);
-      cellOf[p] = c[0] + this->Dims[0] * (c[1] + this->Dims[1] * c[2]);
-      ++this->Start[cellOf[p] + 1];
-    }
-    std::partial_sum(this->Start.begin(), this->Start.end(), this->Start.begin());
-    std::vector<std::int64_t> next(this->Start.begin(), this->Start.end() - 1);
+    std::vector<std::pair<std::int64_t, std::int64_t>> keyed(static_cast<std::size_t>(n));
+    ParallelFor(0, n, 4096, [&](std::int64_t begin, std::int64_t end) {
+      for (std::int64_t p = begin; p < end; ++p)
+      {
+        std::int64_t c[3];
+        this->CellOf(&rel[3 * p], c);
+        keyed[p] = { c[0] + this->Dims[0] * (c[1] + this->Dims[1] * c[2]), p };
+      }
+    });
+    ParallelSort(keyed);
     this->Order.resize(static_cast<std::size_t>(n));
-    for (std::int64_t p = 0; p < n; ++p)
-    {
-      this->Order[next[cellOf[p]]++] = p;
-    }
+    this->Start.resize(static_cast<std::size_t>(cells + 1));
+    ParallelFor(0, n + 1, 4096, [&](std::int64_t begin, std::int64_t end) {
+      for (std::int64_t i = begin; i < end; ++i)
+      {
+        // Position i begins the cells after the previous point's, up to its own.
+        const std::int64_t from = i == 0 ? 0 : keyed[i - 1].first + 1;
+        const std::int64_t to = i == n ? cells : keyed[i].first;
+        for (std::int64_t c = from; c <= to; ++c)
+        {
+          this->Start[c] = i;
+        }
+        if (i < n)
+        {
+          this->Order[i] = keyed[i].second;
+        }
+      }
+    });
     // Each cell's points by their coordinates: the searches then visit the
     // points in an order that does not depend on the order they came in
     // (distributed runs hold them in another), and every sum over them
@@ -88,6 +103,9 @@ public:
       }
     });
   }
+
+  /// The number of points sorted.
+  std::size_t NumberOfPoints() const { return this->Order.size(); }
 
   /// Calls fn(q) for every point q within `radius` of the place x.
   template <typename Fn>
@@ -580,23 +598,42 @@ std::vector<double> Thin(const Grid& grid, const std::vector<double>& rel, doubl
       keyed[p] = { c[0] + dims[0] * (c[1] + dims[1] * c[2]), p };
     }
   });
-  std::sort(keyed.begin(), keyed.end());
-  std::vector<double> thin;
-  for (std::size_t i = 0; i < keyed.size();)
-  {
-    // The cube's point with the lowest coordinates.
-    const double* kept = &rel[3 * keyed[i].second];
-    std::size_t j = i + 1;
-    for (; j < keyed.size() && keyed[j].first == keyed[i].first; ++j)
+  ParallelSort(keyed);
+  // The cubes' kept points, in cube order: fixed chunks of the sorted pairs,
+  // each taking the cubes whose first pair it holds, joined in chunk order.
+  constexpr std::int64_t Chunks = 64;
+  std::vector<std::vector<double>> kept(Chunks);
+  ParallelFor(0, Chunks, 1, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t chunk = begin; chunk < end; ++chunk)
     {
-      const double* other = &rel[3 * keyed[j].second];
-      if (std::lexicographical_compare(other, other + 3, kept, kept + 3))
+      std::int64_t i = n * chunk / Chunks;
+      const std::int64_t last = n * (chunk + 1) / Chunks;
+      while (i > 0 && i < last && keyed[i].first == keyed[i - 1].first)
       {
-        kept = other;
+        ++i; // the cube began in the chunk before
+      }
+      while (i < last)
+      {
+        // The cube's point with the lowest coordinates.
+        const double* lowest = &rel[3 * keyed[i].second];
+        std::int64_t j = i + 1;
+        for (; j < n && keyed[j].first == keyed[i].first; ++j)
+        {
+          const double* other = &rel[3 * keyed[j].second];
+          if (std::lexicographical_compare(other, other + 3, lowest, lowest + 3))
+          {
+            lowest = other;
+          }
+        }
+        kept[chunk].insert(kept[chunk].end(), lowest, lowest + 3);
+        i = j;
       }
     }
-    thin.insert(thin.end(), kept, kept + 3);
-    i = j;
+  });
+  std::vector<double> thin;
+  for (const auto& part : kept)
+  {
+    thin.insert(thin.end(), part.begin(), part.end());
   }
   return thin;
 }
@@ -604,15 +641,14 @@ std::vector<double> Thin(const Grid& grid, const std::vector<double>& rel, doubl
 /// The holes found, each with the point that sees it, in ascending point order.
 using Found = std::vector<std::pair<std::int64_t, Hole>>;
 
-/// Looks at points [0, n) (or only those marked in `look`) for holes
-/// (HoleFinder::Examine); with `suspects`, first the cheap test of each
-/// point, whose outcome it gets. False if the monitor stopped it.
-bool FindHoles(const Grid& grid, const std::vector<double>& rel, const std::vector<double>& allRel, double offset,
-  double threshold, double limit, const std::vector<char>* look, std::vector<char>* suspects, Found& found,
-  Monitor* monitor)
+/// Looks at points [0, n) of rel (or only those marked in `look`) for holes
+/// (HoleFinder::Examine); cells: rel's, all: allRel's (every point). With
+/// `suspects`, first the cheap test of each point, whose outcome it gets.
+/// False if the monitor stopped it.
+bool FindHoles(const PointCells& cells, const std::vector<double>& rel, const PointCells& all,
+  const std::vector<double>& allRel, double offset, double threshold, double limit, const std::vector<char>* look,
+  std::vector<char>* suspects, Found& found, Monitor* monitor)
 {
-  const PointCells cells(grid, 2.0 * offset, rel);
-  const PointCells all(grid, 0.5 * offset, allRel, false); // for minima only
   const std::int64_t n = static_cast<std::int64_t>(rel.size() / 3);
   if (suspects)
   {
@@ -670,12 +706,27 @@ bool GapClosing::Run(std::vector<double>& xyz, const std::function<bool(const do
   const double l = this->Offset;
   const std::array<double, 3>& origin = this->GridNodes.Origin;
   std::vector<double> rel(xyz.size());
-  for (std::size_t i = 0; i < xyz.size(); ++i)
-  {
-    rel[i] = xyz[i] - origin[i % 3];
-  }
+  ParallelFor(0, static_cast<std::int64_t>(xyz.size() / 3), 4096, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t p = begin; p < end; ++p)
+    {
+      for (int a = 0; a < 3; ++a)
+      {
+        rel[3 * p + a] = xyz[3 * p + a] - origin[a];
+      }
+    }
+  });
   const std::int64_t given = static_cast<std::int64_t>(xyz.size() / 3);
   std::vector<double> thin = Thin(this->GridNodes, rel, ThinCells * l);
+  // The searches' cells, made again only once points were added.
+  std::unique_ptr<PointCells> thinCells, allCells;
+  auto findHoles = [&](double threshold, const std::vector<char>* looked, std::vector<char>* suspects, Found& out) {
+    if (!thinCells || thinCells->NumberOfPoints() != thin.size() / 3)
+    {
+      thinCells.reset(new PointCells(this->GridNodes, 2.0 * l, thin));
+      allCells.reset(new PointCells(this->GridNodes, 0.5 * l, rel, false)); // for minima only
+    }
+    return FindHoles(*thinCells, thin, *allCells, rel, l, threshold, this->Measured, looked, suspects, out, monitor);
+  };
   Found found;
   // Points that can border a hole: those with an empty circle wider than l
   // within 2 l (adding points only shrinks the circles), and the added ones.
@@ -683,8 +734,7 @@ bool GapClosing::Run(std::vector<double>& xyz, const std::function<bool(const do
   for (int round = 0; this->Radius > 0.0 && round < MaximumRounds; ++round)
   {
     const bool first = round == 0;
-    if (!FindHoles(this->GridNodes, thin, rel, l, first ? l : BridgeTarget * l, this->Measured,
-          first ? nullptr : &look, first ? &look : nullptr, found, monitor))
+    if (!findHoles(first ? l : BridgeTarget * l, first ? nullptr : &look, first ? &look : nullptr, found))
     {
       return false;
     }
@@ -739,8 +789,7 @@ bool GapClosing::Run(std::vector<double>& xyz, const std::function<bool(const do
 
   // The holes left open: every disc wider than l up to the measured radius.
   const bool bridged = this->Radius > 0.0;
-  if (!FindHoles(this->GridNodes, thin, rel, l, l, this->Measured, bridged ? &look : nullptr,
-        bridged ? nullptr : &look, found, monitor))
+  if (!findHoles(l, bridged ? &look : nullptr, bridged ? nullptr : &look, found))
   {
     return false;
   }

@@ -47,32 +47,6 @@ struct NearestRecord
                                   static_cast<double>(this->Asker), static_cast<double>(this->Point) });
   }
 };
-/// Sorts v: fixed chunks sorted in parallel, then merged pairwise (the
-/// result is the sorted sequence, whatever the threads).
-template <typename T>
-void ParallelSort(std::vector<T>& v)
-{
-  constexpr std::int64_t Chunks = 8;
-  const std::int64_t n = static_cast<std::int64_t>(v.size());
-  auto bound = [&](std::int64_t c) { return v.begin() + static_cast<std::ptrdiff_t>(n * c / Chunks); };
-  ParallelFor(0, Chunks, 1, [&](std::int64_t begin, std::int64_t end) {
-    for (std::int64_t c = begin; c < end; ++c)
-    {
-      std::sort(bound(c), bound(c + 1));
-    }
-  });
-  for (std::int64_t width = 1; width < Chunks; width *= 2)
-  {
-    ParallelFor(0, Chunks / (2 * width), 1, [&](std::int64_t begin, std::int64_t end) {
-      for (std::int64_t m = begin; m < end; ++m)
-      {
-        const std::int64_t first = 2 * width * m;
-        std::inplace_merge(bound(first), bound(first + width), bound(first + 2 * width));
-      }
-    });
-  }
-}
-
 /// Whether point a comes before point b in lexicographic order (x, then y, then z).
 bool Before(const double* a, const double* b)
 {

@@ -552,7 +552,7 @@ bool Reconstruction::Evolve()
     // The distances serve phi^0 only: freed before the solver's other arrays
     // are made, so that the two never hold memory together.
     std::vector<double> phi0 = AllenCahnSolver::InitialField(this->Band, this->ThePlan.Scheme);
-    std::vector<double>().swap(this->Band.Distance);
+    Free(this->Band.Distance);
     ReleaseFreedMemory();
     this->Solver.reset(new AllenCahnSolver(this->Band, this->ThePlan.Scheme, std::move(phi0), this->TheHalo.get()));
   }
@@ -569,7 +569,7 @@ bool Reconstruction::Evolve()
   }
   // The outputs need the band's nodes and phi only.
   this->Solver->ReleaseWorkspace();
-  std::vector<std::uint32_t>().swap(this->Band.Neighbor);
+  Free(this->Band.Neighbor);
   ReleaseFreedMemory();
   if (this->Writer)
   {

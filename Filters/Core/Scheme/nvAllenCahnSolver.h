@@ -6,13 +6,12 @@
 #ifndef nvAllenCahnSolver_h
 #define nvAllenCahnSolver_h
 
+#include "nvMemory.h"
 #include "nvParameters.h"
 
 #include <cmath>
 #include <cstdint>
 #include <memory>
-#include <new>
-#include <utility>
 #include <vector>
 
 namespace nv
@@ -22,36 +21,8 @@ class Halo;
 class Monitor;
 struct NarrowBand;
 
-/// std::allocator, but resize() leaves new doubles unset instead of zeroing
-/// them: the solver's arrays are first written by its parallel loops, so each
-/// thread touches (and the kernel places) its own pages, and no single thread
-/// zeroes gigabytes first.
-template <typename T>
-struct UninitializedAllocator : std::allocator<T>
-{
-  template <typename U>
-  struct rebind
-  {
-    using other = UninitializedAllocator<U>;
-  };
-  UninitializedAllocator() = default;
-  template <typename U>
-  UninitializedAllocator(const UninitializedAllocator<U>&) noexcept
-  {
-  }
-  template <typename U>
-  void construct(U* p) noexcept
-  {
-    ::new (static_cast<void*>(p)) U;
-  }
-  template <typename U, typename... Args>
-  void construct(U* p, Args&&... args)
-  {
-    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
-  }
-};
-using SolverValues = std::vector<double, UninitializedAllocator<double>>;
-using SolverFloats = std::vector<float, UninitializedAllocator<float>>;
+using SolverValues = UninitializedVector<double>;
+using SolverFloats = UninitializedVector<float>;
 
 /// What happened in one time step.
 struct StepReport
