@@ -170,10 +170,17 @@ def test_a_coarsened_grid():
     match = re.search(r"set SampleSpacing to ([0-9.eE+-]+)", coarsened[0])
     finer = float(match.group(1))
     assert finer < h and "OffsetDistance raised from" in coarsened[0], coarsened[0]
+    asked = float(re.search(r"raised from ([0-9.eE+-]+)", coarsened[0]).group(1))
     f, figures, warnings = run(dense, OutputVolume=False, SampleSpacing=finer)
     assert not about(warnings, "coarsened"), "the advised spacing: no coarsening"
     assert abs(figures["OffsetDistance"][0] / figures["SampleSpacing"][0] - 4.0) < 1e-6
-    assert figures["OffsetDistance"][0] < l, "and the offset the sampling asks for"
+    assert abs(figures["OffsetDistance"][0] / asked - 1.0) < 1e-5, "and the offset the sampling asks for"
+    # The other advice, MaximumDimension, gives that offset too, on a grid as fine.
+    cells = int(re.search(r"MaximumDimension to ([0-9]+)", coarsened[0]).group(1))
+    f, figures, warnings = run(dense, OutputVolume=False, MaximumDimension=cells)
+    assert not about(warnings, "coarsened") and not about(warnings, "grid is coarse")
+    assert abs(figures["OffsetDistance"][0] / asked - 1.0) < 1e-5, "MaximumDimension: the offset asked for"
+    assert figures["SampleSpacing"][0] <= 1.01 * finer, "MaximumDimension: the finer grid"
 
 
 def test_an_open_surface_and_a_thin_object():

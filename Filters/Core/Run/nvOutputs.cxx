@@ -127,13 +127,15 @@ std::vector<std::string> GapWarnings(const GapReport& gaps, double closingRadius
          << ".\n";
     if (closingRadius > 0.0)
     {
-      text << "If they are gaps, not the surface's own openings, set ClosingRadius to " << RoundUp(widest[0]->Radius)
-           << " or more to bridge them.";
+      text << (count[0] == 1 ? "If it is a gap, not an opening of the surface itself"
+                             : "If they are gaps, not the surface's own openings")
+           << ", set ClosingRadius to " << RoundUp(widest[0]->Radius) << " or more to bridge "
+           << (count[0] == 1 ? "it." : "them.");
     }
     else
     {
       text << "Turn CloseGaps on, or set OffsetDistance to " << RoundUp(widest[0]->Radius / BridgeTarget)
-           << " or more to cover them.";
+           << " or more to cover " << (count[0] == 1 ? "it." : "them.");
     }
     warnings.push_back(text.str());
   }
