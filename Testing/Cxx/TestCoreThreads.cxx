@@ -216,7 +216,7 @@ void TestRunThreads()
     settings.NumberOfThreads = counts[t];
     nv::Reconstruction run(settings, nullptr, nullptr);
     NV_CHECK(run.Run(points));
-    phi[t] = run.GetPhi();
+    phi[t].assign(run.GetPhi().begin(), run.GetPhi().end());
   }
   NV_CHECK(!phi[0].empty());
   NV_CHECK(phi[1] == phi[0]);

@@ -88,6 +88,10 @@ struct NarrowBand
   std::int64_t GridIndex(std::int64_t s) const;
 };
 
+/// A value per band node (and the two Dirichlet slots), first written by
+/// the parallel loop that computes it.
+using BandValues = UninitializedVector<double>;
+
 /// Largest band the 32-bit neighbour indices can address.
 constexpr std::int64_t MaximumBandSize = 4294967295LL - 2;
 

@@ -37,7 +37,7 @@ std::array<std::int64_t, 3> BrickDimensions(const Grid& grid)
 BrickField::~BrickField() = default;
 
 //------------------------------------------------------------------------------
-BandField::BandField(const NarrowBand& band, const std::vector<double>& phi, const Parameters& parameters)
+BandField::BandField(const NarrowBand& band, const BandValues& phi, const Parameters& parameters)
   : Band(band)
   , Phi(phi)
   , Psi(parameters)

@@ -20,6 +20,7 @@
 #define nvSurfaceField_h
 
 #include "nvGrid.h"
+#include "nvNarrowBand.h"
 #include "nvParameters.h"
 #include "nvTruncatedDistance.h"
 
@@ -29,7 +30,6 @@
 
 namespace nv
 {
-struct NarrowBand;
 
 /// psi of phi, clamped to [-eta/2, eta/2]; its sign is phi's.
 class ImpliedDistance
@@ -69,13 +69,13 @@ public:
 class BandField : public BrickField
 {
 public:
-  BandField(const NarrowBand& band, const std::vector<double>& phi, const Parameters& parameters);
+  BandField(const NarrowBand& band, const BandValues& phi, const Parameters& parameters);
   void Layer(std::int64_t layer, std::vector<float>& uniform, std::vector<std::int64_t>& varying) const override;
   void Values(std::int64_t brick, float values[BrickNodes]) const override;
 
 private:
   const NarrowBand& Band;
-  const std::vector<double>& Phi;
+  const BandValues& Phi;
   ImpliedDistance Psi;
   std::array<std::int64_t, 3> BrickDims;
 };

@@ -74,7 +74,7 @@ void VolumeWriter::WriteBrick(std::int64_t brick, const double distance[BrickNod
   }
 }
 
-void VolumeWriter::WriteBand(const NarrowBand& band, const std::vector<double>& phi) const
+void VolumeWriter::WriteBand(const NarrowBand& band, const BandValues& phi) const
 {
   const VolumeArrays& arrays = this->Arrays;
   const std::int64_t layer = this->TheGrid.Dims[0] * this->TheGrid.Dims[1];

@@ -14,6 +14,7 @@
 #define nvVolume_h
 
 #include "nvGrid.h"
+#include "nvNarrowBand.h"
 #include "nvParameters.h"
 #include "nvTruncatedDistance.h"
 
@@ -22,7 +23,6 @@
 
 namespace nv
 {
-struct NarrowBand;
 
 /// Dense arrays to fill, each of Nx Ny (kEnd - kBegin) values; null ones are skipped.
 struct VolumeArrays
@@ -45,7 +45,7 @@ public:
   /// The nodes of one brick from their distances (eq. 2, 6); thread-safe for distinct bricks.
   void WriteBrick(std::int64_t brick, const double distance[BrickNodes]) const;
   /// The band nodes: the evolved phi. In parallel.
-  void WriteBand(const NarrowBand& band, const std::vector<double>& phi) const;
+  void WriteBand(const NarrowBand& band, const BandValues& phi) const;
 
 private:
   Grid TheGrid;

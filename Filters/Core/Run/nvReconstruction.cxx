@@ -551,7 +551,7 @@ bool Reconstruction::Evolve()
   {
     // The distances serve phi^0 only: freed before the solver's other arrays
     // are made, so that the two never hold memory together.
-    std::vector<double> phi0 = AllenCahnSolver::InitialField(this->Band, this->ThePlan.Scheme);
+    BandValues phi0 = AllenCahnSolver::InitialField(this->Band, this->ThePlan.Scheme);
     Free(this->Band.Distance);
     ReleaseFreedMemory();
     this->Solver.reset(new AllenCahnSolver(this->Band, this->ThePlan.Scheme, std::move(phi0), this->TheHalo.get()));

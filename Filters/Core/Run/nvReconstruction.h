@@ -161,7 +161,7 @@ public:
 
   /// The band (after Run, its nodes only: the solver's other arrays are freed).
   const NarrowBand& GetBand() const { return this->Band; }
-  const std::vector<double>& GetPhi() const { return this->Solver->GetPhi(); }
+  const BandValues& GetPhi() const { return this->Solver->GetPhi(); }
 
   /// Frees the band and phi once the outputs no longer need them (after the
   /// surface is extracted), so that the surface's last steps (small pieces,

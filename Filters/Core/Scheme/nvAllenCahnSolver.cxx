@@ -39,10 +39,10 @@ double AllenCahnSolver::EdgeStop(double phi0, EdgeStopping function)
   return function == EdgeStopping::Eq4 ? (1.0 - a) * a : 1.0 - phi0 * phi0;
 }
 
-std::vector<double> AllenCahnSolver::InitialField(const NarrowBand& band, const Parameters& parameters)
+BandValues AllenCahnSolver::InitialField(const NarrowBand& band, const Parameters& parameters)
 {
   const std::int64_t size = band.Size();
-  std::vector<double> phi(static_cast<std::size_t>(size + 2));
+  BandValues phi(static_cast<std::size_t>(size + 2));
   // Dirichlet values of eq. (5).
   phi[band.InsideSlot()] = 1.0 - parameters.Delta;
   phi[band.OutsideSlot()] = -1.0 + parameters.Delta;
@@ -63,7 +63,7 @@ AllenCahnSolver::AllenCahnSolver(const NarrowBand& band, const Parameters& param
 }
 
 AllenCahnSolver::AllenCahnSolver(
-  const NarrowBand& band, const Parameters& parameters, std::vector<double> phi0, Halo* halo)
+  const NarrowBand& band, const Parameters& parameters, BandValues phi0, Halo* halo)
   : Band(band)
   , Exchange(halo)
   , Params(parameters)

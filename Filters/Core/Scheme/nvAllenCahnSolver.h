@@ -7,6 +7,7 @@
 #define nvAllenCahnSolver_h
 
 #include "nvMemory.h"
+#include "nvNarrowBand.h"
 #include "nvParameters.h"
 
 #include <cmath>
@@ -19,7 +20,6 @@ namespace nv
 class DriftCorrection;
 class Halo;
 class Monitor;
-struct NarrowBand;
 
 using SolverValues = UninitializedVector<double>;
 using SolverFloats = UninitializedVector<float>;
@@ -47,12 +47,12 @@ public:
    * not read, so a caller short of memory frees them first (the solver's
    * three other arrays then take their place).
    */
-  AllenCahnSolver(const NarrowBand& band, const Parameters& parameters, std::vector<double> phi0, Halo* halo = nullptr);
+  AllenCahnSolver(const NarrowBand& band, const Parameters& parameters, BandValues phi0, Halo* halo = nullptr);
   ~AllenCahnSolver();
 
   /// phi^0 of eq. (2) at the band nodes and the Dirichlet values of eq. (5)
   /// in slots L and L + 1: the only use of the band's distances.
-  static std::vector<double> InitialField(const NarrowBand& band, const Parameters& parameters);
+  static BandValues InitialField(const NarrowBand& band, const Parameters& parameters);
 
   /// phi0 = tanh((l - d) / (sqrt(2) xi)), eq. (2).
   static double InitialPhi(double distance, double offset, double xi);
@@ -88,8 +88,8 @@ public:
   void ReleaseWorkspace();
 
   /// phi at band node s (s < L); slots L and L + 1 hold the Dirichlet values.
-  const std::vector<double>& GetPhi() const { return this->Phi; }
-  std::vector<double>& GetPhi() { return this->Phi; }
+  const BandValues& GetPhi() const { return this->Phi; }
+  BandValues& GetPhi() { return this->Phi; }
 
 private:
   /// One red or black half sweep over [begin, end); returns the max |change|.
@@ -104,7 +104,7 @@ private:
   const NarrowBand& Band;
   Halo* Exchange = nullptr;
   Parameters Params;
-  std::vector<double> Phi;      ///< L + 2 values
+  BandValues Phi;              ///< L + 2 values
   SolverValues Previous; ///< phi^n, the right-hand side of (10)
   SolverValues Coupling; ///< w_s = c_s / (1 + 6 c_s), c_s = dt g_s / h^2
   /// exp(-2 g_s dt / eps^2) in single precision: read once a step by (12),
