@@ -423,6 +423,14 @@ std::string vtkNarrowVolumeReconstruction::InWordsOfReader(std::string message) 
 }
 
 //------------------------------------------------------------------------------
+const char* vtkNarrowVolumeReconstruction::GetGridUsed()
+{
+  const int* n = this->GridDimensionsUsed;
+  this->GridUsed = n[0] > 0 ? std::to_string(n[0]) + " x " + std::to_string(n[1]) + " x " + std::to_string(n[2]) : "";
+  return this->GridUsed.c_str();
+}
+
+//------------------------------------------------------------------------------
 void vtkNarrowVolumeReconstruction::KeepResults(const nv::Reconstruction* run, const nv::Outcome& outcome)
 {
   // The figures of the last run for the Get...() methods; none when it did

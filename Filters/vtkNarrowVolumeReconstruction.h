@@ -382,6 +382,11 @@ public:
   vtkGetMacro(SampleSpacingUsed, double);
   vtkGetMacro(ClosingRadiusUsed, double);
   vtkGetVector3Macro(GridDimensionsUsed, int);
+  /**
+   * GridDimensionsUsed as one text, "221 x 260 x 200" ("" before a run):
+   * what ParaView's panel shows as Grid Used.
+   */
+  const char* GetGridUsed();
   vtkGetMacro(SamplingTime, double);
   vtkGetMacro(SetupTime, double);
   vtkGetMacro(EvolutionTime, double);
@@ -473,6 +478,7 @@ protected:
   double SampleSpacingUsed = 0.0;
   double ClosingRadiusUsed = 0.0;
   int GridDimensionsUsed[3] = { 0, 0, 0 };
+  std::string GridUsed; // GetGridUsed()'s text
   bool PanelLabelsInMessages = false;
   std::shared_ptr<const nv::Sampling> Sampled; ///< of the input at SampledTime
   vtkMTimeType SampledTime = 0;

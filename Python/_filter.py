@@ -143,6 +143,11 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
         """The grid's nodes along x, y and z in the last run."""
         return self._dimensions
 
+    def GetGridUsed(self):
+        """GridDimensionsUsed as one text, "221 x 260 x 200" ("" before a run):
+        what ParaView's panel shows as Grid Used."""
+        return " x ".join(str(n) for n in self._dimensions) if self._dimensions[0] > 0 else ""
+
     def GetSamplingTime(self):
         """Wall-clock seconds spent measuring the points' spacing (nearest
         neighbours, for the automatic offset and MedianPointSpacing) in the

@@ -206,30 +206,40 @@ BY_NAME = {p.name: p for p in PROPERTIES}
 AUTOMATIC_WHEN_ZERO = frozenset(("OffsetDistance", "ClosingRadius", "SampleSpacing", "MaximumDimension",
                                  "NumberOfThreads", "MemoryLimit"))
 
-Result = namedtuple("Result", "name label kind size beside advanced doc")
+Result = namedtuple("Result", "name label kind size beside panel doc")
 Result.__doc__ = """A value the last run chose, which the ParaView panel shows
 read-only (an information property) beside the property it resolves.
 
 name: the Get name (GetOffsetDistanceUsed), of the VTK filter and the
     wheel's filter alike, and the ParaView property's name.
-label: the panel's label. kind: float or int. size: number of values.
+label: the panel's label. kind: float, int or str. size: number of values.
 beside: the property it follows on the panel (and in its group).
-advanced: whether the panel shows it only in advanced mode.
+panel: "default" (the panel shows it), "advanced" (only in advanced mode)
+    or "hidden": a property for scripts (pvpython's shell.<name>) that the
+    panel shows in another form. Hidden by the proxy's hint
+    <Property name=... show="0"/>, not panel_visibility="never", which
+    would also take it from pvpython's attributes.
 doc: what it is, with {OtherProperty} for the names of other properties."""
 
 # What the last run chose, in the panel's order.
 RESULTS = (
-    Result("OffsetDistanceUsed", "Offset Distance Used", float, 1, "OffsetDistance", False,
+    Result("OffsetDistanceUsed", "Offset Distance Used", float, 1, "OffsetDistance", "default",
            "The offset distance of the last Apply: the one set, or the automatic one when {OffsetDistance} "
            "is 0. Read-only."),
-    Result("ClosingRadiusUsed", "Closing Radius Used", float, 1, "ClosingRadius", True,
+    Result("ClosingRadiusUsed", "Closing Radius Used", float, 1, "ClosingRadius", "advanced",
            "The closing radius of the last Apply: the one set, or 3 times the offset distance when "
            "{ClosingRadius} is 0; 0 with {CloseGaps} off. Read-only."),
-    Result("SampleSpacingUsed", "Sample Spacing Used", float, 1, "SampleSpacing", False,
+    Result("SampleSpacingUsed", "Sample Spacing Used", float, 1, "SampleSpacing", "default",
            "The grid spacing of the last Apply: the one set, or the automatic one when {SampleSpacing} is 0. "
            "Read-only."),
-    Result("GridDimensionsUsed", "Grid Dimensions Used", int, 3, "MaximumDimension", False,
-           "Grid nodes along x, y and z in the last Apply. Read-only."),
+    # The panel shows the grid as one text (three fields of their own do
+    # not fit the panel's default width); scripts read the three integers.
+    Result("GridUsed", "Grid Used", str, 1, "MaximumDimension", "default",
+           "Grid nodes along x, y and z in the last Apply, as one text: \"221 x 260 x 200\" (empty before "
+           "the first). Read-only."),
+    Result("GridDimensionsUsed", "Grid Dimensions Used", int, 3, "MaximumDimension", "hidden",
+           "Grid nodes along x, y and z in the last Apply: three integers, for scripts (the panel shows them "
+           "as Grid Used). Read-only."),
 )
 
 

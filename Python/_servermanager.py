@@ -39,14 +39,17 @@ def number(value: Any) -> str:
 
 def result_element(table: Any, result: Any, indent: str, label: Any) -> List[str]:
     """A value the last run chose, as a read-only (information-only)
-    property that the panel shows and updates after each Apply; label(name):
-    another property's panel label."""
-    element, helper = (("DoubleVectorProperty", "SimpleDoubleInformationHelper") if result.kind is float
-                       else ("IntVectorProperty", "SimpleIntInformationHelper"))
+    property that the panel shows and updates after each Apply (unless its
+    panel is "hidden": see panel_hints()); label(name): another property's
+    panel label."""
+    element, helper = {float: ("DoubleVectorProperty", "SimpleDoubleInformationHelper"),
+                       int: ("IntVectorProperty", "SimpleIntInformationHelper"),
+                       str: ("StringVectorProperty", "SimpleStringInformationHelper")}[result.kind]
+    default = "" if result.kind is str else " ".join(["0"] * result.size)
     attributes = ('name="%s" command="Get%s" label=%s information_only="1" number_of_elements="%d" '
-                  'default_values="%s" panel_visibility="%s"' % (
-                      result.name, result.name, quoteattr(result.label), result.size, " ".join(["0"] * result.size),
-                      "advanced" if result.advanced else "default"))
+                  'default_values=%s panel_visibility="%s"' % (
+                      result.name, result.name, quoteattr(result.label), result.size, quoteattr(default),
+                      "advanced" if result.panel == "advanced" else "default"))
     return ["%s<%s %s>" % (indent, element, attributes),
             "%s  <%s/>" % (indent, helper),
             "%s  <Documentation>%s</Documentation>" % (indent, escape(table.describe(result, label))),
@@ -104,6 +107,14 @@ def property_elements(table: Any, indent: str = "      ") -> List[str]:
     return out
 
 
+def panel_hints(table: Any, indent: str = "        ") -> List[str]:
+    """The proxy's hints that keep the "hidden" results off the panel. Not
+    panel_visibility="never": pvpython gives an information property with
+    that no attribute (shell.GridDimensionsUsed), and scripts use them."""
+    return ['%s<Property name="%s" show="0"/>' % (indent, result.name)
+            for result in table.RESULTS if result.panel == "hidden"]
+
+
 def proxy_xml(table: Any, python_class: Optional[str] = None) -> str:
     """The whole ServerManagerConfiguration of the filter: for the compiled
     plugin's C++ class, or, given python_class ("module.Class"), for a
@@ -142,6 +153,7 @@ def proxy_xml(table: Any, python_class: Optional[str] = None) -> str:
     ]
     lines += [
         "      <Hints>",
+    ] + panel_hints(table) + [
         '        <ShowInMenu category="%s"/>' % MENU,
         '        <Visibility replace_input="0"/>',
         "      </Hints>",

@@ -83,7 +83,7 @@ def main(xml_path):
             pictures += 1
             if "(../images/parameters/%s.png)" % prop.name not in page:
                 failures.append("%s: doc/images/parameters/%s.png is not shown" % (prop.name, prop.name))
-        elif not prop.advanced and prop in table.PROPERTIES:
+        elif prop in table.PROPERTIES and not prop.advanced:
             print("note: %s is shown in the panel and has no picture yet (doc/images/parameters/%s.png)"
                   % (prop.name, prop.name))
         checked += 1

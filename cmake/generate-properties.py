@@ -139,10 +139,13 @@ def stub(table):
             "    def GetNumberOfBandNodes(self) -> int: ...",
             "    def GetNumberOfGridNodes(self) -> int: ...",
             "    def GetRelativeChanges(self) -> Tuple[float, ...]: ...",
-            "    def GetOffsetDistanceUsed(self) -> float: ...",
-            "    def GetSampleSpacingUsed(self) -> float: ...",
-            "    def GetClosingRadiusUsed(self) -> float: ...",
-            "    def GetSamplingTime(self) -> float: ...",
+            ]
+    for result in table.RESULTS:
+        kind = result.kind.__name__
+        if result.size > 1:
+            kind = "Tuple[%s]" % ", ".join([kind] * result.size)
+        out.append("    def Get%s(self) -> %s: ..." % (result.name, kind))
+    out += ["    def GetSamplingTime(self) -> float: ...",
             "    def GetSetupTime(self) -> float: ...",
             "    def GetEvolutionTime(self) -> float: ...",
             "    def GetOutputTime(self) -> float: ...", ""]
@@ -230,11 +233,14 @@ def markdown(table, images_dir=None, images_url=""):
             out += [image, ""]
         out += [table.describe(prop, code), ""]
         for result in table.results_beside(prop.name):
+            shown = ("not shown in the panel (pvpython's attribute, for scripts)" if result.panel == "hidden" else
+                     "shown in the panel after *%s* as *%s*%s" % (prop.label, result.label,
+                                                                 " (advanced)" if result.panel == "advanced" else ""))
+            kind = ("%d values" % result.size if result.size > 1 else
+                    "text" if result.kind is str else result.kind.__name__)
             out += ["### %s" % result.name, "",
-                    "read-only: what the last run chose, shown in the panel after *%s* as *%s*%s; %s; "
-                    "Python and C++ `Get%s()`." % (prop.label, result.label, " (advanced)" if result.advanced else "",
-                                                   "%d values" % result.size if result.size > 1 else
-                                                   result.kind.__name__, result.name), "",
+                    "read-only: what the last run chose, %s; %s; Python and C++ `Get%s()`." % (
+                        shown, kind, result.name), "",
                     table.describe(result, code), ""]
     return "\n".join(out)
 

@@ -121,7 +121,28 @@ try:
     result["panel_used"] = {name: (list(shell.GetPropertyValue(name)) if name == "GridDimensionsUsed" else
                                    shell.GetPropertyValue(name))
                             for name in ("OffsetDistanceUsed", "SampleSpacingUsed", "ClosingRadiusUsed",
-                                         "GridDimensionsUsed")}
+                                         "GridUsed", "GridDimensionsUsed")}
+    # The read-only values the panel draws, as pqProxyWidget chooses them
+    # from the proxy's definition: an information property gets a widget
+    # (one line edit per element) unless its visibility is "never" or the
+    # proxy's hints hide it (<Property name=... show="0"/>); [class, number
+    # of elements, visibility] of each.
+    hints = shell.SMProxy.GetHints()
+    hidden = set()
+    for n in range(hints.GetNumberOfNestedElements() if hints else 0):
+        hint = hints.GetNestedElement(n)
+        if hint.GetName() == "Property" and hint.GetAttribute("show") == "0":
+            hidden.add(hint.GetAttribute("name"))
+    result["panel_hidden"] = sorted(hidden)
+    iterator = shell.SMProxy.NewPropertyIterator()
+    iterator.Begin()
+    result["panel_information"] = {}
+    while not iterator.IsAtEnd():
+        prop = iterator.GetProperty()
+        if prop.GetInformationOnly() and prop.GetPanelVisibility() != "never" and iterator.GetKey() not in hidden:
+            result["panel_information"][iterator.GetKey()] = [prop.GetClassName(), prop.GetNumberOfElements(),
+                                                              prop.GetPanelVisibility()]
+        iterator.Next()
     result["field_used"] = {name: float(field.GetArray(name).GetValue(0))
                             for name in ("OffsetDistance", "SampleSpacing", "ClosingRadius")}
     result["volume_dimensions"] = list(algorithm.GetOutputDataObject(0).GetDimensions())

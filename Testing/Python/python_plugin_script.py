@@ -166,6 +166,9 @@ def record_all():
     algorithm.RemoveObserver(watch)
     np.savez(out + ".npz", **outputs(shell))
     result["progress"] = progress
+    # The grid of the run: the panel's text (Grid Used) and pvpython's three integers.
+    shell.UpdatePropertyInformation()
+    result["grid_used"] = [shell.GridUsed, list(shell.GridDimensionsUsed)]
     result["field_data"] = sorted(
         servermanager.Fetch(shell, idx=0).GetFieldData().GetAbstractArray(i).GetName()
         for i in range(servermanager.Fetch(shell, idx=0).GetFieldData().GetNumberOfArrays()))

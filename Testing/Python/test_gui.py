@@ -155,7 +155,25 @@ def test_panel_shows_what_the_run_chose(gui):
     for name in ("OffsetDistance", "SampleSpacing", "ClosingRadius"):
         assert panel.get(name + "Used", 0.0) > 0.0 and panel.get(name + "Used") == pytest.approx(field.get(name)), \
             "the panel's %sUsed is the run's %s" % (name, name)
-    assert panel.get("GridDimensionsUsed") == result.get("volume_dimensions"), "the panel's grid is the volume's"
+    assert panel.get("GridDimensionsUsed") == result.get("volume_dimensions"), "the grid of scripts is the volume's"
+
+
+def test_panel_shows_the_grid_in_one_field(gui):
+    """The panel shows the grid the run chose as one read-only text,
+    "221 x 260 x 200", which fits its default width (three fields of their
+    own did not): of the information properties it draws, one holds the
+    grid, with one element; the three integers stay for scripts
+    (shell.GridDimensionsUsed), off the panel."""
+    result = gui[0]
+    shown = result.get("panel_information") or {}
+    print("read-only values the panel draws: %s; hidden from it: %s" % (shown, result.get("panel_hidden")))
+    grid = {name: facts for name, facts in shown.items() if "Grid" in name}
+    assert list(grid) == ["GridUsed"] and grid["GridUsed"][:2] == ["vtkSMStringVectorProperty", 1], \
+        "the panel draws the grid as one read-only text field: %s" % grid
+    assert (result.get("panel_used") or {}).get("GridUsed") == " x ".join(
+        str(n) for n in result.get("volume_dimensions") or ()), "the panel's grid text is the volume's"
+    assert set(shown) == {"OffsetDistanceUsed", "ClosingRadiusUsed", "SampleSpacingUsed", "GridUsed"}, \
+        "the panel's read-only values: %s" % sorted(shown)
 
 
 def test_camera_framed_where_the_cloud_drew_nothing(gui_ply):

@@ -154,3 +154,4 @@ def test_messages_name_the_panels_labels(pvs, sphere):
     assert any("Sample Spacing" in t and "Maximum Dimension" in t and "SampleSpacing" not in t for t in texts), texts
     assert f.OffsetDistanceUsed == pytest.approx(0.01) and f.SampleSpacingUsed > 0.01 / 3  # coarse, as warned
     assert max(f.GridDimensionsUsed) == 41
+    assert f.GridUsed == " x ".join(str(n) for n in f.GridDimensionsUsed)  # the panel's text

@@ -126,6 +126,16 @@ def test_outputs_bit_identical(records):
     assert python["field_data"] == compiled["field_data"]
 
 
+def test_grid_used(records):
+    """The grid of the run as the panel shows it, one text ("322 x 305 x
+    171"), and as pvpython's shell.GridDimensionsUsed, three integers: the
+    Volume's dimensions, alike in both plugins."""
+    (compiled, c), (python, _) = records
+    text, dimensions = compiled.get("grid_used") or ("", [])
+    assert dimensions == [int(n) for n in c["dimensions"]] and text == " x ".join(str(n) for n in dimensions)
+    assert python.get("grid_used") == compiled["grid_used"]
+
+
 def test_progress_abort_and_errors(records):
     """Progress from 0 to 1 in many steps, never back; an abort empties the
     outputs and the next run is whole; a NaN point gives the filter's error."""
