@@ -10,10 +10,11 @@ property, the panel's group, whether the panel shows it only in advanced
 mode, and what it means.
 
 Everything else is made from this table (cmake/generate-properties.py, run
-when CMake configures, writes the generated files into the build):
+when CMake configures, writes the generated files into the build; the core's
+header is committed, and the PropertyTable test checks it):
 
 - the core's nv::Settings: its fields and their defaults
-  (nvSettingsTable.h, read by Filters/Core/Run/nvSettings.h), which the VTK
+  (Filters/Core/Run/nvSettingsTable.h, read by nvSettings.h), which the VTK
   filter copies (its constructor, GetSettings, PrintSelf) and the binding
   binds (Python/nvBindings.cxx), field by field through one macro;
 - the ParaView server-manager XML of the filter (_servermanager.py makes

@@ -4,9 +4,11 @@
 """Makes the files that follow the property table (Python/_properties.py).
 
 CMake runs it when it configures (CMakeLists.txt); by hand it rewrites or
-checks the summary table of the parameters (in doc/how-to/choose-parameters.md):
+checks the core's settings header, which is committed (a C++-only build
+needs no Python), and the summary table of the parameters (in
+doc/how-to/choose-parameters.md):
 
-    generate-properties.py --header nvSettingsTable.h     the core's settings
+    generate-properties.py --header Filters/Core/Run/nvSettingsTable.h [--check]   the core's settings
     generate-properties.py --xml OUT                      the ParaView proxy
     generate-properties.py --markdown OUT                 the parameter reference
     generate-properties.py --stub OUT                     the wheel's filter's type stub
@@ -72,8 +74,11 @@ def cpp_default(prop):
 
 def header(table):
     lines = [
+        "// SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers",
+        "// SPDX-License-Identifier: BSD-3-Clause",
         "// Generated from Python/_properties.py (the property table) by",
-        "// cmake/generate-properties.py when CMake configures: edit the table, not this file.",
+        "// cmake/generate-properties.py --header: edit the table, then run it (the",
+        "// PropertyTable test checks that this file is the table's).",
         "//",
         "// NV_SETTINGS(X) calls X(Type, Name, Default) for each property of the",
         "// filter, in the table's order: nv::Settings declares its fields with it",
@@ -294,10 +299,18 @@ def main():
     parser.add_argument("--markdown", metavar="OUT", help="write the parameter reference")
     parser.add_argument("--stub", metavar="OUT", help="write the type stub of the wheel's filter (_filter.pyi)")
     parser.add_argument("--readme", metavar="README", help="rewrite the table of the parameters between the markers of a Markdown file")
-    parser.add_argument("--check", action="store_true", help="with --readme: only check it, exit 1 if it differs")
+    parser.add_argument("--check", action="store_true",
+                        help="with --header or --readme: only check the file, exit 1 if it differs")
     args = parser.parse_args()
     table = load_module("narrowvolume_properties", args.table)
-    if args.header:
+    if args.header and args.check:
+        with open(args.header, encoding="utf-8") as committed:
+            if committed.read() != header(table):
+                print("FAILED: %s differs from the property table; rewrite it with\n"
+                      "    python3 cmake/generate-properties.py --header %s" % (args.header, args.header))
+                return 1
+        print("generate-properties: %s is the property table's (%d properties)" % (args.header, len(table.PROPERTIES)))
+    elif args.header:
         write(args.header, header(table))
     if args.xml:
         write(args.xml, xml(table))

@@ -21,7 +21,6 @@ import sys
 VTK_BACKEND = "Parallel/nvParallelVTK.cxx"
 # Headers the build generates, with the layer they belong to: the property
 # table's fields of nv::Settings (cmake/generate-properties.py).
-GENERATED = {"nvSettingsTable.h": "Run"}
 INCLUDE = re.compile(r'^\s*#\s*include\s+[<"]([^">]+)[">]')
 
 
@@ -46,8 +45,6 @@ def main():
                 files.append((layer, folder, name))
                 if name.endswith(".h"):
                     layer_of[name] = (layer, folder)
-    for name, folder in GENERATED.items():
-        layer_of[name] = (folders.index(folder), folder)
     stray = [n for n in os.listdir(core) if n.endswith((".h", ".cxx"))]
     problems = ["Filters/Core/%s: outside the stage folders" % n for n in stray]
     for layer, folder, name in files:

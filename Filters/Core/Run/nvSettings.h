@@ -13,7 +13,7 @@
 #define nvSettings_h
 
 #include "nvParameters.h"    // Domain, EdgeStopping
-#include "nvSettingsTable.h" // NV_SETTINGS, generated
+#include "nvSettingsTable.h" // NV_SETTINGS, generated from the property table (committed)
 #include "nvSheets.h"        // Sheets
 
 namespace nv

@@ -1,0 +1,63 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+// SPDX-License-Identifier: BSD-3-Clause
+// Generated from Python/_properties.py (the property table) by
+// cmake/generate-properties.py --header: edit the table, then run it (the
+// PropertyTable test checks that this file is the table's).
+//
+// NV_SETTINGS(X) calls X(Type, Name, Default) for each property of the
+// filter, in the table's order: nv::Settings declares its fields with it
+// (nvSettings.h), the VTK filter copies them, the binding binds them.
+#ifndef nvSettingsTable_h
+#define nvSettingsTable_h
+
+#define NV_SETTINGS(X) \
+  X(double, OffsetDistance, 0.0) \
+  X(bool, CloseGaps, true) \
+  X(double, ClosingRadius, 0.0) \
+  X(double, SampleSpacing, 0.0) \
+  X(int, MaximumDimension, 0) \
+  X(double, XiCells, 2.0) \
+  X(double, EpsilonCells, 6.0) \
+  X(nv::EdgeStopping, EdgeStoppingFunction, nv::EdgeStopping(4)) \
+  X(nv::Domain, Domain, nv::Domain(0)) \
+  X(int, MaximumNumberOfIterations, 3) \
+  X(bool, PreserveOffset, false) \
+  X(double, ConvergenceTolerance, 0.0) \
+  X(double, TimeStep, 0.0) \
+  X(double, GaussSeidelTolerance, 1e-06) \
+  X(int, NumberOfThreads, 0) \
+  X(double, MemoryLimit, 0.0) \
+  X(nv::Sheets, Sheets, nv::Sheets(0)) \
+  X(bool, RemoveSmallPieces, true) \
+  X(bool, OutputVolume, true) \
+  X(bool, OutputInitialPhi, false) \
+  X(bool, OutputDistance, false) \
+  X(bool, OutputNarrowBand, false)
+
+// NV_PANEL_LABELS(X) calls X(Name, "Label") for each property: the VTK
+// filter's messages name the properties by their panel labels in ParaView.
+#define NV_PANEL_LABELS(X) \
+  X(OffsetDistance, "Offset Distance") \
+  X(CloseGaps, "Close Gaps") \
+  X(ClosingRadius, "Closing Radius") \
+  X(SampleSpacing, "Sample Spacing") \
+  X(MaximumDimension, "Maximum Dimension") \
+  X(XiCells, "Xi Cells") \
+  X(EpsilonCells, "Epsilon Cells") \
+  X(EdgeStoppingFunction, "Edge Stopping Function") \
+  X(Domain, "Domain") \
+  X(MaximumNumberOfIterations, "Maximum Number Of Iterations") \
+  X(PreserveOffset, "Preserve Offset") \
+  X(ConvergenceTolerance, "Convergence Tolerance") \
+  X(TimeStep, "Time Step") \
+  X(GaussSeidelTolerance, "Gauss-Seidel Tolerance") \
+  X(NumberOfThreads, "Number Of Threads") \
+  X(MemoryLimit, "Memory Limit") \
+  X(Sheets, "Sheets") \
+  X(RemoveSmallPieces, "Remove Small Pieces") \
+  X(OutputVolume, "Output Volume") \
+  X(OutputInitialPhi, "Output Initial Phi") \
+  X(OutputDistance, "Output Distance") \
+  X(OutputNarrowBand, "Output Narrow Band")
+
+#endif
