@@ -144,6 +144,9 @@ def stub(table):
             "    def GetNumberOfBandNodes(self) -> int: ...",
             "    def GetNumberOfGridNodes(self) -> int: ...",
             "    def GetRelativeChanges(self) -> Tuple[float, ...]: ...",
+            "    def SetPanelLabelsInMessages(self, on: bool) -> None:",
+            '        """Messages name the properties by their panel labels (the plugins set it)."""',
+            "    def GetPanelLabelsInMessages(self) -> bool: ...",
             ]
     for result in table.RESULTS:
         kind = result.kind.__name__
