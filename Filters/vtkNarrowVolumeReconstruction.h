@@ -372,7 +372,9 @@ public:
    * on this process. SamplingTime: seconds spent measuring the points'
    * spacing (nearest neighbours, for the automatic offset and
    * MedianPointSpacing) in the last update; 0 when the points had not
-   * changed and the last measurement served.
+   * changed and the last measurement served. GridUsed: the grid's nodes as
+   * one text, "221 x 260 x 200" ("" before a run), which ParaView's panel
+   * shows as Grid Used.
    */
   int GetNumberOfIterations() const { return static_cast<int>(this->RelativeChanges.size()); }
   vtkGetMacro(NumberOfBandNodes, vtkIdType);
@@ -382,10 +384,6 @@ public:
   vtkGetMacro(SampleSpacingUsed, double);
   vtkGetMacro(ClosingRadiusUsed, double);
   vtkGetVector3Macro(GridDimensionsUsed, int);
-  /**
-   * GridDimensionsUsed as one text, "221 x 260 x 200" ("" before a run):
-   * what ParaView's panel shows as Grid Used.
-   */
   const char* GetGridUsed();
   vtkGetMacro(SamplingTime, double);
   vtkGetMacro(SetupTime, double);

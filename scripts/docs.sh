@@ -2,7 +2,9 @@
 # SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
 # SPDX-License-Identifier: BSD-3-Clause
 # Builds the documentation site (doc/, Sphinx with MyST Markdown) into
-# BUILD_DIR/docs/html, every warning an error. Needs the build (scripts/build.sh):
+# BUILD_DIR/docs/html, every warning an error. Needs the build (it runs
+# scripts/build.sh first when there is none; the Debian packages come from
+# scripts/install-deps.sh, which the README's two commands run):
 # the Python API reference imports the built `narrowvolume` package, which
 # needs Debian's ParaView VTK, hence a virtual environment over /usr/bin/python3
 # with --system-site-packages. The tools come from PyPI, pinned, once; later
@@ -20,9 +22,14 @@ requirements="$source_dir/doc/requirements.txt"
 if [ "${1:-}" = "--clean" ]; then
   rm -rf "$docs_dir"
 fi
-if [ ! -d "$build_dir/lib/python3.11/dist-packages/narrowvolume" ]; then
-  echo "docs.sh: no built package in $build_dir; run scripts/build.sh first" >&2
-  exit 1
+# The built package, in the site-packages folder of ParaView's Python.
+packages="$build_dir/lib/$(/usr/bin/python3 -c 'import sys; print("python%d.%d" % sys.version_info[:2])')/dist-packages"
+if [ ! -d "$packages/narrowvolume" ]; then
+  echo "docs.sh: no built package in $build_dir: building it (scripts/build.sh)"
+  if ! BUILD_DIR="$build_dir" "$source_dir/scripts/build.sh"; then
+    echo "docs.sh: the build failed; install the packages first (./scripts/install-deps.sh, or the README's commands)" >&2
+    exit 1
+  fi
 fi
 # The environment, made again when the pinned list changes.
 if ! cmp -s "$requirements" "$venv/requirements.txt" 2>/dev/null; then
@@ -33,7 +40,7 @@ if ! cmp -s "$requirements" "$venv/requirements.txt" 2>/dev/null; then
 fi
 mkdir -p "$docs_dir"
 # -W: warnings are errors; -n: every reference must resolve; --keep-going: all of them at once.
-PYTHONPATH="$build_dir/lib/python3.11/dist-packages${PYTHONPATH:+:$PYTHONPATH}" \
+PYTHONPATH="$packages${PYTHONPATH:+:$PYTHONPATH}" \
 NV_BUILD_DIR="$build_dir" \
   "$venv/bin/python" -m sphinx -W --keep-going -n -q -b html -d "$docs_dir/doctrees" \
   "$source_dir/doc" "$docs_dir/html"
