@@ -3,12 +3,15 @@
 #include "nvLAS.h"
 
 #include "nvLittleEndian.h"
+#include "nvTextParts.h"
 
 #include <cmath>
 #include <sstream>
 
 namespace
 {
+using nv::text::Fail;
+
 // Byte offsets of the public header block's fields (LAS 1.4 specification,
 // table 3; LAS 1.0-1.3 are its prefixes).
 constexpr std::size_t VersionMajorAt = 24;
@@ -47,14 +50,6 @@ std::string Text(const std::uint8_t* bytes, std::size_t length)
   return text;
 }
 
-template <typename... Parts>
-bool Fail(std::string& error, const Parts&... parts)
-{
-  std::ostringstream message;
-  (message << ... << parts);
-  error = message.str();
-  return false;
-}
 } // namespace
 
 int nv::las::StandardRecordLength(int format)

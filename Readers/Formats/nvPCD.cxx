@@ -3,6 +3,7 @@
 #include "nvPCD.h"
 
 #include "nvLZF.h"
+#include "nvTextParts.h"
 
 #include <cerrno>
 #include <cmath>
@@ -13,38 +14,14 @@
 
 namespace
 {
+using nv::text::Fail;
+using nv::text::Tokens;
+
 // Limits that no real cloud reaches, so that a damaged header cannot make
 // the reader allocate without bound.
 constexpr std::size_t MaximumFields = 4096;
 constexpr int MaximumCount = 1 << 20;
 constexpr std::size_t MaximumPointSize = 1 << 24;
-
-template <typename... Parts>
-bool Fail(std::string& error, const Parts&... parts)
-{
-  std::ostringstream message;
-  (message << ... << parts);
-  error = message.str();
-  return false;
-}
-
-std::vector<std::string> Tokens(const std::string& line)
-{
-  std::vector<std::string> tokens;
-  std::size_t at = 0;
-  while (true)
-  {
-    at = line.find_first_not_of(" \t\r", at);
-    if (at == std::string::npos)
-    {
-      break;
-    }
-    const std::size_t end = line.find_first_of(" \t\r", at);
-    tokens.push_back(line.substr(at, end == std::string::npos ? std::string::npos : end - at));
-    at = end;
-  }
-  return tokens;
-}
 
 /// A whole non-negative decimal integer, at most `maximum`.
 bool ParseUnsigned(const std::string& text, std::uint64_t maximum, std::uint64_t& value)

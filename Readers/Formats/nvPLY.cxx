@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "nvPLY.h"
 
+#include "nvTextParts.h"
+
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -13,32 +15,8 @@
 
 namespace
 {
-template <typename... Parts>
-bool Fail(std::string& error, const Parts&... parts)
-{
-  std::ostringstream message;
-  (message << ... << parts);
-  error = message.str();
-  return false;
-}
-
-std::vector<std::string> Tokens(const std::string& line)
-{
-  std::vector<std::string> tokens;
-  std::size_t at = 0;
-  while (true)
-  {
-    at = line.find_first_not_of(" \t\r", at);
-    if (at == std::string::npos)
-    {
-      break;
-    }
-    const std::size_t end = line.find_first_of(" \t\r", at);
-    tokens.push_back(line.substr(at, end == std::string::npos ? std::string::npos : end - at));
-    at = end;
-  }
-  return tokens;
-}
+using nv::text::Fail;
+using nv::text::Tokens;
 
 /// A whole decimal integer that fits in 63 bits; `negative` tells a count
 /// written with a minus sign, which the user's message names.
