@@ -11,5 +11,6 @@ NV_EXTRA_PACKAGES="libopenvdb-dev libtbb-dev" "$source_dir/scripts/install-deps.
 "$source_dir/scripts/build.sh"
 cmake -S "$source_dir" -B "$build_dir" -DNARROWVOLUME_BUILD_BENCHMARKS=ON >/dev/null
 cmake --build "$build_dir" --parallel "$(nproc)"
-PYTHONPATH="$build_dir/lib/python3.11/dist-packages" pvpython "$source_dir/benchmarks/table2.py" \
+python="python$(/usr/bin/python3 -c 'import sys; print("%d.%d" % sys.version_info[:2])')"
+PYTHONPATH="$build_dir/lib/$python/dist-packages" pvpython "$source_dir/benchmarks/table2.py" \
   --openvdb "$build_dir/bin/openvdb_shell" "$@"
