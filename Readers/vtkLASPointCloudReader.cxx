@@ -66,7 +66,7 @@ int vtkLASPointCloudReader::RequestData(
   if (this->FileName.empty() || !in)
   {
     vtkErrorMacro("Cannot open the LAS file \"" << this->FileName << "\".");
-    return 0;
+    return nv::ReadFailed(output);
   }
   const std::uint64_t fileSize = vtksys::SystemTools::FileLength(this->FileName);
   std::vector<std::uint8_t> headerBytes(
@@ -77,7 +77,7 @@ int vtkLASPointCloudReader::RequestData(
   if (!in || !nv::las::ParseHeader(headerBytes.data(), headerBytes.size(), fileSize, header, error))
   {
     vtkErrorMacro(<< this->FileName << ": " << (error.empty() ? "cannot read the header" : error) << ".");
-    return 0;
+    return nv::ReadFailed(output);
   }
 
   // ParseHeader checked that the file holds every announced point, so these
@@ -120,7 +120,7 @@ int vtkLASPointCloudReader::RequestData(
       vtkErrorMacro(<< this->FileName << ": the file ends in point " << first + in.gcount() / length
                     << " of " << n << " (it changed while being read?).");
       output->Initialize();
-      return 0;
+      return nv::ReadFailed(output);
     }
     for (vtkIdType k = 0; k < count; ++k)
     {

@@ -116,7 +116,7 @@ int vtkPCDPointCloudReader::RequestData(
   if (this->FileName.empty() || !in)
   {
     vtkErrorMacro("Cannot open the PCD file \"" << this->FileName << "\".");
-    return 0;
+    return nv::ReadFailed(output);
   }
   const std::uint64_t fileSize = vtksys::SystemTools::FileLength(this->FileName);
   std::vector<char> head(
@@ -127,7 +127,7 @@ int vtkPCDPointCloudReader::RequestData(
   if (!in || !nv::pcd::ParseHeader(head.data(), head.size(), fileSize, header, error))
   {
     vtkErrorMacro(<< this->FileName << ": " << (error.empty() ? "cannot read the header" : error) << ".");
-    return 0;
+    return nv::ReadFailed(output);
   }
   const vtkIdType n = static_cast<vtkIdType>(header.Points);
   const std::size_t fieldCount = header.Fields.size();
@@ -139,8 +139,7 @@ int vtkPCDPointCloudReader::RequestData(
   DecodedData data;
   auto fail = [&](const std::string& what) {
     vtkErrorMacro(<< this->FileName << ": " << what << ".");
-    output->Initialize();
-    return 0;
+    return nv::ReadFailed(output);
   };
   if (n == 0)
   {

@@ -154,12 +154,16 @@ vtkPointCloudTextReader::~vtkPointCloudTextReader() = default;
 
 int vtkPointCloudTextReader::CanReadFile(const char* fileName)
 {
+  // The first line of data decides (after comments, and a header of column
+  // names or a point count): a cloud whose later line is damaged is still
+  // this reader's, which names the line, rather than the next reader's of
+  // the extension (ParaView's PLOT3D reader takes .xyz and aborts on text).
   std::ifstream in(fileName);
   std::string line;
   std::vector<double> values;
   int checked = 0;
   bool header = false;
-  while (checked < 5 && std::getline(in, line))
+  while (checked < 1 && std::getline(in, line))
   {
     if (IsComment(line))
       continue;
@@ -183,7 +187,7 @@ int vtkPointCloudTextReader::RequestData(
   if (this->FileName.empty() || !in)
   {
     vtkErrorMacro("Cannot open the point cloud file \"" << this->FileName << "\".");
-    return 0;
+    return nv::ReadFailed(output);
   }
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
@@ -214,7 +218,7 @@ int vtkPointCloudTextReader::RequestData(
         vtkErrorMacro(<< this->FileName << ", line " << lineNumber
                       << ": binary data, not text: a text point cloud holds lines of x y z numbers.");
         output->Initialize();
-        return 0;
+        return nv::ReadFailed(output);
       }
       vtkErrorMacro(<< this->FileName << ", line " << lineNumber << ": not a list of numbers: " << Quoted(line)
                     << "."
@@ -223,7 +227,7 @@ int vtkPointCloudTextReader::RequestData(
                              "ParaView's XYZ Reader (File > Open, file type \"XMol Molecule Files\")."
                            : ""));
       output->Initialize();
-      return 0;
+      return nv::ReadFailed(output);
     }
     if (first && v.size() == 1)
     {
@@ -234,7 +238,7 @@ int vtkPointCloudTextReader::RequestData(
       if (v.size() < 3)
       {
         vtkErrorMacro(<< this->FileName << ", line " << lineNumber << ": fewer than 3 coordinates.");
-        return 0;
+        return nv::ReadFailed(output);
       }
       columns = v.size();
       layout = LayoutFor(v);
@@ -256,7 +260,7 @@ int vtkPointCloudTextReader::RequestData(
       vtkErrorMacro(<< this->FileName << ", line " << lineNumber << ": " << v.size() << " columns where the first point had "
                     << columns << ".");
       output->Initialize();
-      return 0;
+      return nv::ReadFailed(output);
     }
     points->InsertNextPoint(v.data());
     if (layout.IntensityColumn >= 0)
@@ -273,8 +277,7 @@ int vtkPointCloudTextReader::RequestData(
   {
     vtkErrorMacro(<< this->FileName << ": no line of x y z numbers: "
                   << (lineNumber == 0 ? "the file is empty." : "this is not a text point cloud."));
-    output->Initialize();
-    return 0;
+    return nv::ReadFailed(output);
   }
   output->SetPoints(points);
   output->SetVerts(nv::VertexCells(points->GetNumberOfPoints()));

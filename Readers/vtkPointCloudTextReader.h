@@ -42,7 +42,8 @@ public:
   vtkGetCharFromStdStringMacro(FileName);
   ///@}
 
-  /// 1 if the file looks like a text point cloud (ParaView's reader factory asks).
+  /// 1 if the file looks like a text point cloud: its first line of data is
+  /// numbers (ParaView's reader factory asks).
   int CanReadFile(const char* fileName);
 
 protected:

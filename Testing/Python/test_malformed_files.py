@@ -150,7 +150,8 @@ def opened(pvs, tmp_path_factory):
     folder = str(tmp_path_factory.mktemp("open"))
     points = "".join("%g %g %g\n" % tuple(p) for p in np.random.default_rng(2).random((20, 3)))
     clouds = {"cloud.xyz": "x y z\n" + points, "cloud.txt": points, "cloud.csv": "x,y,z\n" + points.replace(" ", ","),
-              "table.csv": "name,value\na,1\nb,2\n", "cloud.ply": ASCII_PLY + "0 0 0\n1 0 0\n0 1 0\n"}
+              "table.csv": "name,value\na,1\nb,2\n", "cloud.ply": ASCII_PLY + "0 0 0\n1 0 0\n0 1 0\n",
+              "damaged.xyz": "1 2 3\n4 5 x\n" + points}
     return {name: pvs.OpenDataFile(_write(folder, name, text)).GetXMLName() for name, text in clouds.items()}
 
 
@@ -158,9 +159,11 @@ def opened(pvs, tmp_path_factory):
                                          ("cloud.txt", "ASCIIPointCloudReader"),
                                          ("cloud.csv", "ASCIIPointCloudReader"),
                                          ("table.csv", "CSVReader"),
-                                         ("cloud.ply", "PLYPointCloudReader")])
+                                         ("cloud.ply", "PLYPointCloudReader"),
+                                         ("damaged.xyz", "ASCIIPointCloudReader")])
 def test_open_data_file_picks(opened, name, reader):
     """.xyz, .txt and .csv of numbers open with the plugin's text reader (not
-    PLOT3D's, which aborted, or the CSV reader's table); a table with text
-    columns still opens with the CSV reader; .ply with the checked reader."""
+    PLOT3D's, which aborted, or the CSV reader's table), a cloud with a
+    damaged line too (the reader names the line); a table with text columns
+    still opens with the CSV reader; .ply with the checked reader."""
     assert opened[name] == reader, "OpenDataFile(%s): %s, not %s" % (name, reader, opened[name])
