@@ -16,6 +16,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <fstream>
 #include <vector>
@@ -72,6 +73,18 @@ bool IsBinary(const std::string& line)
       return true;
   }
   return false;
+}
+
+/// Whether the first bytes of a binary file can begin a PLOT3D grid (the
+/// other format named .xyz): a block count or the first grid's size, whole
+/// and positive, in either byte order (a Fortran record begins with its
+/// length, 4 or 12 bytes and more, which passes too). Random bytes rarely do.
+bool MayBePlot3D(const unsigned char head[4])
+{
+  const std::uint32_t little = head[0] | (head[1] << 8) | (head[2] << 16) | (std::uint32_t(head[3]) << 24);
+  const std::uint32_t big = head[3] | (head[2] << 8) | (head[1] << 16) | (std::uint32_t(head[0]) << 24);
+  constexpr std::uint32_t MostPlausible = 100000000;
+  return (little >= 1 && little <= MostPlausible) || (big >= 1 && big <= MostPlausible);
 }
 
 /// A line as the messages quote it: at most 60 characters, a byte that is
@@ -158,7 +171,22 @@ int vtkPointCloudTextReader::CanReadFile(const char* fileName)
   // names or a point count): a cloud whose later line is damaged is still
   // this reader's, which names the line, rather than the next reader's of
   // the extension (ParaView's PLOT3D reader takes .xyz and aborts on text).
-  std::ifstream in(fileName);
+  std::ifstream in(fileName, std::ios::binary);
+  // Binary bytes: a .xyz that cannot begin a PLOT3D grid is this reader's to
+  // refuse with its message (ParaView's PLOT3D reader aborts on it).
+  char head[4096];
+  in.read(head, sizeof(head));
+  const std::string start(head, static_cast<std::size_t>(in.gcount()));
+  if (start.find('\0') != std::string::npos)
+  {
+    const std::string name = fileName ? fileName : "";
+    const std::string extension = name.size() >= 4 ? name.substr(name.size() - 4) : "";
+    const bool xyz = extension.size() == 4 && extension[0] == '.' && std::tolower(extension[1]) == 'x' &&
+      std::tolower(extension[2]) == 'y' && std::tolower(extension[3]) == 'z';
+    return xyz && start.size() >= 4 && !MayBePlot3D(reinterpret_cast<const unsigned char*>(start.data())) ? 1 : 0;
+  }
+  in.clear();
+  in.seekg(0);
   std::string line;
   std::vector<double> values;
   int checked = 0;
@@ -217,7 +245,6 @@ int vtkPointCloudTextReader::RequestData(
       {
         vtkErrorMacro(<< this->FileName << ", line " << lineNumber
                       << ": binary data, not text: a text point cloud holds lines of x y z numbers.");
-        output->Initialize();
         return nv::ReadFailed(output);
       }
       vtkErrorMacro(<< this->FileName << ", line " << lineNumber << ": not a list of numbers: " << Quoted(line)

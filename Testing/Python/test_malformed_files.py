@@ -151,7 +151,10 @@ def opened(pvs, tmp_path_factory):
     points = "".join("%g %g %g\n" % tuple(p) for p in np.random.default_rng(2).random((20, 3)))
     clouds = {"cloud.xyz": "x y z\n" + points, "cloud.txt": points, "cloud.csv": "x,y,z\n" + points.replace(" ", ","),
               "table.csv": "name,value\na,1\nb,2\n", "cloud.ply": ASCII_PLY + "0 0 0\n1 0 0\n0 1 0\n",
-              "damaged.xyz": "1 2 3\n4 5 x\n" + points}
+              "damaged.xyz": "1 2 3\n4 5 x\n" + points,
+              # Binary bytes that cannot begin a PLOT3D grid, and a grid's start (one block of 2 x 2 x 1 nodes).
+              "noise.xyz": b"\xff\xfe\x00\xfc" + np.random.default_rng(3).bytes(4000),
+              "grid.xyz": np.array([1, 2, 2, 1], "<i4").tobytes() + np.zeros(12, "<f4").tobytes()}
     return {name: pvs.OpenDataFile(_write(folder, name, text)).GetXMLName() for name, text in clouds.items()}
 
 
@@ -160,10 +163,15 @@ def opened(pvs, tmp_path_factory):
                                          ("cloud.csv", "ASCIIPointCloudReader"),
                                          ("table.csv", "CSVReader"),
                                          ("cloud.ply", "PLYPointCloudReader"),
-                                         ("damaged.xyz", "ASCIIPointCloudReader")])
+                                         ("damaged.xyz", "ASCIIPointCloudReader"),
+                                         ("noise.xyz", "ASCIIPointCloudReader"),
+                                         ("grid.xyz", "P3DReader")])
 def test_open_data_file_picks(opened, name, reader):
     """.xyz, .txt and .csv of numbers open with the plugin's text reader (not
     PLOT3D's, which aborted, or the CSV reader's table), a cloud with a
-    damaged line too (the reader names the line); a table with text columns
-    still opens with the CSV reader; .ply with the checked reader."""
+    damaged line too (the reader names the line), and binary bytes that
+    cannot begin a PLOT3D grid (the reader says they are binary; PLOT3D's
+    reader aborted on them), while a PLOT3D grid's start still goes to the
+    PLOT3D reader; a table with text columns still opens with the CSV
+    reader; .ply with the checked reader."""
     assert opened[name] == reader, "OpenDataFile(%s): %s, not %s" % (name, reader, opened[name])
