@@ -166,26 +166,13 @@ bool CollectBandNodes(const TruncatedDistance& distance, const Parameters& param
   band.Inside.resize(static_cast<std::size_t>(numberOfBricks * BrickNodes / 64));
   return MonitoredFor(0, numberOfBricks, 16, monitor, [&](std::int64_t begin, std::int64_t end) {
     double scratch[BrickNodes];
-    // A brick's nodes of each colour gathered here first, then copied into
-    // lists of their exact size: one allocation a list, not one a doubling.
-    std::vector<BandEntry> red(BrickNodes), black(BrickNodes);
     for (std::int64_t a = begin; a < end; ++a)
     {
-      std::size_t reds = 0, blacks = 0;
+      BrickBand& out = perBrick[a];
       ForEachBandNode(distance, parameters, band.Bricks[a], visitor, scratch, &band.Inside[a * BrickNodes / 64],
         [&](std::int64_t i, std::int64_t j, std::int64_t k, int n, double d) {
-          const BandEntry entry{ static_cast<std::uint16_t>(n), d };
-          if (IsRed(i, j, k))
-          {
-            red[reds++] = entry;
-          }
-          else
-          {
-            black[blacks++] = entry;
-          }
+          (IsRed(i, j, k) ? out.Red : out.Black).push_back(BandEntry{ static_cast<std::uint16_t>(n), d });
         });
-      perBrick[a].Red.assign(red.begin(), red.begin() + static_cast<std::ptrdiff_t>(reds));
-      perBrick[a].Black.assign(black.begin(), black.begin() + static_cast<std::ptrdiff_t>(blacks));
     }
   });
 }
