@@ -26,6 +26,29 @@ def python_command():
     return [sys.executable] if narrowvolume.FLAVOUR == "wheel" else ["pvpython"]
 
 
+def run_filter(cloud, **settings):
+    """The filter on a point set with the given properties, updated: returns
+    (the filter, {field data array: its values as a list}, [its warnings])."""
+    from vtkmodules.vtkCommonCore import vtkCommand
+    from narrowvolume import vtkNarrowVolumeReconstruction
+    f = vtkNarrowVolumeReconstruction()
+    warnings = []
+
+    def on_warning(caller, event, text):
+        warnings.append(str(text))
+
+    on_warning.CallDataType = "string0"
+    f.AddObserver(vtkCommand.WarningEvent, on_warning)
+    f.SetInputData(cloud)
+    for key, value in settings.items():
+        getattr(f, "Set" + key)(value)
+    f.Update()
+    field = f.GetOutput(0).GetFieldData()
+    figures = {field.GetArrayName(a): vtk_to_numpy(field.GetArray(a)).ravel().tolist()
+               for a in range(field.GetNumberOfArrays())}
+    return f, figures, warnings
+
+
 def boundary_edges(surface):
     edges = vtkFeatureEdges()
     edges.SetInputData(surface)

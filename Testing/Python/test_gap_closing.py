@@ -31,11 +31,9 @@ import math
 import numpy as np
 import pytest
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
-from vtkmodules.vtkCommonCore import vtkCommand
 from vtkmodules.vtkCommonDataModel import vtkImageData
 from vtkmodules.vtkFiltersCore import vtkDecimatePro, vtkFlyingEdges3D, vtkProbeFilter
 
-from narrowvolume import vtkNarrowVolumeReconstruction
 import nvclouds
 import nvtesting
 
@@ -45,22 +43,7 @@ pytestmark = [pytest.mark.fidelity, pytest.mark.slow]
 def run(xyz_or_cloud, **settings):
     """The filter on a cloud; returns (filter, field data dict, warnings)."""
     data = xyz_or_cloud if not isinstance(xyz_or_cloud, np.ndarray) else nvclouds.cloud(xyz_or_cloud)
-    f = vtkNarrowVolumeReconstruction()
-    texts = []
-
-    def on_warning(caller, event, text):
-        texts.append(str(text))
-
-    on_warning.CallDataType = "string0"
-    f.AddObserver(vtkCommand.WarningEvent, on_warning)
-    f.SetInputData(data)
-    for key, value in settings.items():
-        getattr(f, "Set" + key)(value)
-    f.Update()
-    field = f.GetOutput(0).GetFieldData()
-    figures = {field.GetArrayName(a): vtk_to_numpy(field.GetArray(a)).ravel().tolist()
-               for a in range(field.GetNumberOfArrays())}
-    return f, figures, texts
+    return nvtesting.run_filter(data, **settings)
 
 
 def hollow(cloud, **settings):

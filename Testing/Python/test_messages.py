@@ -32,11 +32,6 @@ import subprocess
 
 import numpy as np
 import pytest
-from vtkmodules.util.misc import calldata_type
-from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.util.vtkConstants import VTK_STRING
-
-from narrowvolume import vtkNarrowVolumeReconstruction
 import nvclouds
 import nvtesting
 
@@ -46,21 +41,7 @@ rng = np.random.default_rng(37)
 
 def run(xyz, **settings):
     """The filter on the points; returns (filter, field data, warnings)."""
-    f = vtkNarrowVolumeReconstruction()
-    warnings = []
-
-    @calldata_type(VTK_STRING)
-    def on_warning(caller, event, text):
-        warnings.append(str(text))
-
-    f.AddObserver("WarningEvent", on_warning)
-    f.SetInputData(nvclouds.cloud(np.asarray(xyz, dtype=float)))
-    for key, value in settings.items():
-        getattr(f, "Set" + key)(value)
-    f.Update()
-    field = f.GetOutput(0).GetFieldData()
-    figures = {field.GetArrayName(a): vtk_to_numpy(field.GetArray(a)).ravel().tolist()
-               for a in range(field.GetNumberOfArrays())}
+    f, figures, warnings = nvtesting.run_filter(nvclouds.cloud(np.asarray(xyz, dtype=float)), **settings)
     print("%s: %s" % (settings, " | ".join(w.replace("\n", " / ") for w in warnings)))
     return f, figures, warnings
 
