@@ -5,8 +5,9 @@
 # suite with ctest: first the full build (plugin, Python, every test), then a
 # clang build of the module with AddressSanitizer, UndefinedBehaviorSanitizer
 # and LeakSanitizer that runs the C++ tests and the libFuzzer target for a
-# bounded time. Extra arguments go to the first ctest (e.g. -L cxx, -R Table1);
-# NV_SKIP_SANITIZE=1 skips the second build. The documentation site is built
+# bounded time, and a third, of the core alone with ThreadSanitizer, that
+# runs the core's C++ tests on the std::thread pool. Extra arguments go to the first ctest (e.g. -L cxx, -R Table1);
+# NV_SKIP_SANITIZE=1 skips the second and third builds. The documentation site is built
 # too (scripts/docs.sh, every warning an error); NV_SKIP_DOCS=1 skips it.
 #
 # Every stage runs even when an earlier one failed (a stage that needs a
@@ -16,6 +17,7 @@ set -uo pipefail
 source_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build_dir="${BUILD_DIR:-$source_dir/build}"
 sanitize_dir="${build_dir}-sanitize"
+tsan_dir="${build_dir}-tsan"
 
 summary=()
 failed=0
@@ -56,6 +58,14 @@ sanitize_ctest() {
   ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 run_ctest "$sanitize_dir"
 }
 
+build_tsan() {
+  if [ ! -f "$tsan_dir/CMakeCache.txt" ]; then
+    CC=clang CXX=clang++ cmake -S "$source_dir" -B "$tsan_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+      -DNARROWVOLUME_CORE_ONLY=ON -DNARROWVOLUME_SANITIZE_THREAD=ON >/dev/null || return 1
+  fi
+  cmake --build "$tsan_dir" --parallel "$(nproc)"
+}
+
 if stage "install packages" "$source_dir/scripts/install-deps.sh"; then
   if stage "build" "$source_dir/scripts/build.sh"; then
     stage "ctest (build/)" run_ctest "$build_dir" "$@"
@@ -71,6 +81,11 @@ if stage "install packages" "$source_dir/scripts/install-deps.sh"; then
       stage "ctest (sanitizers and fuzzer)" sanitize_ctest
     else
       skipped "ctest (sanitizers and fuzzer)" "the sanitizer build failed"
+    fi
+    if stage "ThreadSanitizer build (the core alone)" build_tsan; then
+      stage "ctest (ThreadSanitizer)" run_ctest "$tsan_dir"
+    else
+      skipped "ctest (ThreadSanitizer)" "the ThreadSanitizer build failed"
     fi
   fi
 else
