@@ -89,17 +89,25 @@ public:
     // points in an order that does not depend on the order they came in
     // (distributed runs hold them in another), and every sum over them
     // comes out the same.
-    if (!canonical)
+    if (canonical)
     {
-      return;
+      const auto before = [&rel](std::int64_t a, std::int64_t b) {
+        return std::lexicographical_compare(&rel[3 * a], &rel[3 * a] + 3, &rel[3 * b], &rel[3 * b] + 3);
+      };
+      ParallelFor(0, cells, 4096, [&](std::int64_t begin, std::int64_t end) {
+        for (std::int64_t c = begin; c < end; ++c)
+        {
+          std::sort(this->Order.begin() + this->Start[c], this->Order.begin() + this->Start[c + 1], before);
+        }
+      });
     }
-    const auto before = [&rel](std::int64_t a, std::int64_t b) {
-      return std::lexicographical_compare(&rel[3 * a], &rel[3 * a] + 3, &rel[3 * b], &rel[3 * b] + 3);
-    };
-    ParallelFor(0, cells, 4096, [&](std::int64_t begin, std::int64_t end) {
-      for (std::int64_t c = begin; c < end; ++c)
+    // The coordinates in that order, side by side: a search reads a cell's
+    // points from one stretch of memory.
+    this->Sorted.resize(3 * static_cast<std::size_t>(n));
+    ParallelFor(0, n, 4096, [&](std::int64_t begin, std::int64_t end) {
+      for (std::int64_t i = begin; i < end; ++i)
       {
-        std::sort(this->Order.begin() + this->Start[c], this->Order.begin() + this->Start[c + 1], before);
+        std::copy(&rel[3 * this->Order[i]], &rel[3 * this->Order[i]] + 3, &this->Sorted[3 * i]);
       }
     });
   }
@@ -107,7 +115,11 @@ public:
   /// The number of points sorted.
   std::size_t NumberOfPoints() const { return this->Order.size(); }
 
-  /// Calls fn(q) for every point q within `radius` of the place x.
+  /// Calls fn(q, y) for every point q (at y) within `radius` of the place
+  /// x, cell by cell in the cells' order (rows of cells along x, by y, then
+  /// z), each cell's points in their order. The cells that lie wholly beyond
+  /// the radius are skipped (a margin of 1e-9 cells keeps every cell a
+  /// rounding could put a point within it), which leaves the order the same.
   template <typename Fn>
   void ForEachWithin(const double x[3], double radius, Fn&& fn) const
   {
@@ -118,19 +130,41 @@ public:
       hi[a] = std::min(this->Dims[a] - 1, static_cast<std::int64_t>(std::floor((x[a] + radius) / this->Size)));
     }
     const double r2 = radius * radius;
+    const double margin = 1e-9 * this->Size;
+    // How far x lies outside cell c's slab along one axis (0 inside it).
+    const auto outside = [&](int a, std::int64_t c) {
+      const double below = static_cast<double>(c) * this->Size - margin - x[a];
+      const double above = x[a] - static_cast<double>(c + 1) * this->Size - margin;
+      return std::max(0.0, std::max(below, above));
+    };
     for (std::int64_t k = lo[2]; k <= hi[2]; ++k)
     {
+      const double dz = outside(2, k);
       for (std::int64_t j = lo[1]; j <= hi[1]; ++j)
       {
-        const std::int64_t row = this->Dims[0] * (j + this->Dims[1] * k);
-        for (std::int64_t s = this->Start[row + lo[0]]; s < this->Start[row + hi[0] + 1]; ++s)
+        const double dy = outside(1, j);
+        const double rest = r2 - dy * dy - dz * dz;
+        if (rest < 0.0)
         {
-          const std::int64_t q = this->Order[s];
-          const double* y = &this->Points[3 * q];
-          const double dx = y[0] - x[0], dy = y[1] - x[1], dz = y[2] - x[2];
-          if (dx * dx + dy * dy + dz * dz <= r2)
+          continue; // the row's cells lie beyond the radius
+        }
+        const double along = std::sqrt(rest) + margin;
+        const std::int64_t first =
+          std::max(lo[0], static_cast<std::int64_t>(std::floor((x[0] - along) / this->Size)));
+        const std::int64_t last =
+          std::min(hi[0], static_cast<std::int64_t>(std::floor((x[0] + along) / this->Size)));
+        if (first > last)
+        {
+          continue;
+        }
+        const std::int64_t row = this->Dims[0] * (j + this->Dims[1] * k);
+        for (std::int64_t s = this->Start[row + first]; s < this->Start[row + last + 1]; ++s)
+        {
+          const double* y = &this->Sorted[3 * s];
+          const double dx = y[0] - x[0], dy2 = y[1] - x[1], dz2 = y[2] - x[2];
+          if (dx * dx + dy2 * dy2 + dz2 * dz2 <= r2)
           {
-            fn(q);
+            fn(this->Order[s], y);
           }
         }
       }
@@ -151,6 +185,7 @@ private:
   std::int64_t Dims[3] = { 1, 1, 1 };
   std::vector<std::int64_t> Start; ///< points of cell c: Order[Start[c] .. Start[c + 1])
   std::vector<std::int64_t> Order;
+  std::vector<double> Sorted; ///< the coordinates of Order[i] at 3 i
 };
 
 /// Eigenvectors of a symmetric 3x3 matrix (cyclic Jacobi rotations), as the
@@ -224,8 +259,7 @@ void Neighbours(const PointCells& cells, const std::vector<double>& rel, std::in
 {
   out.clear();
   const double* x = &rel[3 * p];
-  cells.ForEachWithin(x, radius, [&](std::int64_t q) {
-    const double* y = &rel[3 * q];
+  cells.ForEachWithin(x, radius, [&](std::int64_t, const double* y) {
     const std::array<double, 3> v{ { y[0] - x[0], y[1] - x[1], y[2] - x[2] } };
     if (v[0] * v[0] + v[1] * v[1] + v[2] * v[2] > tiny) // not p, nor a copy of it
     {
@@ -239,6 +273,7 @@ struct Finding
 {
   bool Suspect = false; ///< an empty circle wider than the threshold within 2 l
   bool Found = false;   ///< a hole of radius in (threshold, limit]
+  bool Deferred = false; ///< needs every point (the finder had none): look again with them
   Hole Disc{};          ///< its centre (relative to the grid's origin) and radius
 };
 
@@ -246,8 +281,9 @@ class HoleFinder
 {
 public:
   /// cells, rel: the points looked at (the thinned cloud); all, allRel:
-  /// every point, for the empty balls.
-  HoleFinder(const PointCells& cells, const std::vector<double>& rel, const PointCells& all,
+  /// every point, for the empty balls (null: Examine defers the points that
+  /// need them).
+  HoleFinder(const PointCells& cells, const std::vector<double>& rel, const PointCells* all,
     const std::vector<double>& allRel, double offset)
     : Cells(cells)
     , Rel(rel)
@@ -300,11 +336,12 @@ public:
     }
     double covariance[3][3] = { { 0.0 } };
     auto add = [&](const double v[3]) {
+      const double d[3] = { v[0] - mean[0], v[1] - mean[1], v[2] - mean[2] };
       for (int a = 0; a < 3; ++a)
       {
-        for (int b = 0; b < 3; ++b)
+        for (int b = a; b < 3; ++b)
         {
-          covariance[a][b] += (v[a] - mean[a]) * (v[b] - mean[b]);
+          covariance[a][b] += d[a] * d[b];
         }
       }
     };
@@ -313,6 +350,13 @@ public:
     for (const auto& v : this->Near)
     {
       add(v.data());
+    }
+    for (int a = 0; a < 3; ++a)
+    {
+      for (int b = 0; b < a; ++b)
+      {
+        covariance[a][b] = covariance[b][a]; // symmetric: each sum once
+      }
     }
     double axes[3][3];
     SymmetricEigenvectors(covariance, axes);
@@ -394,10 +438,14 @@ public:
       const double centre[3] = { x[0] + offset[0], x[1] + offset[1], x[2] + offset[2] };
       if (empty > threshold)
       {
+        if (!this->All)
+        {
+          finding.Deferred = true;
+          return finding;
+        }
         // The points the thinning left out, within that ball.
         double nearest = empty * empty;
-        this->All.ForEachWithin(centre, empty, [&](std::int64_t q) {
-          const double* y = &this->AllRel[3 * q];
+        this->All->ForEachWithin(centre, empty, [&](std::int64_t, const double* y) {
           const double dx = y[0] - centre[0], dy = y[1] - centre[1], dz = y[2] - centre[2];
           nearest = std::min(nearest, dx * dx + dy * dy + dz * dz);
         });
@@ -446,6 +494,10 @@ private:
     // The neighbours within the threshold first: each bounds the directions
     // within 60 degrees of its own or more, so that a few of them bound all.
     const double near = threshold * threshold;
+    // squared / (2 along) <= threshold, decided by products where they
+    // are far from equal (1e-12 apart, many roundings), else by the quotient
+    // itself: the same answer as the quotient, without a division each.
+    const double below = threshold * (1.0 - 1e-12), above = threshold * (1.0 + 1e-12);
     for (const bool first : { true, false })
     {
       for (const auto& v : points)
@@ -460,9 +512,15 @@ private:
         for (int k = 0; k < Directions; ++k)
         {
           const double along = u * this->Cos[k] + w * this->Sin[k];
-          if (along > 0.0 && squared / (2.0 * along) <= threshold)
+          if (along > 0.0)
           {
-            open &= ~(std::uint32_t(1) << k);
+            const double twice = 2.0 * along;
+            const bool bounded = squared <= below * twice ||
+              (squared <= above * twice && squared / twice <= threshold);
+            if (bounded)
+            {
+              open &= ~(std::uint32_t(1) << k);
+            }
           }
         }
         if (open == 0)
@@ -563,7 +621,7 @@ private:
 
   const PointCells& Cells;
   const std::vector<double>& Rel;
-  const PointCells& All;
+  const PointCells* All;
   const std::vector<double>& AllRel;
   double Offset;
   double Cos[Directions], Sin[Directions];
@@ -642,10 +700,11 @@ std::vector<double> Thin(const Grid& grid, const std::vector<double>& rel, doubl
 using Found = std::vector<std::pair<std::int64_t, Hole>>;
 
 /// Looks at points [0, n) of rel (or only those marked in `look`) for holes
-/// (HoleFinder::Examine); cells: rel's, all: allRel's (every point). With
-/// `suspects`, first the cheap test of each point, whose outcome it gets.
-/// False if the monitor stopped it.
-bool FindHoles(const PointCells& cells, const std::vector<double>& rel, const PointCells& all,
+/// (HoleFinder::Examine); cells: rel's; all(): the cells of allRel (every
+/// point), made only when a point needs them (a cloud without holes never
+/// does). With `suspects`, first the cheap test of each point, whose outcome
+/// it gets. False if the monitor stopped it.
+bool FindHoles(const PointCells& cells, const std::vector<double>& rel, const std::function<const PointCells&()>& all,
   const std::vector<double>& allRel, double offset, double threshold, double limit, const std::vector<char>* look,
   std::vector<char>* suspects, Found& found, Monitor* monitor)
 {
@@ -655,10 +714,12 @@ bool FindHoles(const PointCells& cells, const std::vector<double>& rel, const Po
     suspects->assign(static_cast<std::size_t>(n), 0);
   }
   found.clear();
+  std::vector<std::int64_t> deferred;
   std::mutex lock;
   const bool done = MonitoredFor(0, n, 256, monitor, [&](std::int64_t begin, std::int64_t end) {
-    HoleFinder finder(cells, rel, all, allRel, offset);
+    HoleFinder finder(cells, rel, nullptr, allRel, offset);
     Found mine;
+    std::vector<std::int64_t> later;
     for (std::int64_t p = begin; p < end; ++p)
     {
       if (!look || (*look)[p])
@@ -668,7 +729,11 @@ bool FindHoles(const PointCells& cells, const std::vector<double>& rel, const Po
         {
           (*suspects)[p] = finding.Suspect;
         }
-        if (finding.Found)
+        if (finding.Deferred)
+        {
+          later.push_back(p);
+        }
+        else if (finding.Found)
         {
           mine.emplace_back(p, finding.Disc);
         }
@@ -676,10 +741,40 @@ bool FindHoles(const PointCells& cells, const std::vector<double>& rel, const Po
     }
     const std::lock_guard<std::mutex> guard(lock);
     found.insert(found.end(), mine.begin(), mine.end());
+    deferred.insert(deferred.end(), later.begin(), later.end());
   });
+  if (!done)
+  {
+    return false;
+  }
+  // The points whose discs need every point, with them (the same findings
+  // as one pass with every point from the start).
+  if (!deferred.empty())
+  {
+    const PointCells& every = all();
+    const std::int64_t count = static_cast<std::int64_t>(deferred.size());
+    const bool again = MonitoredFor(0, count, 64, monitor, [&](std::int64_t begin, std::int64_t end) {
+      HoleFinder finder(cells, rel, &every, allRel, offset);
+      Found mine;
+      for (std::int64_t i = begin; i < end; ++i)
+      {
+        const Finding finding = finder.Examine(deferred[i], threshold, limit, suspects != nullptr);
+        if (finding.Found)
+        {
+          mine.emplace_back(deferred[i], finding.Disc);
+        }
+      }
+      const std::lock_guard<std::mutex> guard(lock);
+      found.insert(found.end(), mine.begin(), mine.end());
+    });
+    if (!again)
+    {
+      return false;
+    }
+  }
   std::sort(found.begin(), found.end(),
     [](const Found::value_type& a, const Found::value_type& b) { return a.first < b.first; });
-  return done;
+  return true;
 }
 } // namespace
 
@@ -723,9 +818,15 @@ bool GapClosing::Run(std::vector<double>& xyz, const std::function<bool(const do
     if (!thinCells || thinCells->NumberOfPoints() != thin.size() / 3)
     {
       thinCells.reset(new PointCells(this->GridNodes, 2.0 * l, thin));
-      allCells.reset(new PointCells(this->GridNodes, 0.5 * l, rel, false)); // for minima only
     }
-    return FindHoles(*thinCells, thin, *allCells, rel, l, threshold, this->Measured, looked, suspects, out, monitor);
+    const auto every = [&]() -> const PointCells& {
+      if (!allCells || allCells->NumberOfPoints() != rel.size() / 3)
+      {
+        allCells.reset(new PointCells(this->GridNodes, 0.5 * l, rel, false)); // for minima only
+      }
+      return *allCells;
+    };
+    return FindHoles(*thinCells, thin, every, rel, l, threshold, this->Measured, looked, suspects, out, monitor);
   };
   Found found;
   // Points that can border a hole: those with an empty circle wider than l
