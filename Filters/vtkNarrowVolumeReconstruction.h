@@ -324,6 +324,20 @@ public:
 
   ///@{
   /**
+   * Printing: above 0, the Surface output is a hollow part to print, its
+   * outer surface on the scan (the cloud's closing) and its inner surface
+   * WallThickness inside it (world units); 0 (default): the shell. Cavities
+   * below MinimumCavityVolume (0: 1 % of the largest) are merged into the
+   * wall. See the parameter reference.
+   */
+  vtkSetMacro(WallThickness, double);
+  vtkGetMacro(WallThickness, double);
+  vtkSetMacro(MinimumCavityVolume, double);
+  vtkGetMacro(MinimumCavityVolume, double);
+  ///@}
+
+  ///@{
+  /**
    * Threads for the parallel loops; 0 (default) uses all cores.
    */
   vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
@@ -465,6 +479,8 @@ protected:
   bool OutputInitialPhi;
   bool OutputDistance;
   bool OutputNarrowBand;
+  double WallThickness;
+  double MinimumCavityVolume;
   int NumberOfThreads;
   double MemoryLimit;
   vtkMultiProcessController* Controller = nullptr;

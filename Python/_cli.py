@@ -364,6 +364,24 @@ def chosen(volume: vtkImageData) -> str:
         + (int(value("NarrowBandNodes")),))
 
 
+def part(volume: vtkImageData) -> str:
+    """The part to print, in one line (WallThickness above 0), else ""."""
+    field = volume.GetFieldData()
+    if field.GetArray("MaterialVolume") is None:
+        return ""
+
+    def value(name, component=0):
+        return field.GetArray(name).GetComponent(0, component)
+
+    bounds = [value("PartBounds", c) for c in range(6)]
+    kept, removed = int(value("KeptCavities")), int(value("RemovedCavities"))
+    return ("part to print: %.6g x %.6g x %.6g, wall %.6g (at least %.6g measured), material %.6g, "
+            "%d %s kept (%.6g), %d smaller than %.6g merged into the wall" % (
+                bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4], value("WallThickness"),
+                value("MinimumWallThickness"), value("MaterialVolume"), kept, "cavity" if kept == 1 else "cavities",
+                value("CavityVolume"), removed, value("MinimumCavityVolume")))
+
+
 def timings(volume: vtkImageData) -> str:
     """The seconds of the run's stages (field data StageSeconds), one line each."""
     array = volume.GetFieldData().GetArray("StageSeconds")
@@ -448,6 +466,8 @@ def main(argv: Optional[List[str]] = None) -> int:
             print("narrowvolume: warning: %s" % in_option_words(str(warning.message)), file=sys.stderr)
         if not args.quiet:
             print("narrowvolume: %s" % chosen(volume), file=_stdout(), flush=True)
+            if part(volume):
+                print("narrowvolume: %s" % part(volume), file=_stdout(), flush=True)
         if args.timings:
             print(timings(volume), file=_stdout(), flush=True)
         empty = [p for p in outputs if WRITERS[os.path.splitext(p)[1].lower()][2] == "surface"

@@ -198,6 +198,23 @@ PROPERTIES = (
     Property(
         "OutputNarrowBand", "Output Narrow Band", bool, False, None, None, (), None, "Output", True, None,
         "Add the point array \"NarrowBand\" (1 on the nodes the scheme updates) to the Volume output."),
+    # --- Printing
+    Property(
+        "WallThickness", "Wall Thickness", float, 0.0, None, None, (), None, "Printing", False, ("bounds", 0.02),
+        "Make a part to print instead of the shell: above 0, the Surface output is a hollow solid whose outer "
+        "surface is the cloud's closing (the solid the shell's outer sheet encloses, eroded back by the "
+        "offset distance: it lies on the scan where the surface is smooth on the scale of the offset, and "
+        "spans concavities narrower than it and bridged holes) and whose inner surface lies this far inside "
+        "it, in world units: a wall of this thickness. Normals point out of the material (outward on the "
+        "outer surface, into the cavity on the inner). Where the model is thinner than twice the offset plus "
+        "twice the wall, the part is solid. 0 (the default): the shell. Field data \"MaterialVolume\", "
+        "\"CavityVolume\", \"MinimumWallThickness\" (measured between the two surfaces), \"KeptCavities\", "
+        "\"RemovedCavities\" and \"PartBounds\" describe the part. Needs the whole grid on one process."),
+    Property(
+        "MinimumCavityVolume", "Minimum Cavity Volume", float, 0.0, None, None, (), None, "Printing", True, None,
+        "With {WallThickness} above 0: cavities of the part smaller than this volume (world units cubed) are "
+        "merged into the wall, so that no small sealed pocket traps resin or powder. 0 (the default): those "
+        "smaller than 1 % of the largest cavity. The value used is in field data \"MinimumCavityVolume\"."),
 )
 
 BY_NAME = {p.name: p for p in PROPERTIES}
@@ -205,7 +222,7 @@ BY_NAME = {p.name: p for p in PROPERTIES}
 # The properties whose 0 means "chosen by the filter": the panel's groups that
 # hold one say "(0 = automatic)" in their title.
 AUTOMATIC_WHEN_ZERO = frozenset(("OffsetDistance", "ClosingRadius", "SampleSpacing", "MaximumDimension",
-                                 "NumberOfThreads", "MemoryLimit"))
+                                 "NumberOfThreads", "MemoryLimit", "MinimumCavityVolume"))
 
 Result = namedtuple("Result", "name label kind size beside panel doc")
 Result.__doc__ = """A value the last run chose, which the ParaView panel shows

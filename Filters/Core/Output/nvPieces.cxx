@@ -225,6 +225,15 @@ bool FlipRegion(const Grid& grid, float* phi, std::int64_t kBegin, std::int64_t 
 RemovedPieces RemoveSmallPieces(SurfaceArrays& surface, double offset, const Grid& grid, float* phi,
   std::int64_t kBegin, std::int64_t layers)
 {
+  PieceLimits limits;
+  limits.Piece = SmallPieceVolume(offset);
+  limits.Void = SmallVoidVolume(offset);
+  return RemoveSmallPieces(surface, limits, grid, phi, kBegin, layers);
+}
+
+RemovedPieces RemoveSmallPieces(SurfaceArrays& surface, const PieceLimits& limits, const Grid& grid, float* phi,
+  std::int64_t kBegin, std::int64_t layers)
+{
   RemovedPieces removed;
   const std::int64_t n = surface.NumberOfPoints, m = surface.NumberOfTriangles;
   if (m == 0)
@@ -295,9 +304,11 @@ RemovedPieces RemoveSmallPieces(SurfaceArrays& surface, double offset, const Gri
     found.back().Volume += run.second;
   }
   // Which parts go; when every piece is small, the largest stays.
-  const double smallPiece = SmallPieceVolume(offset), smallVoid = SmallVoidVolume(offset);
+  const double smallPiece = limits.Piece;
+  double smallVoid = limits.Void;
   const Part* spared = nullptr;
   bool largePiece = false;
+  double largestVoid = 0.0;
   for (const Part& part : found)
   {
     if (part.Volume > 0.0)
@@ -305,10 +316,19 @@ RemovedPieces RemoveSmallPieces(SurfaceArrays& surface, double offset, const Gri
       largePiece = largePiece || part.Volume >= smallPiece;
       spared = (!spared || part.Volume > spared->Volume) ? &part : spared;
     }
+    else
+    {
+      largestVoid = std::max(largestVoid, -part.Volume);
+    }
   }
+  if (limits.VoidShare > 0.0)
+  {
+    smallVoid = limits.VoidShare * largestVoid;
+  }
+  removed.VoidLimit = smallVoid;
   for (Part& part : found)
   {
-    if (!largePiece && &part == spared)
+    if (limits.SpareLargest && !largePiece && &part == spared)
     {
       continue;
     }
@@ -325,6 +345,14 @@ RemovedPieces RemoveSmallPieces(SurfaceArrays& surface, double offset, const Gri
     else if (part.Volume < 0.0)
     {
       ++removed.Cavities;
+    }
+  }
+  for (const Part& part : found)
+  {
+    if (!part.Drop)
+    {
+      removed.Volume += part.Volume;
+      removed.CavityVolume += part.Volume < 0.0 ? -part.Volume : 0.0;
     }
   }
   if (removed.Pieces + removed.Voids == 0)
@@ -354,7 +382,7 @@ RemovedPieces RemoveSmallPieces(SurfaceArrays& surface, double offset, const Gri
       {
         const bool piece = part.Volume > 0.0;
         FlipRegion(grid, phi, kBegin, layers, surface.Points, vertices[part.Root], piece,
-          2.0 * (piece ? SmallPieceVolume(offset) : SmallVoidVolume(offset)));
+          2.0 * (piece ? smallPiece : smallVoid));
       }
     }
   }

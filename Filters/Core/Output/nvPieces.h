@@ -33,6 +33,20 @@ struct RemovedPieces
   std::int64_t Pieces = 0; ///< loose pieces made outside
   std::int64_t Voids = 0;  ///< tiny voids made inside
   std::int64_t Cavities = 0; ///< voids kept: the cavities the shell encloses
+  double Volume = 0.0;       ///< the kept surface's enclosed volume (pieces less cavities)
+  double CavityVolume = 0.0; ///< the kept cavities' volume
+  double VoidLimit = 0.0;    ///< the volume below which a void went
+};
+
+/// The volumes below which a part goes: a piece (a region inside the
+/// surface) below Piece, a void (a region outside it that it encloses) below
+/// Void, or, with VoidShare > 0, below that share of the largest void.
+struct PieceLimits
+{
+  double Piece = 0.0;
+  double Void = 0.0;
+  double VoidShare = 0.0;
+  bool SpareLargest = true; ///< when every piece is small, the largest stays
 };
 
 /// The volume below which a piece is removed: a ball of radius 2 l.
@@ -70,6 +84,10 @@ RemovedPieces RemoveSmallPieces(SurfaceArrays& surface, double offset, const Gri
 
 /// The same on the surface a sink received, in its own arrays.
 RemovedPieces RemoveSmallPieces(SurfaceSink& sink, double offset, const Grid& grid, float* phi,
+  std::int64_t kBegin, std::int64_t layers);
+
+/// The same with other limits (the printing part's cavities, nvPrintPart.h).
+RemovedPieces RemoveSmallPieces(SurfaceArrays& surface, const PieceLimits& limits, const Grid& grid, float* phi,
   std::int64_t kBegin, std::int64_t layers);
 
 } // namespace nv

@@ -3,6 +3,7 @@
 #include "nvOutputs.h"
 
 #include "nvParallel.h"
+#include "nvPrintPart.h"
 #include "nvSheets.h"
 #include "nvSurface.h"
 #include "nvSurfaceField.h"
@@ -29,16 +30,22 @@ namespace
 /// The progress stage of the outputs (the run itself takes [0, 0.65)): begin, width.
 constexpr double OutputStage[2] = { 0.65, 0.35 };
 
+/// Whether the surface is the part to print (nvPrintPart.h) rather than the shell.
+bool Printing(const Settings& settings)
+{
+  return settings.WallThickness > 0.0;
+}
+
 /// Whether the run fills dense arrays (RequestVolume): for output 0, or to
 /// keep one sheet (KeepSheets needs the whole grid, which a distributed run
 /// does not have: there both sheets are kept).
 bool NeedsDenseVolume(const Settings& settings, bool distributed)
 {
-  return settings.OutputVolume || (settings.Sheets != Sheets::Both && !distributed);
+  return settings.OutputVolume || (settings.Sheets != Sheets::Both && !distributed) || Printing(settings);
 }
 
 /// Whether the surface comes from a copy of the dense phi (one sheet kept)
-/// rather than from the band.
+/// rather than from the band; the part to print comes from one always.
 bool SurfaceFromDenseCopy(const Settings& settings, bool distributed)
 {
   return settings.Sheets != Sheets::Both && !distributed;
@@ -241,6 +248,19 @@ std::string OneSheetNeedsGridWarning()
          "Keep both sheets (Sheets) where memory is short.";
 }
 
+std::string EmptyPartWarning()
+{
+  return "The part to print is empty: the shell's outer sheet encloses no solid wider than twice the offset "
+         "distance (an open scan's shell is a thin sheet, whose closing is empty).\n"
+         "Close the scan's holes (CloseGaps, ClosingRadius), or set WallThickness to 0 to print the shell itself.";
+}
+
+std::string PrintDistributedError()
+{
+  return "A part to print (WallThickness above 0) needs the whole grid on one process, and this run is "
+         "distributed.\nRun on one process, or set WallThickness to 0.";
+}
+
 std::string OneSheetDistributedWarning()
 {
   return "A distributed run outputs both sheets: keeping one needs the whole grid on one process.\n"
@@ -297,6 +317,27 @@ bool MakeSurface(Reconstruction& run, SurfaceSink& sink, const VolumeArrays& den
     monitor->Stage(OutputStage[0], OutputStage[1]);
   }
   bool done = true;
+  if (Printing(settings))
+  {
+    // The part, from a copy of the dense phi whose cavities KeepSheets fills.
+    const Grid& grid = run.GetGrid();
+    std::vector<float> outer(dense.Phi, dense.Phi + grid.NumberOfNodes());
+    done = run.GetStageTimes().Time("part", [&]() {
+      bool made = false;
+      WithThreads(settings.NumberOfThreads, [&]() {
+        KeepSheets(grid, outer.data(), Sheets::Outer);
+        made = MakePart(grid, run.GetParameters(), outer.data(), settings.WallThickness,
+          settings.MinimumCavityVolume, sink, monitor, outcome.Print);
+      });
+      return made;
+    });
+    outcome.Printed = done;
+    outcome.Removed.Pieces = outcome.Print.RemovedPieces;
+    outcome.Removed.Voids = outcome.Print.RemovedCavities;
+    outcome.Removed.Cavities = outcome.Print.KeptCavities;
+    run.ReleaseBand();
+    return done && !(monitor && monitor->Aborted());
+  }
   if (!SurfaceFromDenseCopy(settings, distributed))
   {
     if (settings.Sheets != Sheets::Both)
@@ -349,6 +390,11 @@ Outcome Reconstruct(Reconstruction& run, std::vector<double> xyz, std::shared_pt
   SurfaceSink& sink, const VolumeRequest& volume, bool distributed)
 {
   Outcome outcome;
+  if (Printing(run.GetSettings()) && distributed)
+  {
+    outcome.Error = PrintDistributedError();
+    return outcome;
+  }
   // 1. The dense arrays, filled by the run: for output 0, or for keeping
   // one sheet (KeepSheets works on the whole grid, so not when distributed).
   VolumeArrays dense;
@@ -410,18 +456,38 @@ Outcome Reconstruct(Reconstruction& run, std::vector<double> xyz, std::shared_pt
     }
     // The cavities are counted with the small pieces, on the whole surface
     // of both sheets.
-    const bool counted = settings.RemoveSmallPieces && !distributed && settings.Sheets == Sheets::Both;
+    const bool counted =
+      settings.RemoveSmallPieces && !distributed && settings.Sheets == Sheets::Both && !Printing(settings);
     if (counted && surfacePoints > 0 && outcome.Removed.Cavities == 0 &&
       plan.Diagonal > 0.0 && !(offset > plan.Diagonal))
     {
       outcome.Warnings.push_back(OpenShellWarning(run.GetGaps(), plan.ClosingRadius, offset));
     }
-    if (surfacePoints == 0 && !explained)
+    if (surfacePoints == 0 && Printing(settings))
+    {
+      outcome.Warnings.push_back(EmptyPartWarning());
+    }
+    else if (surfacePoints == 0 && !explained)
     {
       outcome.Warnings.push_back(EmptySurfaceWarning(offset, run.GetGrid().Spacing));
     }
   }
   outcome.Summary = RunSummary(run, outcome.Removed);
+  if (outcome.Printed)
+  {
+    const PrintReport& print = outcome.Print;
+    const std::vector<SummaryArray> part = {
+      { "WallThickness", SummaryArray::Double, 1, { run.GetSettings().WallThickness } },
+      { "MaterialVolume", SummaryArray::Double, 1, { print.MaterialVolume } },
+      { "CavityVolume", SummaryArray::Double, 1, { print.CavityVolume } },
+      { "MinimumWallThickness", SummaryArray::Double, 1, { print.MinimumWallThickness } },
+      { "KeptCavities", SummaryArray::Double, 1, { static_cast<double>(print.KeptCavities) } },
+      { "RemovedCavities", SummaryArray::Double, 1, { static_cast<double>(print.RemovedCavities) } },
+      { "MinimumCavityVolume", SummaryArray::Double, 1, { print.MinimumCavityVolume } },
+      { "PartBounds", SummaryArray::Double, 6, { print.Bounds.begin(), print.Bounds.end() } },
+    };
+    outcome.Summary.insert(outcome.Summary.end() - 1, part.begin(), part.end()); // StageSeconds stays last
+  }
   return outcome;
 }
 

@@ -22,6 +22,7 @@
 #define nvOutputs_h
 
 #include "nvPieces.h"
+#include "nvPrintPart.h"
 #include "nvReconstruction.h"
 
 #include <cstdint>
@@ -74,6 +75,8 @@ struct Outcome
   std::int64_t VolumeEnd = 0;
   bool DenseArrays = false; ///< whether the caller's dense arrays were filled
   RemovedPieces Removed;
+  bool Printed = false; ///< whether the surface is the part to print (WallThickness > 0)
+  PrintReport Print;    ///< its figures
   std::vector<SummaryArray> Summary; ///< the volume's field data (when Done)
   double OutputSeconds = 0.0;        ///< wall-clock seconds of steps 3-5
 };

@@ -32,7 +32,9 @@
   X(bool, OutputVolume, true) \
   X(bool, OutputInitialPhi, false) \
   X(bool, OutputDistance, false) \
-  X(bool, OutputNarrowBand, false)
+  X(bool, OutputNarrowBand, false) \
+  X(double, WallThickness, 0.0) \
+  X(double, MinimumCavityVolume, 0.0)
 
 // NV_PANEL_LABELS(X) calls X(Name, "Label") for each property: the VTK
 // filter's messages name the properties by their panel labels in ParaView.
@@ -58,6 +60,8 @@
   X(OutputVolume, "Output Volume") \
   X(OutputInitialPhi, "Output Initial Phi") \
   X(OutputDistance, "Output Distance") \
-  X(OutputNarrowBand, "Output Narrow Band")
+  X(OutputNarrowBand, "Output Narrow Band") \
+  X(WallThickness, "Wall Thickness") \
+  X(MinimumCavityVolume, "Minimum Cavity Volume")
 
 #endif

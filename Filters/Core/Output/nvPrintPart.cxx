@@ -1,0 +1,420 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+// SPDX-License-Identifier: BSD-3-Clause
+#include "nvPrintPart.h"
+
+#include "nvParallel.h"
+#include "nvPieces.h"
+#include "nvSurfaceField.h"
+#include "nvTruncatedDistance.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <mutex>
+#include <numeric>
+#include <queue>
+#include <vector>
+
+namespace nv
+{
+namespace
+{
+/// The share of the largest cavity below which a cavity is merged into the
+/// wall when MinimumCavityVolume is 0.
+constexpr double AutomaticCavityShare = 0.01;
+
+/// Points in a k-d tree (each range of the array split at its middle point
+/// along its widest axis), for the distance from a place to the nearest.
+class NearestPoints
+{
+public:
+  NearestPoints(const double* points, std::int64_t n)
+    : Points(points, points + 3 * n)
+    , Axis(static_cast<std::size_t>(n), 0)
+  {
+    this->Build(0, n);
+  }
+
+  /// The distance from x to the nearest point, or `cap` when none is nearer.
+  double Distance(const double x[3], double cap) const
+  {
+    double best = cap * cap;
+    this->Search(x, 0, static_cast<std::int64_t>(this->Axis.size()), best);
+    return std::sqrt(best);
+  }
+
+private:
+  static constexpr std::int64_t Leaf = 8;
+
+  void Build(std::int64_t begin, std::int64_t end)
+  {
+    if (end - begin <= Leaf)
+    {
+      return;
+    }
+    double low[3], high[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      low[a] = high[a] = this->Points[3 * begin + a];
+    }
+    for (std::int64_t p = begin; p < end; ++p)
+    {
+      for (int a = 0; a < 3; ++a)
+      {
+        low[a] = std::min(low[a], this->Points[3 * p + a]);
+        high[a] = std::max(high[a], this->Points[3 * p + a]);
+      }
+    }
+    int axis = 0;
+    for (int a = 1; a < 3; ++a)
+    {
+      axis = high[a] - low[a] > high[axis] - low[axis] ? a : axis;
+    }
+    // The middle point along the axis, the lower ones before it.
+    const std::int64_t middle = begin + (end - begin) / 2;
+    std::vector<std::int64_t> order(static_cast<std::size_t>(end - begin));
+    std::iota(order.begin(), order.end(), begin);
+    std::nth_element(order.begin(), order.begin() + (middle - begin), order.end(),
+      [&](std::int64_t u, std::int64_t v) { return this->Points[3 * u + axis] < this->Points[3 * v + axis]; });
+    std::vector<double> moved(3 * order.size());
+    for (std::size_t i = 0; i < order.size(); ++i)
+    {
+      std::copy(&this->Points[3 * order[i]], &this->Points[3 * order[i]] + 3, &moved[3 * i]);
+    }
+    std::copy(moved.begin(), moved.end(), this->Points.begin() + 3 * begin);
+    this->Axis[middle] = static_cast<char>(axis);
+    this->Build(begin, middle);
+    this->Build(middle + 1, end);
+  }
+
+  void Search(const double x[3], std::int64_t begin, std::int64_t end, double& best) const
+  {
+    if (end - begin <= Leaf)
+    {
+      for (std::int64_t p = begin; p < end; ++p)
+      {
+        best = std::min(best, this->Squared(x, p));
+      }
+      return;
+    }
+    const std::int64_t middle = begin + (end - begin) / 2;
+    const int axis = this->Axis[middle];
+    best = std::min(best, this->Squared(x, middle));
+    const double side = x[axis] - this->Points[3 * middle + axis];
+    if (side < 0.0)
+    {
+      this->Search(x, begin, middle, best);
+      if (side * side < best)
+      {
+        this->Search(x, middle + 1, end, best);
+      }
+    }
+    else
+    {
+      this->Search(x, middle + 1, end, best);
+      if (side * side < best)
+      {
+        this->Search(x, begin, middle, best);
+      }
+    }
+  }
+
+  double Squared(const double x[3], std::int64_t p) const
+  {
+    const double dx = this->Points[3 * p] - x[0], dy = this->Points[3 * p + 1] - x[1],
+                 dz = this->Points[3 * p + 2] - x[2];
+    return dx * dx + dy * dy + dz * dz;
+  }
+
+  std::vector<double> Points;
+  std::vector<char> Axis; ///< the split axis of the range whose middle is this point
+};
+
+/// D on the nodes inside S (the outer phi > 0) up to `cap`, and outside S
+/// near the sheet; `cap` elsewhere. Each vertex of the sheet gives the nodes
+/// within two cells of it their distance to it; from those, the nearest
+/// vertex moves inward node by node (nearest first, to the 26 neighbours: a
+/// closest-point propagation), as a node's nearest vertex is, but for rare
+/// ties, its neighbours' nearest.
+std::vector<float> SheetDistance(const Grid& grid, const float* outer, const std::vector<double>& sheet, double cap)
+{
+  const std::int64_t nodes = grid.NumberOfNodes();
+  std::vector<float> distance(static_cast<std::size_t>(nodes), static_cast<float>(cap));
+  std::vector<std::int32_t> nearest(static_cast<std::size_t>(nodes), -1);
+  const double h = grid.Spacing;
+  auto position = [&](std::int64_t n, double x[3]) {
+    std::int64_t ijk[3];
+    grid.Ijk(n, ijk);
+    for (int a = 0; a < 3; ++a)
+    {
+      x[a] = grid.Origin[a] + static_cast<double>(ijk[a]) * h;
+    }
+  };
+  auto squared = [&](const double x[3], std::int32_t v) {
+    const double* y = &sheet[3 * static_cast<std::size_t>(v)];
+    return (x[0] - y[0]) * (x[0] - y[0]) + (x[1] - y[1]) * (x[1] - y[1]) + (x[2] - y[2]) * (x[2] - y[2]);
+  };
+  const std::int64_t vertices = static_cast<std::int64_t>(sheet.size() / 3);
+  for (std::int64_t v = 0; v < vertices; ++v)
+  {
+    std::int64_t low[3], high[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      const std::int64_t c = static_cast<std::int64_t>(std::floor((sheet[3 * v + a] - grid.Origin[a]) / h));
+      low[a] = std::max<std::int64_t>(0, c - 1);
+      high[a] = std::min(grid.Dims[a] - 1, c + 2);
+    }
+    for (std::int64_t k = low[2]; k <= high[2]; ++k)
+    {
+      for (std::int64_t j = low[1]; j <= high[1]; ++j)
+      {
+        for (std::int64_t i = low[0]; i <= high[0]; ++i)
+        {
+          const std::int64_t n = grid.Index(i, j, k);
+          double x[3];
+          position(n, x);
+          const double d = std::sqrt(squared(x, static_cast<std::int32_t>(v)));
+          if (d < distance[n])
+          {
+            distance[n] = static_cast<float>(d);
+            nearest[n] = static_cast<std::int32_t>(v);
+          }
+        }
+      }
+    }
+  }
+  using Entry = std::pair<float, std::int64_t>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+  for (std::int64_t n = 0; n < nodes; ++n)
+  {
+    if (nearest[n] >= 0 && outer[n] > 0.0f)
+    {
+      queue.emplace(distance[n], n);
+    }
+  }
+  while (!queue.empty())
+  {
+    const Entry top = queue.top();
+    queue.pop();
+    const std::int64_t n = top.second;
+    if (top.first > distance[n])
+    {
+      continue; // an older entry
+    }
+    std::int64_t ijk[3];
+    grid.Ijk(n, ijk);
+    for (int dk = -1; dk <= 1; ++dk)
+    {
+      for (int dj = -1; dj <= 1; ++dj)
+      {
+        for (int di = -1; di <= 1; ++di)
+        {
+          const std::int64_t i = ijk[0] + di, j = ijk[1] + dj, k = ijk[2] + dk;
+          if (i < 0 || j < 0 || k < 0 || i >= grid.Dims[0] || j >= grid.Dims[1] || k >= grid.Dims[2])
+          {
+            continue;
+          }
+          const std::int64_t m = grid.Index(i, j, k);
+          if (!(outer[m] > 0.0f))
+          {
+            continue;
+          }
+          double x[3];
+          position(m, x);
+          const float d = static_cast<float>(std::sqrt(squared(x, nearest[n])));
+          if (d < distance[m] && d < cap)
+          {
+            distance[m] = d;
+            nearest[m] = nearest[n];
+            queue.emplace(d, m);
+          }
+        }
+      }
+    }
+  }
+  return distance;
+}
+
+/// f of the header, clamped to +-Clamp, brick by brick: a value per brick
+/// where f is beyond +-Clamp on all of it, else its nodes' values.
+class PartField : public BrickField
+{
+public:
+  PartField(const Grid& grid, const float* outer, const std::vector<float>& distance, double offset, double wall)
+    : BrickDims(BrickDimensions(grid))
+  {
+    const float clamp = static_cast<float>(3.0 * grid.Spacing);
+    const std::int64_t bricks = this->BrickDims[0] * this->BrickDims[1] * this->BrickDims[2];
+    this->Uniform.assign(static_cast<std::size_t>(bricks), -clamp);
+    std::vector<std::vector<float>> values(static_cast<std::size_t>(bricks));
+    ParallelFor(0, bricks, 16, [&](std::int64_t begin, std::int64_t end) {
+      std::vector<float> mine(BrickNodes);
+      for (std::int64_t b = begin; b < end; ++b)
+      {
+        const std::int64_t first[3] = { (b % this->BrickDims[0]) * BrickSize,
+          ((b / this->BrickDims[0]) % this->BrickDims[1]) * BrickSize,
+          (b / (this->BrickDims[0] * this->BrickDims[1])) * BrickSize };
+        bool above = true, below = true;
+        for (int k = 0; k < BrickSize; ++k)
+        {
+          for (int j = 0; j < BrickSize; ++j)
+          {
+            for (int i = 0; i < BrickSize; ++i)
+            {
+              const std::int64_t x = first[0] + i, y = first[1] + j, z = first[2] + k;
+              float f = -clamp;
+              if (x < grid.Dims[0] && y < grid.Dims[1] && z < grid.Dims[2])
+              {
+                const std::int64_t n = grid.Index(x, y, z);
+                const double d = distance[n];
+                const double inside = std::min(d - offset, offset + wall - d);
+                f = static_cast<float>(std::max<double>(-clamp, std::min<double>(clamp,
+                  outer[n] > 0.0f ? inside : -(offset + d))));
+              }
+              mine[i + BrickSize * (j + BrickSize * k)] = f;
+              above = above && f >= clamp;
+              below = below && f <= -clamp;
+            }
+          }
+        }
+        if (above || below)
+        {
+          this->Uniform[b] = above ? clamp : -clamp;
+        }
+        else
+        {
+          values[b] = mine;
+        }
+      }
+    });
+    for (std::int64_t b = 0; b < bricks; ++b)
+    {
+      if (!values[b].empty())
+      {
+        this->Varying.push_back(b);
+        this->Stored.insert(this->Stored.end(), values[b].begin(), values[b].end());
+      }
+    }
+  }
+
+  void Layer(std::int64_t layer, std::vector<float>& uniform, std::vector<std::int64_t>& varying) const override
+  {
+    const std::int64_t perLayer = this->BrickDims[0] * this->BrickDims[1];
+    uniform.assign(this->Uniform.begin() + layer * perLayer, this->Uniform.begin() + (layer + 1) * perLayer);
+    const auto first = std::lower_bound(this->Varying.begin(), this->Varying.end(), layer * perLayer);
+    const auto last = std::lower_bound(first, this->Varying.end(), (layer + 1) * perLayer);
+    varying.assign(first, last);
+  }
+
+  void Values(std::int64_t brick, float values[BrickNodes]) const override
+  {
+    const auto found = std::lower_bound(this->Varying.begin(), this->Varying.end(), brick);
+    if (found != this->Varying.end() && *found == brick)
+    {
+      const float* stored = &this->Stored[(found - this->Varying.begin()) * BrickNodes];
+      std::copy(stored, stored + BrickNodes, values);
+    }
+    else
+    {
+      std::fill(values, values + BrickNodes, this->Uniform[brick]);
+    }
+  }
+
+private:
+  std::array<std::int64_t, 3> BrickDims;
+  std::vector<float> Uniform;        ///< per brick: its value where it does not vary
+  std::vector<std::int64_t> Varying; ///< the bricks where f is within +-3 h, ascending
+  std::vector<float> Stored;         ///< their nodes' values, BrickNodes each
+};
+
+/// The least distance from a vertex of the inner surface (D > l + w / 2)
+/// to a vertex of the outer surface; 0 without an inner surface.
+double MinimumWall(const Grid& grid, const SurfaceArrays& part, const NearestPoints& sheet, double offset, double wall)
+{
+  const std::int64_t n = part.NumberOfPoints;
+  std::vector<char> inner(static_cast<std::size_t>(n), 0);
+  const double split = offset + 0.5 * wall, cap = offset + 2.0 * wall + 4.0 * grid.Spacing;
+  ParallelFor(0, n, 1024, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t p = begin; p < end; ++p)
+    {
+      inner[p] = sheet.Distance(part.Points + 3 * p, cap) > split;
+    }
+  });
+  std::vector<double> outerPoints, innerPoints;
+  for (std::int64_t p = 0; p < n; ++p)
+  {
+    std::vector<double>& to = inner[p] ? innerPoints : outerPoints;
+    to.insert(to.end(), part.Points + 3 * p, part.Points + 3 * p + 3);
+  }
+  if (innerPoints.empty() || outerPoints.empty())
+  {
+    return 0.0;
+  }
+  const NearestPoints outside(outerPoints.data(), static_cast<std::int64_t>(outerPoints.size() / 3));
+  const double far = 2.0 * (offset + wall) + 4.0 * grid.Spacing;
+  const std::int64_t count = static_cast<std::int64_t>(innerPoints.size() / 3);
+  double least = std::numeric_limits<double>::infinity();
+  std::mutex lock;
+  ParallelFor(0, count, 1024, [&](std::int64_t begin, std::int64_t end) {
+    double mine = std::numeric_limits<double>::infinity();
+    for (std::int64_t p = begin; p < end; ++p)
+    {
+      mine = std::min(mine, outside.Distance(&innerPoints[3 * p], far));
+    }
+    const std::lock_guard<std::mutex> guard(lock);
+    least = std::min(least, mine);
+  });
+  return least;
+}
+} // namespace
+
+bool MakePart(const Grid& grid, const Parameters& parameters, const float* outer, double wall, double minimumCavity,
+  SurfaceSink& sink, Monitor* monitor, PrintReport& report)
+{
+  const double l = parameters.OffsetDistance;
+  // The outer sheet: phi = 0 with the cavities filled.
+  SurfaceMesh sheet;
+  const DenseField field(grid, outer, 0, grid.Dims[2], parameters);
+  if (!ContourBricks(grid, field, sheet, 0, -1, monitor))
+  {
+    return false;
+  }
+  const NearestPoints sheetPoints(sheet.Points.data(), static_cast<std::int64_t>(sheet.Points.size() / 3));
+  // The part's surfaces, f = 0.
+  std::vector<float> distance = SheetDistance(grid, outer, sheet.Points, l + wall + 4.0 * grid.Spacing);
+  const PartField part(grid, outer, distance, l, wall);
+  decltype(distance)().swap(distance);
+  if (!ContourBricks(grid, part, sink, 0, -1, monitor))
+  {
+    return false;
+  }
+  // Loose pieces and small cavities go.
+  PieceLimits limits;
+  limits.Piece = SmallPieceVolume(l);
+  limits.Void = minimumCavity > 0.0 ? minimumCavity : 0.0;
+  limits.VoidShare = minimumCavity > 0.0 ? 0.0 : AutomaticCavityShare;
+  limits.SpareLargest = false; // slivers of an open scan's closing are no part
+  SurfaceArrays arrays = sink.View();
+  const RemovedPieces removed = RemoveSmallPieces(arrays, limits, grid, nullptr, 0, 0);
+  sink.Truncate(arrays);
+  arrays = sink.View();
+  report.MaterialVolume = removed.Volume;
+  report.CavityVolume = removed.CavityVolume;
+  report.MinimumCavityVolume = removed.VoidLimit;
+  report.KeptCavities = removed.Cavities;
+  report.RemovedCavities = removed.Voids;
+  report.RemovedPieces = removed.Pieces;
+  report.MinimumWallThickness = report.KeptCavities > 0 ? MinimumWall(grid, arrays, sheetPoints, l, wall) : 0.0;
+  for (std::int64_t p = 0; p < arrays.NumberOfPoints; ++p)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      const double x = arrays.Points[3 * p + a];
+      report.Bounds[2 * a] = p == 0 ? x : std::min(report.Bounds[2 * a], x);
+      report.Bounds[2 * a + 1] = p == 0 ? x : std::max(report.Bounds[2 * a + 1], x);
+    }
+  }
+  return !(monitor && monitor->Aborted());
+}
+
+} // namespace nv

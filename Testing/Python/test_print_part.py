@@ -1,0 +1,237 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+# SPDX-License-Identifier: BSD-3-Clause
+"""Issue 39: a scan to a printable hollow solid in one filter (WallThickness).
+
+- The Table 1 sphere and a torus: the outer surface within 0.25 h of the
+  sampled surface on average, the inner within 0.25 h of the wall thickness
+  inside it; both closed and manifold, normals out of the material
+  (outward on the outer surface, into the cavity on the inner); the field
+  data's volumes match the exact ones and MinimumWallThickness the wall.
+- A rotated cube sampled unevenly (sharp edges, density varying eightfold):
+  closed and manifold, and no inner vertex nearer than w - h to the outer
+  surface (a distance query to its triangles).
+- A dumbbell whose small end's cavity is under 1 % of the large one's: by
+  default it is merged into the wall (RemovedCavities 1); with a small
+  MinimumCavityVolume it stays.
+- An open scan (a hemisphere): the part is empty and a warning says why;
+  its advice (WallThickness 0) gives the shell.
+- WallThickness 0 (the default): no part's field data, the shell as before.
+- The command line prints the part in one line.
+
+    pvpython -m pytest -s test_print_part.py
+"""
+import math
+import subprocess
+
+import numpy as np
+import pytest
+import nvclouds
+import nvshapes
+import nvtesting
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkCommonCore import reference, vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData, vtkStaticCellLocator
+from vtkmodules.vtkFiltersCore import vtkPolyDataConnectivityFilter
+
+rng = np.random.default_rng(39)
+
+
+def points_and_normals(surface):
+    return (vtk_to_numpy(surface.GetPoints().GetData()).astype(float),
+            vtk_to_numpy(surface.GetPointData().GetNormals()).astype(float))
+
+
+def part_of(xyz, **settings):
+    f, figures, warnings = nvtesting.run_filter(nvclouds.cloud(xyz), **settings)
+    return f.GetOutput(1), figures, warnings
+
+
+def check_closed(surface):
+    assert surface.GetNumberOfPolys() > 0
+    assert nvtesting.boundary_edges(surface) == 0, "the part has boundary or non-manifold edges"
+
+
+def test_sphere():
+    h, l, w = 0.01, 0.1, 0.05
+    surface, figures, warnings = part_of(nvshapes.sphere_points(h), OffsetDistance=l, SampleSpacing=h,
+                                         WallThickness=w)
+    assert warnings == []
+    check_closed(surface)
+    p, n = points_and_normals(surface)
+    r = np.linalg.norm(p - 0.5, axis=1)
+    outer = r > 0.5 - w / 2
+    outer_error = np.abs(r[outer] - 0.5).mean() / h
+    inner_error = np.abs(r[~outer] - (0.5 - w)).mean() / h
+    print("sphere: outer %.3f h, inner %.3f h on average" % (outer_error, inner_error))
+    assert outer_error <= 0.25 and inner_error <= 0.25
+    radial = (n * (p - 0.5)).sum(axis=1)
+    assert (radial[outer] > 0).all(), "outer normals point out of the part"
+    assert (radial[~outer] < 0).all(), "inner normals point into the cavity"
+    material = 4.0 / 3.0 * math.pi * (0.5 ** 3 - (0.5 - w) ** 3)
+    cavity = 4.0 / 3.0 * math.pi * (0.5 - w) ** 3
+    assert figures["MaterialVolume"][0] == pytest.approx(material, rel=0.01)
+    assert figures["CavityVolume"][0] == pytest.approx(cavity, rel=0.01)
+    assert figures["KeptCavities"] == [1] and figures["RemovedCavities"] == [0]
+    assert w - h <= figures["MinimumWallThickness"][0] <= w + 0.1 * h
+    assert figures["WallThickness"] == [w]
+    bounds = figures["PartBounds"]
+    assert bounds[1] - bounds[0] == pytest.approx(1.0, abs=h)
+
+
+R, r = 0.35, 0.15
+
+
+def torus_points(spacing):
+    """A torus sampled about `spacing` apart, at random, uniform by area."""
+    n = int(4 * math.pi ** 2 * R * r / spacing ** 2)
+    u = rng.uniform(0.0, 2.0 * math.pi, 3 * n)
+    v = rng.uniform(0.0, 2.0 * math.pi, 3 * n)
+    keep = rng.uniform(0.0, 1.0, 3 * n) < (R + r * np.cos(v)) / (R + r)
+    u, v = u[keep][:n], v[keep][:n]
+    return np.c_[(R + r * np.cos(v)) * np.cos(u), (R + r * np.cos(v)) * np.sin(u), r * np.sin(v)]
+
+
+def test_torus():
+    h, l, w = 0.005, 0.03, 0.04
+    surface, figures, warnings = part_of(torus_points(0.6 * h), OffsetDistance=l, SampleSpacing=h,
+                                         WallThickness=w)
+    assert warnings == []
+    check_closed(surface)
+    p, n = points_and_normals(surface)
+    tube = np.sqrt((np.hypot(p[:, 0], p[:, 1]) - R) ** 2 + p[:, 2] ** 2)
+    outer = tube > r - w / 2
+    outer_error = np.abs(tube[outer] - r).mean() / h
+    inner_error = np.abs(tube[~outer] - (r - w)).mean() / h
+    print("torus: outer %.3f h, inner %.3f h on average" % (outer_error, inner_error))
+    assert outer_error <= 0.25 and inner_error <= 0.25
+    axis = np.c_[p[:, :2] / np.hypot(p[:, 0], p[:, 1])[:, None] * R, np.zeros(len(p))]
+    away = (n * (p - axis)).sum(axis=1)
+    assert (away[outer] > 0).all() and (away[~outer] < 0).all()
+    material = 2 * math.pi ** 2 * R * (r ** 2 - (r - w) ** 2)
+    assert figures["MaterialVolume"][0] == pytest.approx(material, rel=0.02)
+    assert figures["KeptCavities"] == [1]
+
+
+def surface_of(points, triangles):
+    polys = vtkCellArray()
+    for t in triangles:
+        polys.InsertNextCell(3, [int(i) for i in t])
+    vtk_points = vtkPoints()
+    for x in points:
+        vtk_points.InsertNextPoint(*x)
+    data = vtkPolyData()
+    data.SetPoints(vtk_points)
+    data.SetPolys(polys)
+    return data
+
+
+def regions_of(surface):
+    """The part's connected surfaces: [(points, triangles)], by region."""
+    connect = vtkPolyDataConnectivityFilter()
+    connect.SetInputData(surface)
+    connect.SetExtractionModeToAllRegions()
+    connect.ColorRegionsOn()
+    connect.Update()
+    out = connect.GetOutput()
+    ids = vtk_to_numpy(out.GetPointData().GetArray("RegionId"))
+    points = vtk_to_numpy(out.GetPoints().GetData()).astype(float)
+    triangles = vtk_to_numpy(out.GetPolys().GetConnectivityArray()).reshape(-1, 3)
+    return ids, points, triangles
+
+
+def test_uneven_cube_wall():
+    # The unit cube, turned, sampled with a density that varies eightfold across it.
+    h, l, w = 0.01, 0.04, 0.06
+    dense = nvshapes.SHAPES["rotated cube"]["points"](0.004)
+    weight = 0.125 + 0.875 * (dense[:, 0] - dense[:, 0].min()) / np.ptp(dense[:, 0])
+    xyz = dense[rng.uniform(0.0, 1.0, len(dense)) < weight]
+    surface, figures, warnings = part_of(xyz, OffsetDistance=l, SampleSpacing=h, WallThickness=w)
+    check_closed(surface)
+    assert figures["KeptCavities"] == [1]
+    ids, points, triangles = regions_of(surface)
+    # The outer surface encloses the others: the region reaching farthest out.
+    outer_region = ids[np.argmax(np.linalg.norm(points - points.mean(axis=0), axis=1))]
+    outer = surface_of(points, triangles[ids[triangles[:, 0]] == outer_region])
+    locator = vtkStaticCellLocator()
+    locator.SetDataSet(outer)
+    locator.BuildLocator()
+    inner = points[ids != outer_region]
+    assert len(inner) > 0
+    closest = [0.0, 0.0, 0.0]
+    nearest = []
+    for x in inner[::7]:
+        cell_id, sub_id, dist2 = reference(0), reference(0), reference(0.0)
+        locator.FindClosestPoint(x, closest, cell_id, sub_id, dist2)
+        nearest.append(math.sqrt(dist2.get()))
+    least = min(nearest)
+    print("cube: least distance from the inner surface to the outer: %.4f (w %.4f, h %.4f), "
+          "MinimumWallThickness %.4f" % (least, w, h, figures["MinimumWallThickness"][0]))
+    assert least >= w - h
+    assert figures["MinimumWallThickness"][0] >= w - h
+
+
+def test_small_cavity_merged():
+    # A large ball and a small one joined by a thin solid neck along x: the
+    # small ball's cavity (radius 0.09 - w) is 0.66 % of the large one's.
+    h, l, w = 0.01, 0.04, 0.03
+    big = nvshapes.sphere_points(0.006, radius=0.35) + np.array([-0.2, 0.0, 0.0])  # centre (0.3, 0.5, 0.5)
+    small = nvshapes.sphere_points(0.006, radius=0.09) + np.array([0.45, 0.0, 0.0])  # centre (0.95, 0.5, 0.5)
+    off_axis = lambda x: np.hypot(x[:, 1] - 0.5, x[:, 2] - 0.5) > 0.03
+    t = np.linspace(0.0, 2.0 * math.pi, 24, endpoint=False)
+    s = np.arange(0.63, 0.88, 0.006)
+    neck = np.c_[np.repeat(s, len(t)), 0.5 + 0.03 * np.tile(np.cos(t), len(s)),
+                 0.5 + 0.03 * np.tile(np.sin(t), len(s))]
+    xyz = np.vstack([big[off_axis(big)], small[off_axis(small)], neck])
+    surface, figures, warnings = part_of(xyz, OffsetDistance=l, SampleSpacing=h, WallThickness=w)
+    assert warnings == []
+    check_closed(surface)
+    print("dumbbell, default:", {k: figures[k] for k in ("KeptCavities", "RemovedCavities", "MinimumCavityVolume",
+                                                          "CavityVolume")})
+    assert figures["KeptCavities"] == [1] and figures["RemovedCavities"] == [1]
+    small_cavity = 4.0 / 3.0 * math.pi * (0.09 - w) ** 3
+    assert figures["MinimumCavityVolume"][0] > small_cavity
+    _, kept, _ = part_of(xyz, OffsetDistance=l, SampleSpacing=h, WallThickness=w,
+                         MinimumCavityVolume=0.1 * small_cavity)
+    assert kept["KeptCavities"] == [2] and kept["RemovedCavities"] == [0]
+    # The merged cavity's volume moves from the cavities to the material; it
+    # is the small ball's, less the end of the neck that reaches into it.
+    merged = kept["CavityVolume"][0] - figures["CavityVolume"][0]
+    assert figures["MaterialVolume"][0] - kept["MaterialVolume"][0] == pytest.approx(merged, rel=1e-9)
+    assert 0.85 * small_cavity < merged < small_cavity
+
+
+def test_open_scan_warns():
+    h, l, w = 0.01, 0.04, 0.03
+    xyz = nvshapes.sphere_points(0.006)
+    xyz = xyz[xyz[:, 2] > 0.5]
+    surface, figures, warnings = part_of(xyz, OffsetDistance=l, SampleSpacing=h, WallThickness=w)
+    assert surface.GetNumberOfPolys() == 0
+    assert len(warnings) == 1 and "The part to print is empty" in warnings[0], warnings
+    # The advice: the shell itself (which says in its turn that it encloses no cavity).
+    shell, _, advised = part_of(xyz, OffsetDistance=l, SampleSpacing=h, WallThickness=0.0)
+    assert shell.GetNumberOfPolys() > 0
+    assert not any("part to print" in text for text in advised)
+
+
+def test_default_is_the_shell():
+    h, l = 0.01, 0.1
+    surface, figures, warnings = part_of(nvshapes.sphere_points(h), OffsetDistance=l, SampleSpacing=h)
+    assert "MaterialVolume" not in figures and "PartBounds" not in figures
+    p, _ = points_and_normals(surface)
+    r = np.linalg.norm(p - 0.5, axis=1)
+    assert r.max() == pytest.approx(0.5 + l, abs=h)  # the shell's outer sheet, not the part
+
+
+def test_command_line(tmp_path):
+    cloud = tmp_path / "sphere.xyz"
+    np.savetxt(cloud, nvshapes.sphere_points(0.01))
+    out = tmp_path / "part.stl"
+    run = subprocess.run(nvtesting.python_command() + ["-m", "narrowvolume", str(cloud), "-o", str(out),
+                                                       "--offset-distance", "0.1", "--sample-spacing", "0.01",
+                                                       "--wall-thickness", "0.05"],
+                         capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    line = [s for s in run.stdout.splitlines() if "part to print" in s]
+    assert len(line) == 1, run.stdout
+    assert "wall 0.05 " in line[0] and "1 cavity kept" in line[0], line[0]
+    assert out.stat().st_size > 0
