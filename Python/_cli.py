@@ -29,8 +29,6 @@ import time
 import warnings
 from typing import TYPE_CHECKING, Any, Dict, List, Optional
 
-import numpy as np
-
 from . import _properties
 
 if TYPE_CHECKING:
@@ -87,91 +85,17 @@ def _errors_of(algorithm, event="ErrorEvent"):
     return errors
 
 
-def _text_row(line):
-    """A text line as (fields, x y z): fields None for a blank or comment
-    line, x y z None when its first three fields are not numbers."""
-    fields = line.replace(",", " ").split()
-    if not fields or fields[0].startswith(("#", "//")):
-        return None, None
-    try:
-        return fields, [float(v) for v in fields[:3]]
-    except ValueError:
-        return fields, None
-
-
-def _read_text_columns(text):
-    """The common case, fast: after the header lines, every line holds the
-    same number (3 or more) of numbers and nothing else; numpy parses them
-    in one call (about 4 times faster than line by line). None for any other
-    file, which _read_text_lines then reads and explains."""
-    start = 0
-    while start < len(text):
-        end = text.find("\n", start)
-        end = len(text) if end < 0 else end
-        fields, values = _text_row(text[start:end])
-        if values is not None:
-            if len(values) < 3:
-                if len(fields) == 1:  # a .pts file's point count
-                    start = end + 1
-                    continue
-                return None
-            body = text[start:].rstrip()
-            if "#" in body or "//" in body:
-                return None
-            with warnings.catch_warnings():
-                warnings.simplefilter("error")  # a partial parse warns; then read line by line
-                try:
-                    numbers = np.fromstring(body.replace(",", " "), dtype=np.float64, sep=" ")
-                except (ValueError, DeprecationWarning):
-                    return None
-            rows = body.count("\n") + 1
-            if numbers.size != rows * len(fields):
-                return None  # blank lines, or rows of different lengths
-            return numbers.reshape(rows, len(fields))[:, :3]
-        start = end + 1
-    return None
-
-
-def _read_text_lines(text, path):
-    """x y z line by line, with the number of a line that is not a point."""
-    rows = []
-    lines = text.splitlines()
-    for number, line in enumerate(lines, 1):
-        fields, values = _text_row(line)
-        if fields is None:
-            continue
-        if values is None:
-            if rows:
-                raise Failure("%s, line %d: not a point (x y z): %r" % (path, number, line.strip()))
-            continue  # a header line
-        if len(values) == 3:
-            rows.append(values)
-        elif not (len(fields) == 1 and not rows):  # a .pts file's point count
-            raise Failure("%s, line %d: not a point (x y z): %r" % (path, number, line.strip()))
-    if not rows:
-        raise Failure("%s: no line of x y z numbers in its %d lines: not a text point cloud%s" % (
-            path, len(lines), " (it holds binary data)" if "\ufffd" in text or "\0" in text else ""))
-    return np.array(rows, dtype=np.float64).reshape(-1, 3)
-
-
-def read_text_points(path):
-    """x y z of a plain-text cloud, an (n, 3) array: the first three columns
-    (spaces, tabs or commas), header lines and # or // comments skipped.
-    Failure names the line that is not a point."""
-    with open(path, "r", errors="replace") as file:
-        text = file.read()
-    xyz = _read_text_columns(text)
-    if xyz is None:
-        xyz = _read_text_lines(text, path)
-    return np.ascontiguousarray(xyz)
-
-
 def _read_text(path):
-    """A plain-text cloud's points as a vtkPolyData (read_text_points). The
-    CMake build's package reads these files with vtkPointCloudTextReader
+    """A plain-text cloud's points as a vtkPolyData: the wheel's parser
+    (narrowvolume._core.read_text_cloud, Readers/Formats/nvTextCloud.cxx).
+    The CMake build's package reads these files with vtkPointCloudTextReader
     instead."""
+    from . import _core
     from ._reconstruct import point_cloud
-    return point_cloud(read_text_points(path))
+    try:
+        return point_cloud(_core.read_text_cloud(path))
+    except ValueError as error:  # the line that is not a point, named
+        raise Failure(str(error))
 
 
 def _named(path, message):
@@ -181,13 +105,17 @@ def _named(path, message):
 
 def _read_scan(path, extension):
     """.las, .laz and .e57 through laspy and pye57 (the ParaView plugin's
-    Python readers' functions), .pcd in numpy: what the pip package reads
-    without C++ readers, and the CMake build's package for .laz and .e57."""
+    Python readers' functions), .pcd with the PCD parser of the C++ reader
+    (narrowvolume._core.read_pcd): what the pip package reads without C++
+    readers, and the CMake build's package for .laz and .e57."""
     from . import _scanreaders
+    if extension == ".pcd":
+        from . import _core
+        try:
+            return _scanreaders.point_cloud(*_core.read_pcd(path))
+        except ValueError as error:  # the parser's sentence, naming the file
+            raise Failure(_named(path, str(error)))
     try:
-        if extension == ".pcd":
-            from ._pcd import read_pcd
-            return read_pcd(path)
         return (_scanreaders.read_e57 if extension == ".e57" else _scanreaders.read_laz)(path)
     except _scanreaders.MissingModule as error:
         raise Failure("%s: %s" % (path, error))

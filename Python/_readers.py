@@ -6,12 +6,12 @@ registered for File > Open under the compiled plugin's proxy names, so that
 scripts read files the same way with either plugin:
 
 - PointCloudTextReader: .xyz, .txt and .csv text (x y z in the first three
-  columns; header lines and # or // comments skipped), as the command line
-  reads them (_cli.py);
-- PCDPointCloudReader: PCL's .pcd, ascii, binary and binary_compressed, in
-  numpy (_pcd.py, which the pip package's command line reads with too; the
-  compiled plugin's parser is C++): x y z, and the other fields as point
-  arrays ("rgb" / "rgba" as the colours "Colors");
+  columns; header lines and # or // comments skipped), as the pip package's
+  command line reads them (narrowvolume._core.read_text_cloud);
+- PCDPointCloudReader: PCL's .pcd, ascii, binary and binary_compressed, with
+  the compiled reader's parser (narrowvolume._core.read_pcd, which the pip
+  package's command line reads with too): x y z, and the other fields as
+  point arrays ("rgb" / "rgba" as the colours "Colors");
 - LASPointCloudReader: .las through laspy, with the arrays of the compiled
   reader; and LAZ and E57 through laspy and pye57 (_scanreaders.py, the
   compiled plugin's Python readers, NarrowVolumeScanReaders.py). Without
@@ -20,18 +20,21 @@ scripts read files the same way with either plugin:
 """
 from paraview.util.vtkAlgorithm import smdomain, smhint, smproperty, smproxy
 
-from ._pcd import PCDError, read_pcd
+from . import _core
 from ._scanreaders import (E57PointCloudReader, LAZPointCloudReader, ScanFileReader,  # noqa: F401 (proxies)
                            point_cloud, read_laz)
 
 
 def read_text(filename):
-    """A .xyz / .txt / .csv text cloud, as the command line reads it."""
-    from ._cli import Failure, read_text_points
-    try:
-        return point_cloud(read_text_points(filename), {})
-    except Failure as error:
-        raise PCDError(str(error))
+    """A .xyz / .txt / .csv text cloud, as the pip package's command line
+    reads it; ValueError names the line that is not a point."""
+    return point_cloud(_core.read_text_cloud(filename), {})
+
+
+def read_pcd(filename):
+    """A .pcd file as a vtkPolyData: x y z, and the other fields as arrays;
+    ValueError says why the file cannot be read."""
+    return point_cloud(*_core.read_pcd(filename))
 
 
 # The compiled plugin's text reader is ASCIIPointCloudReader, a name that

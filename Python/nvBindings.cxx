@@ -4,7 +4,8 @@
 // that pip builds without VTK. The Python filter (_filter.py) drives a run
 // through these names, which are the core's own (nvReconstruction.h,
 // nvOutputs.h, nvSampling.h): nothing of the method is decided here. It
-// also holds the readers' PLY check (nvPLY.h), for the command line.
+// also holds the readers' PLY check (nvPLY.h), for the command line, and
+// their PCD and text parsers (nvReaderBindings.cxx).
 //
 // The GIL is released while the core computes (Sampling.Measure,
 // Reconstruction.Reconstruct: nv::Reconstruct, the run and its outputs). The core reports progress and asks
@@ -322,6 +323,9 @@ std::array<double, 6> Bounds(const std::vector<double>& bounds)
 }
 } // namespace
 
+// The readers' parsers (nvReaderBindings.cxx).
+void BindReaders(nb::module_& m);
+
 NB_MODULE(_core, m)
 {
   m.doc() = "The numerical core of NarrowVolume (Filters/Core), for the Python filter of the wheel.";
@@ -403,6 +407,7 @@ NB_MODULE(_core, m)
     "path"_a,
     "Why the PLY file at `path` cannot be read (nv::ply::CheckFile: its header, counts and data), or an empty "
     "string if vtkPLYReader can read it safely.");
+  BindReaders(m);
 
   m.def(
     "MakePlan",

@@ -2,7 +2,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkPCDPointCloudReader.h"
 
-#include "nvLZF.h"
 #include "nvPCD.h"
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
@@ -19,13 +18,10 @@
 #include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
 
-#include <vtksys/SystemTools.hxx>
-
 #include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <fstream>
-#include <sstream>
 #include <vector>
 
 vtkStandardNewMacro(vtkPCDPointCloudReader);
@@ -47,37 +43,6 @@ int VTKType(const nv::pcd::Field& field)
       return field.Size == 1 ? VTK_SIGNED_CHAR
                              : field.Size == 2 ? VTK_SHORT : field.Size == 4 ? VTK_INT : VTK_LONG_LONG;
   }
-}
-
-/// The decoded data of every point: field f of point i is at
-/// Bytes + Start[f] + i * Stride[f] (packed records, or the columns of
-/// binary_compressed data). Start[f] < 0: the field is not stored.
-struct DecodedData
-{
-  std::vector<std::uint8_t> Bytes;
-  std::vector<std::int64_t> Start;
-  std::vector<std::size_t> Stride;
-  const std::uint8_t* At(std::size_t f, vtkIdType i) const
-  {
-    return this->Bytes.data() + this->Start[f] + static_cast<std::size_t>(i) * this->Stride[f];
-  }
-};
-
-/// Packed records: each field at its offset, one record after the other.
-void PackedLayout(const nv::pcd::Header& header, DecodedData& data)
-{
-  for (const nv::pcd::Field& field : header.Fields)
-  {
-    data.Start.push_back(static_cast<std::int64_t>(field.Offset));
-    data.Stride.push_back(header.PointSize);
-  }
-}
-
-std::string Describe(const nv::pcd::Field& field)
-{
-  std::ostringstream text;
-  text << field.Name << " (" << field.Type << field.Size << ")";
-  return text.str();
 }
 } // namespace
 
@@ -112,133 +77,26 @@ int vtkPCDPointCloudReader::RequestData(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  std::ifstream in(this->FileName, std::ios::binary);
-  if (this->FileName.empty() || !in)
+  // 1. The data of every point, decoded to binary values (nv::pcd::ReadFile).
+  nv::pcd::Header header;
+  nv::pcd::Data data;
+  std::string error;
+  const nv::pcd::ReadResult read = nv::pcd::ReadFile(this->FileName, header, data, error, [this](double fraction) {
+    this->UpdateProgress(0.9 * fraction);
+    return !this->GetAbortExecute();
+  });
+  if (read == nv::pcd::ReadResult::Failed)
   {
-    vtkErrorMacro("Cannot open the PCD file \"" << this->FileName << "\".");
+    vtkErrorMacro(<< error);
     return nv::ReadFailed(output);
   }
-  const std::uint64_t fileSize = vtksys::SystemTools::FileLength(this->FileName);
-  std::vector<char> head(
-    static_cast<std::size_t>(std::min<std::uint64_t>(fileSize, nv::pcd::MaximumHeaderSize)));
-  in.read(head.data(), static_cast<std::streamsize>(head.size()));
-  nv::pcd::Header header;
-  std::string error;
-  if (!in || !nv::pcd::ParseHeader(head.data(), head.size(), fileSize, header, error))
+  if (read == nv::pcd::ReadResult::Stopped)
   {
-    vtkErrorMacro(<< this->FileName << ": " << (error.empty() ? "cannot read the header" : error) << ".");
-    return nv::ReadFailed(output);
+    output->Initialize();
+    return 1;
   }
   const vtkIdType n = static_cast<vtkIdType>(header.Points);
   const std::size_t fieldCount = header.Fields.size();
-  in.clear();
-  in.seekg(static_cast<std::streamoff>(header.DataOffset));
-
-  // 1. The data of every point, decoded to binary values (ParseHeader and
-  // CheckCompressedSizes bound every allocation by the file's size).
-  DecodedData data;
-  auto fail = [&](const std::string& what) {
-    vtkErrorMacro(<< this->FileName << ": " << what << ".");
-    return nv::ReadFailed(output);
-  };
-  if (n == 0)
-  {
-    PackedLayout(header, data);
-  }
-  else if (header.Data == nv::pcd::Encoding::Binary)
-  {
-    data.Bytes.resize(static_cast<std::size_t>(n) * header.PointSize);
-    in.read(reinterpret_cast<char*>(data.Bytes.data()), static_cast<std::streamsize>(data.Bytes.size()));
-    if (!in)
-    {
-      return fail("the binary data ends early (the file changed while being read?)");
-    }
-    PackedLayout(header, data);
-  }
-  else if (header.Data == nv::pcd::Encoding::BinaryCompressed)
-  {
-    std::uint8_t sizes[8];
-    in.read(reinterpret_cast<char*>(sizes), 8);
-    std::uint32_t compressedSize, uncompressedSize;
-    std::memcpy(&compressedSize, sizes, 4);
-    std::memcpy(&uncompressedSize, sizes + 4, 4);
-    nv::pcd::ColumnLayout layout;
-    if (!in ||
-      !nv::pcd::CheckCompressedSizes(header, compressedSize, uncompressedSize, fileSize, layout, error))
-    {
-      return fail(error.empty() ? "cannot read the sizes of the compressed data" : error);
-    }
-    std::vector<std::uint8_t> compressed(compressedSize);
-    in.read(reinterpret_cast<char*>(compressed.data()), compressedSize);
-    data.Bytes.resize(uncompressedSize);
-    if (!in ||
-      !nv::LZFDecompress(compressed.data(), compressed.size(), data.Bytes.data(), data.Bytes.size()))
-    {
-      return fail("the compressed (LZF) data is damaged: it does not decompress to the " +
-        std::to_string(uncompressedSize) + " bytes it announces");
-    }
-    data.Start = layout.ColumnStart;
-    for (const nv::pcd::Field& field : header.Fields)
-    {
-      data.Stride.push_back(field.Bytes());
-    }
-  }
-  else
-  {
-    // ascii: one point per line, the fields' values in order.
-    data.Bytes.resize(static_cast<std::size_t>(n) * header.PointSize);
-    PackedLayout(header, data);
-    const long headerLines = static_cast<long>(std::count(head.begin(), head.begin() + header.DataOffset, '\n'));
-    long lineNumber = headerLines;
-    std::string line, token;
-    for (vtkIdType i = 0; i < n;)
-    {
-      if (!std::getline(in, line))
-      {
-        return fail("the ascii data ends after " + std::to_string(i) + " of the " + std::to_string(n) +
-          " points the header announces");
-      }
-      ++lineNumber;
-      std::istringstream values(line);
-      std::vector<std::string> tokens;
-      while (values >> token)
-      {
-        tokens.push_back(token);
-      }
-      if (tokens.empty())
-      {
-        continue;
-      }
-      if (tokens.size() != header.ValuesPerPoint)
-      {
-        return fail("line " + std::to_string(lineNumber) + " holds " + std::to_string(tokens.size()) +
-          " values where the fields have " + std::to_string(header.ValuesPerPoint));
-      }
-      std::size_t t = 0;
-      std::uint8_t* record = data.Bytes.data() + static_cast<std::size_t>(i) * header.PointSize;
-      for (const nv::pcd::Field& field : header.Fields)
-      {
-        for (int c = 0; c < field.Count; ++c, ++t)
-        {
-          if (!nv::pcd::ParseAsciiValue(tokens[t], field, record + field.Offset + c * field.Size))
-          {
-            return fail("line " + std::to_string(lineNumber) + ": \"" + tokens[t] +
-              "\" is not a value of field " + Describe(field));
-          }
-        }
-      }
-      ++i;
-      if (i % 65536 == 0)
-      {
-        this->UpdateProgress(0.9 * i / n);
-        if (this->GetAbortExecute())
-        {
-          output->Initialize();
-          return 1;
-        }
-      }
-    }
-  }
 
   // 2. The points, without the invalid ones unless asked to keep them.
   const int axes[3] = { header.Find("x"), header.Find("y"), header.Find("z") };

@@ -5,10 +5,12 @@
 #include "nvLZF.h"
 #include "nvTextParts.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <limits>
 #include <sstream>
 
@@ -52,6 +54,24 @@ T Load(const std::uint8_t* source)
   T value;
   std::memcpy(&value, source, sizeof value);
   return value;
+}
+
+/// Packed records: each field at its offset, one record after the other.
+void PackedLayout(const nv::pcd::Header& header, nv::pcd::Data& data)
+{
+  for (const nv::pcd::Field& field : header.Fields)
+  {
+    data.Start.push_back(static_cast<std::int64_t>(field.Offset));
+    data.Stride.push_back(header.PointSize);
+  }
+}
+
+/// "rgb (F4)": a field as the messages name it.
+std::string Describe(const nv::pcd::Field& field)
+{
+  std::ostringstream text;
+  text << field.Name << " (" << field.Type << field.Size << ")";
+  return text.str();
 }
 } // namespace
 
@@ -481,4 +501,126 @@ double nv::pcd::ValueAsDouble(const std::uint8_t* value, const Field& field)
           return static_cast<double>(Load<std::int64_t>(value));
       }
   }
+}
+
+nv::pcd::ReadResult nv::pcd::ReadFile(const std::string& fileName, Header& header, Data& data,
+  std::string& error, const std::function<bool(double)>& keepGoing)
+{
+  std::ifstream in(fileName, std::ios::binary);
+  if (fileName.empty() || !in)
+  {
+    error = "Cannot open the PCD file \"" + fileName + "\".";
+    return ReadResult::Failed;
+  }
+  in.seekg(0, std::ios::end);
+  const std::streamoff end = in.tellg();
+  const std::uint64_t fileSize = end > 0 ? static_cast<std::uint64_t>(end) : 0;
+  in.seekg(0);
+  std::vector<char> head(static_cast<std::size_t>(std::min<std::uint64_t>(fileSize, MaximumHeaderSize)));
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  if (!in || !ParseHeader(head.data(), head.size(), fileSize, header, error))
+  {
+    error = fileName + ": " + (error.empty() ? "cannot read the header" : error) + ".";
+    return ReadResult::Failed;
+  }
+  auto fail = [&](const std::string& what) {
+    error = fileName + ": " + what + ".";
+    return ReadResult::Failed;
+  };
+  const std::uint64_t n = header.Points;
+  in.clear();
+  in.seekg(static_cast<std::streamoff>(header.DataOffset));
+  data = Data();
+  if (n == 0)
+  {
+    PackedLayout(header, data);
+  }
+  else if (header.Data == Encoding::Binary)
+  {
+    data.Bytes.resize(static_cast<std::size_t>(n) * header.PointSize);
+    in.read(reinterpret_cast<char*>(data.Bytes.data()), static_cast<std::streamsize>(data.Bytes.size()));
+    if (!in)
+    {
+      return fail("the binary data ends early (the file changed while being read?)");
+    }
+    PackedLayout(header, data);
+  }
+  else if (header.Data == Encoding::BinaryCompressed)
+  {
+    std::uint8_t sizes[8];
+    in.read(reinterpret_cast<char*>(sizes), 8);
+    std::uint32_t compressedSize, uncompressedSize;
+    std::memcpy(&compressedSize, sizes, 4);
+    std::memcpy(&uncompressedSize, sizes + 4, 4);
+    ColumnLayout layout;
+    if (!in || !CheckCompressedSizes(header, compressedSize, uncompressedSize, fileSize, layout, error))
+    {
+      return fail(error.empty() ? "cannot read the sizes of the compressed data" : error);
+    }
+    std::vector<std::uint8_t> compressed(compressedSize);
+    in.read(reinterpret_cast<char*>(compressed.data()), compressedSize);
+    data.Bytes.resize(uncompressedSize);
+    if (!in || !LZFDecompress(compressed.data(), compressed.size(), data.Bytes.data(), data.Bytes.size()))
+    {
+      return fail("the compressed (LZF) data is damaged: it does not decompress to the " +
+        std::to_string(uncompressedSize) + " bytes it announces");
+    }
+    data.Start = layout.ColumnStart;
+    for (const Field& field : header.Fields)
+    {
+      data.Stride.push_back(field.Bytes());
+    }
+  }
+  else
+  {
+    // ascii: one point per line, the fields' values in order.
+    data.Bytes.resize(static_cast<std::size_t>(n) * header.PointSize);
+    PackedLayout(header, data);
+    const long headerLines = static_cast<long>(std::count(head.begin(), head.begin() + header.DataOffset, '\n'));
+    long lineNumber = headerLines;
+    std::string line, token;
+    for (std::uint64_t i = 0; i < n;)
+    {
+      if (!std::getline(in, line))
+      {
+        return fail("the ascii data ends after " + std::to_string(i) + " of the " + std::to_string(n) +
+          " points the header announces");
+      }
+      ++lineNumber;
+      std::istringstream values(line);
+      std::vector<std::string> tokens;
+      while (values >> token)
+      {
+        tokens.push_back(token);
+      }
+      if (tokens.empty())
+      {
+        continue;
+      }
+      if (tokens.size() != header.ValuesPerPoint)
+      {
+        return fail("line " + std::to_string(lineNumber) + " holds " + std::to_string(tokens.size()) +
+          " values where the fields have " + std::to_string(header.ValuesPerPoint));
+      }
+      std::size_t t = 0;
+      std::uint8_t* record = data.Bytes.data() + static_cast<std::size_t>(i) * header.PointSize;
+      for (const Field& field : header.Fields)
+      {
+        for (int c = 0; c < field.Count; ++c, ++t)
+        {
+          if (!ParseAsciiValue(tokens[t], field, record + field.Offset + c * field.Size))
+          {
+            return fail("line " + std::to_string(lineNumber) + ": \"" + tokens[t] +
+              "\" is not a value of field " + Describe(field));
+          }
+        }
+      }
+      ++i;
+      if (i % 65536 == 0 && keepGoing && !keepGoing(static_cast<double>(i) / n))
+      {
+        return ReadResult::Stopped;
+      }
+    }
+  }
+  return ReadResult::Read;
 }

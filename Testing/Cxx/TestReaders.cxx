@@ -7,6 +7,7 @@
 // read back; and every file cut at many lengths, which must give either an
 // error and an empty output or a consistent cloud, never a crash.
 #include "nvLZF.h"
+#include "nvTextCloud.h"
 #include "nvTestPointFiles.h"
 #include "nvTestUtilities.h"
 
@@ -95,6 +96,46 @@ void TestLZF()
   NV_CHECK(Refuses("\x02"s "abc", 2));         // output longer than the buffer
   NV_CHECK(Refuses("\x00"s "x" "\xe0"s, 265)); // a long reference cut short
   NV_CHECK(Refuses("\x00"s "x" "\x20"s, 4));   // a reference without its distance
+}
+
+/// The points of a text cloud (nv::text::ReadCloudPoints), or {-1, line} for
+/// the line it names (0: no line is a point).
+std::vector<double> TextPoints(const std::string& text)
+{
+  std::vector<double> xyz;
+  nv::text::CloudProblem problem;
+  if (!nv::text::ReadCloudPoints(text.data(), text.size(), xyz, problem))
+  {
+    return { -1, static_cast<double>(problem.Line) };
+  }
+  return xyz;
+}
+
+/// The wheel's text clouds: every layout gives the same two points, and a
+/// line that is not a point is named.
+void TestTextCloud()
+{
+  using namespace std::string_literals;
+  const std::vector<double> two = { 1, 2, 3, 4, 5, 6 };
+  for (const std::string& text : { "1 2 3\n4 5 6\n"s, "x y z\n1,2,3\n4,5,6"s, "2\n1 2 3 0.5\n4 5 6 0.5\n"s,
+         "1\t2\t3\r\n4\t5\t6\r\n\n"s, "1 2 3\n# a comment\n4 5 6\n"s, "1 2 3\n\n4 5 6 7\n"s,
+         "1 2 3 red\n4 5 6 blue\n"s, "// c\n1_0e-1 2 3\r4 5 6"s })
+  {
+    NV_CHECK(TextPoints(text) == two);
+  }
+  NV_CHECK((TextPoints("1 2 3\n4 5 six\n") == std::vector<double>{ -1, 2 }));
+  NV_CHECK((TextPoints("1 2\n3 4\n") == std::vector<double>{ -1, 1 }));
+  NV_CHECK((TextPoints("1 2 3\n7\n") == std::vector<double>{ -1, 2 }));
+  NV_CHECK((TextPoints("0x1 2 3\n") == std::vector<double>{ -1, 0 }));
+  NV_CHECK((TextPoints("") == std::vector<double>{ -1, 0 }));
+  std::vector<double> xyz;
+  nv::text::CloudProblem problem;
+  NV_CHECK(!nv::text::ReadCloudPoints("a\0b\nc\n", 6, xyz, problem) && problem.Binary && problem.Lines == 2);
+  NV_CHECK(!nv::text::ReadCloudPoints("x y z\n", 6, xyz, problem) && !problem.Binary && problem.Lines == 1);
+  double value = 0;
+  NV_CHECK(nv::text::ParseNumber("nan", value) && value != value);
+  NV_CHECK(nv::text::ParseNumber("-1.5e3", value) && value == -1500);
+  NV_CHECK(!nv::text::ParseNumber("1__0", value) && !nv::text::ParseNumber("_1", value));
 }
 
 void TestLAS(const std::string& folder, const std::vector<double>& xyz)
@@ -205,6 +246,7 @@ void TestTruncations(const std::string& path, const nvtest::Bytes& bytes, int& r
 int main()
 {
   TestLZF();
+  TestTextCloud();
   const std::string folder = "TestReaders-" + std::to_string(getpid());
   vtksys::SystemTools::MakeDirectory(folder);
   const double center[3] = { 500123.25, 4001234.5, 300.0 };

@@ -213,10 +213,48 @@ def record_all():
     shell.Input = bad
     shell.UpdatePipeline()
     result["bad input"] = {"surface points": len(outputs(shell)["points"]), "errors": errors}
+    result["framing"] = framing()
 
     with open(out + ".json", "w") as f:
         json.dump(result, f, indent=1, sort_keys=True)
     print("python_plugin_script: %s plugin recorded into %s" % (mode, out))
+
+
+def framing():
+    """The client's second behaviour (NarrowVolumeClientBehaviors.cxx,
+    _paraview_client.py): a cloud of points without cells far from the
+    origin draws nothing in its view; once the filter's outputs are shown
+    as Apply shows them, the camera is on the shell and the cloud shows as
+    Point Gaussian discs."""
+    from paraview.modules.vtkRemotingServerManager import vtkSMPropertyHelper
+    view = pvs.CreateRenderView()
+    controller = servermanager.vtkSMParaViewPipelineControllerWithRendering()
+
+    def show_as_apply_does(source):
+        for port in range(source.SMProxy.GetNumberOfOutputPorts()):
+            controller.ShowInPreferredView(source.SMProxy, port, view.SMProxy)
+            if len([r for r in view.Representations if r.Visibility]) == 1:
+                view.ResetCamera()
+        view.Update()  # no Render: pvpython runs here without a display
+
+    far = pvs.ProgrammableSource(OutputDataSetType="vtkPolyData", Script="""
+import numpy as np
+from vtkmodules.util.numpy_support import numpy_to_vtk
+from vtkmodules.vtkCommonCore import vtkPoints
+xyz = np.random.default_rng(7).normal(size=(2000, 3))
+xyz = 0.5 * xyz / np.linalg.norm(xyz, axis=1)[:, None] + [1000.0, -2000.0, 500.0]
+points = vtkPoints()
+points.SetData(numpy_to_vtk(xyz, deep=1))
+self.GetOutput().SetPoints(points)
+""")
+    show_as_apply_does(far)
+    filtered = pvs.NarrowVolumeReconstruction(Input=far)
+    show_as_apply_does(filtered)
+    view.SMProxy.SynchronizeCameraProperties()  # the camera as the view holds it, in its properties
+    focal = list(view.CameraFocalPoint)
+    representation = vtkSMPropertyHelper(pvs.GetDisplayProperties(far, view).SMProxy, "Representation")
+    return {"cloud representation": representation.GetAsString(),
+            "focal point near the shell": bool(np.linalg.norm(np.subtract(focal, [1000.0, -2000.0, 500.0])) < 2.0)}
 
 
 if not distributed and not cloud.endswith(".json"):

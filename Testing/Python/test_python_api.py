@@ -604,21 +604,33 @@ def test_cli_text_cloud(tmp_path):
     assert _read(str(tmp_path / "a.vtp")).GetNumberOfPolys() == surface.GetNumberOfPolys() > 0
 
 
+@only_wheel
 def test_cli_text_layouts(tmp_path):
-    """The wheel's plain-text reading: numpy's one-call parse (rows of equal
-    length after a header) and the line-by-line reading (comments, blank
-    lines, rows of different lengths) give the same points."""
+    """The wheel's plain-text reading (narrowvolume._core.read_text_cloud):
+    a header line, a point count, commas, tabs and CRLF, comments, blank
+    lines, rows of different lengths and text after x y z give the same
+    points; a line that is not a point is named, in the words the command
+    line has always used."""
     from narrowvolume import _cli
     texts = ["1 2 3\n4 5 6\n", "x y z\n1,2,3\n4,5,6", "2\n1 2 3 0.5\n4 5 6 0.5\n",
              "1\t2\t3\r\n4\t5\t6\r\n\n", "1 2 3\n# a comment\n4 5 6\n", "1 2 3\n\n4 5 6 7\n",
              "1 2 3 red\n4 5 6 blue\n"]
     for number, text in enumerate(texts):
-        fast = _cli._read_text_columns(text)
-        assert (fast is not None) == (number < 4), text
         path = tmp_path / ("cloud%d.xyz" % number)
         path.write_text(text)
         xyz = vtk_to_numpy(_cli._read_text(str(path)).GetPoints().GetData())
         assert np.array_equal(xyz, [[1, 2, 3], [4, 5, 6]]), text
+    refused = {"1 2 3\n4 5 six\n": "%s, line 2: not a point (x y z): '4 5 six'",
+               "x y z\nno numbers\n": "%s: no line of x y z numbers in its 2 lines: not a text point cloud",
+               "x y z\n\0\1\n": "%s: no line of x y z numbers in its 2 lines: not a text point cloud "
+                                  "(it holds binary data)"}
+    for number, (text, message) in enumerate(refused.items()):
+        path = str(tmp_path / ("bad%d.xyz" % number))
+        with open(path, "w") as f:
+            f.write(text)
+        with pytest.raises(_cli.Failure) as failure:
+            _cli._read_text(path)
+        assert str(failure.value) == message % path
 
 
 def test_cli_options_and_defaults():
@@ -708,7 +720,7 @@ def test_cli_bad_input(tmp_path):
 
 def test_cli_project_formats(tmp_path):
     """PCD through the project's readers: the CMake build's C++ reader, the
-    wheel's numpy one (_pcd.py)."""
+    wheel's binding of its parser (narrowvolume._core.read_pcd)."""
     (tmp_path / "c.pcd").write_text(
         "VERSION .7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH %d\nHEIGHT 1\n"
         "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS %d\nDATA ascii\n" % (len(SPHERE), len(SPHERE))

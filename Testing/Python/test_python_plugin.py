@@ -151,6 +151,17 @@ def test_progress_abort_and_errors(records):
     assert python["bad input"]["surface points"] == 0
 
 
+def test_framing_alike(records):
+    """The client's behaviours (NarrowVolumeClientBehaviors.cxx and
+    _paraview_client.py) in pvpython: a cloud of points far from the origin,
+    which draws nothing, then the filter's outputs shown as Apply shows them:
+    the camera on the shell and the cloud as Point Gaussian discs, alike in
+    both plugins."""
+    (compiled, _), (python, _) = records
+    assert compiled["framing"] == {"cloud representation": "Point Gaussian", "focal point near the shell": True}
+    assert python["framing"] == compiled["framing"]
+
+
 @pytest.mark.mpi
 def test_readers_open_each_format(python_plugin, work):
     """The Python plugin's readers, as File > Open picks them by extension:
