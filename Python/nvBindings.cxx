@@ -335,6 +335,10 @@ NB_MODULE(_core, m)
   nb::enum_<nv::EdgeStopping>(m, "EdgeStopping", nb::is_arithmetic(), "The edge-stopping function g, by equation.")
     .value("Eq3", nv::EdgeStopping::Eq3)
     .value("Eq4", nv::EdgeStopping::Eq4);
+  nb::enum_<nv::ComputeDevice>(m, "ComputeDevice", nb::is_arithmetic(), "Where the evolution runs.")
+    .value("Automatic", nv::ComputeDevice::Automatic)
+    .value("CPU", nv::ComputeDevice::CPU)
+    .value("GPU", nv::ComputeDevice::GPU);
   nb::enum_<nv::Sheets>(m, "Sheets", nb::is_arithmetic(), "The phi = 0 sheets a surface keeps.")
     .value("Both", nv::Sheets::Both)
     .value("Outer", nv::Sheets::Outer)

@@ -7,16 +7,24 @@
 //                           (the same formulas, the same reductions), on a
 //                           sphere and a torus, both edge-stopping functions
 //                           and the literal stopping rule;
-//   TestCoreDevice cuda     the same kernels through the CUDA launcher, on
-//                           a GPU (scripts/test-gpu.sh): phi within 1e-9 of
-//                           the CPU core's (fused multiply-adds and the
+//                           and the whole run with Device GPU (the property)
+//                           against Device CPU: the surfaces' vertices
+//                           within 0.05 h of each other, both sheets closed;
+//   TestCoreDevice cuda     the same through the CUDA launcher, on a GPU
+//                           (scripts/test-gpu.sh): phi within 1e-9 of the
+//                           CPU core's (fused multiply-adds and the
 //                           reductions' order change the last bits).
+//
+// Device GPU where there is no GPU stops with an error that says why: the
+// build has no CUDA, or the machine no CUDA device.
 #include "nvAllenCahnSolver.h"
 #include "nvDeviceEvolution.h"
 #include "nvDeviceLauncher.h"
 #include "nvGrid.h"
 #include "nvNarrowBand.h"
 #include "nvParameters.h"
+#include "nvReconstruction.h"
+#include "nvSurface.h"
 #include "nvTestUtilities.h"
 #include "nvTruncatedDistance.h"
 
@@ -25,7 +33,11 @@
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <map>
+#include <numeric>
 #include <string>
+#include <unordered_map>
+#include <utility>
 #include <vector>
 
 #ifndef NV_TEST_NAME
@@ -162,6 +174,158 @@ void TestTorus()
   Compare("torus, tolerance 0.02, plain Gauss-Seidel", TorusPoints(8000, 0.6, 0.25), p);
 }
 
+/// The largest distance from a vertex of `a` to the nearest vertex of `b`
+/// (vertices hashed into cells of size h).
+double LargestVertexDistance(const nv::SurfaceMesh& a, const nv::SurfaceMesh& b, double h)
+{
+  const auto key = [h](const double* x, int di, int dj, int dk) {
+    const std::int64_t i = static_cast<std::int64_t>(std::floor(x[0] / h)) + di;
+    const std::int64_t j = static_cast<std::int64_t>(std::floor(x[1] / h)) + dj;
+    const std::int64_t k = static_cast<std::int64_t>(std::floor(x[2] / h)) + dk;
+    return (i * 73856093) ^ (j * 19349663) ^ (k * 83492791);
+  };
+  std::unordered_multimap<std::int64_t, std::size_t> cells;
+  for (std::size_t p = 0; p < b.Points.size(); p += 3)
+  {
+    cells.emplace(key(&b.Points[p], 0, 0, 0), p);
+  }
+  double largest = 0.0;
+  for (std::size_t p = 0; p < a.Points.size(); p += 3)
+  {
+    double nearest = 1e300;
+    for (int di = -1; di <= 1; ++di)
+      for (int dj = -1; dj <= 1; ++dj)
+        for (int dk = -1; dk <= 1; ++dk)
+        {
+          const auto range = cells.equal_range(key(&a.Points[p], di, dj, dk));
+          for (auto it = range.first; it != range.second; ++it)
+          {
+            const double* q = &b.Points[it->second];
+            nearest = std::min(nearest,
+              std::sqrt((a.Points[p] - q[0]) * (a.Points[p] - q[0]) + (a.Points[p + 1] - q[1]) * (a.Points[p + 1] - q[1]) +
+                (a.Points[p + 2] - q[2]) * (a.Points[p + 2] - q[2])));
+          }
+        }
+    largest = std::max(largest, nearest);
+  }
+  return largest;
+}
+
+/// Whether every edge of the mesh joins exactly two triangles; `pieces`
+/// gets the number of connected pieces.
+bool Closed(const nv::SurfaceMesh& mesh, int& pieces)
+{
+  std::map<std::pair<nv::VertexId, nv::VertexId>, int> edges;
+  std::vector<std::size_t> parent(mesh.Points.size() / 3);
+  std::iota(parent.begin(), parent.end(), 0);
+  const auto root = [&parent](std::size_t v) {
+    while (parent[v] != v)
+    {
+      v = parent[v] = parent[parent[v]];
+    }
+    return v;
+  };
+  for (std::size_t t = 0; t + 2 < mesh.Triangles.size(); t += 3)
+  {
+    for (int e = 0; e < 3; ++e)
+    {
+      const nv::VertexId u = mesh.Triangles[t + e], v = mesh.Triangles[t + (e + 1) % 3];
+      ++edges[std::make_pair(std::min(u, v), std::max(u, v))];
+      parent[root(static_cast<std::size_t>(u))] = root(static_cast<std::size_t>(v));
+    }
+  }
+  pieces = 0;
+  for (std::size_t v = 0; v < parent.size(); ++v)
+  {
+    pieces += root(v) == v ? 1 : 0;
+  }
+  for (const auto& edge : edges)
+  {
+    if (edge.second != 2)
+    {
+      return false;
+    }
+  }
+  return !edges.empty();
+}
+
+/// The whole run (nv::Reconstruction) with Device GPU against Device CPU.
+void CompareRuns(const char* what, const std::vector<double>& xyz, nv::Settings settings)
+{
+  settings.Device = nv::ComputeDevice::CPU;
+  nv::Reconstruction cpu(settings, nullptr, nullptr);
+  NV_CHECK(cpu.Run(xyz));
+  nv::SurfaceMesh cpuMesh;
+  NV_CHECK(cpu.ExtractSurface(cpuMesh));
+  NV_CHECK(cpu.DeviceUsed() == "CPU");
+
+  settings.Device = nv::ComputeDevice::GPU;
+  settings.DeviceOnHost = !OnGpu;
+  nv::Reconstruction gpu(settings, nullptr, nullptr);
+  const bool ran = gpu.Run(xyz);
+  if (!ran)
+  {
+    std::printf("FAILED: %s: %s\n", what, gpu.Error().c_str());
+    NV_CHECK(false);
+    return;
+  }
+  nv::SurfaceMesh gpuMesh;
+  NV_CHECK(gpu.ExtractSurface(gpuMesh));
+  NV_CHECK(gpu.DeviceUsed() == (OnGpu ? "GPU" : "GPU on the host"));
+  NV_CHECK(gpu.RelativeChanges().size() == cpu.RelativeChanges().size());
+
+  const double h = cpu.GetGrid().Spacing;
+  const double apart = std::max(
+    LargestVertexDistance(gpuMesh, cpuMesh, h), LargestVertexDistance(cpuMesh, gpuMesh, h));
+  int cpuPieces = 0, gpuPieces = 0;
+  const bool cpuClosed = Closed(cpuMesh, cpuPieces);
+  const bool gpuClosed = Closed(gpuMesh, gpuPieces);
+  std::printf("%s, Device GPU (%s) against CPU: %zu and %zu vertices, the farthest %.3g h from the other's; "
+              "closed %d and %d, pieces %d and %d\n",
+    what, gpu.DeviceUsed().c_str(), gpuMesh.Points.size() / 3, cpuMesh.Points.size() / 3, apart / h, gpuClosed,
+    cpuClosed, gpuPieces, cpuPieces);
+  NV_CHECK(!gpuMesh.Points.empty());
+  NV_CHECK(apart <= 0.05 * h);
+  NV_CHECK(gpuClosed && cpuClosed);
+  NV_CHECK(gpuPieces == 2 && cpuPieces == 2); // the outer and the inner sheet
+}
+
+void TestRuns()
+{
+  nv::Settings settings;
+  settings.OffsetDistance = 0.1;
+  settings.SampleSpacing = 0.01; // the Table 1 sphere at h = 0.01
+  settings.OutputVolume = false;
+  const double center[3] = { 0.0, 0.0, 0.0 };
+  CompareRuns("sphere (Table 1, h = 0.01)", nvtest::SpherePoints(30000, 0.5, center), settings);
+  settings.OffsetDistance = 0.08;
+  settings.SampleSpacing = 0.02;
+  CompareRuns("torus", TorusPoints(20000, 0.6, 0.25), settings);
+}
+
+/// Device GPU where the GPU is missing: an error that says what is missing.
+void TestMissingGpu()
+{
+  if (OnGpu)
+  {
+    return;
+  }
+  nv::Settings settings;
+  settings.Device = nv::ComputeDevice::GPU;
+  const double center[3] = { 0.0, 0.0, 0.0 };
+  nv::Reconstruction run(settings, nullptr, nullptr);
+  NV_CHECK(!run.Run(nvtest::SpherePoints(2000, 0.5, center)));
+  const std::string expected =
+    nv::device::CudaCompiled() ? "no CUDA device was found" : "this build of NarrowVolume has no CUDA";
+  std::printf("Device GPU here: %s\n", run.Error().c_str());
+  NV_CHECK(run.Error().find("Device is GPU, but " + expected) == 0);
+  // Automatic runs on the CPU.
+  settings.Device = nv::ComputeDevice::Automatic;
+  nv::Reconstruction automatic(settings, nullptr, nullptr);
+  NV_CHECK(automatic.Run(nvtest::SpherePoints(2000, 0.5, center)));
+  NV_CHECK(automatic.DeviceUsed() == "CPU");
+}
+
 } // namespace
 
 int main(int argc, char* argv[])
@@ -169,5 +333,7 @@ int main(int argc, char* argv[])
   OnGpu = argc > 1 && std::strcmp(argv[1], "cuda") == 0;
   TestSphere();
   TestTorus();
+  TestRuns();
+  TestMissingGpu();
   return nvtest::Result(NV_TEST_NAME);
 }
