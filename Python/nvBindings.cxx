@@ -352,6 +352,8 @@ NB_MODULE(_core, m)
     .def("OutputBytesPerNode", &nv::Settings::OutputBytesPerNode);
 #define NV_BIND(Type, Name, Default) settings.def_rw(#Name, &nv::Settings::Name);
   NV_SETTINGS(NV_BIND)
+  // Not a property: for tests and benchmarks (nvSettings.h).
+  settings.def_rw("DeviceOnHost", &nv::Settings::DeviceOnHost);
 #undef NV_BIND
 
   nb::class_<nv::Grid>(m, "Grid", "The uniform grid: nodes Origin + (i, j, k) Spacing.")
@@ -496,7 +498,11 @@ NB_MODULE(_core, m)
     .def("NumberOfBandNodes", [](const PythonRun& r) { return r.Run.NumberOfBandNodes(); })
     .def("RelativeChanges", [](const PythonRun& r) { return r.Run.RelativeChanges(); })
     .def("SetupSeconds", [](const PythonRun& r) { return r.Run.SetupSeconds(); })
-    .def("EvolutionSeconds", [](const PythonRun& r) { return r.Run.EvolutionSeconds(); });
+    .def("EvolutionSeconds", [](const PythonRun& r) { return r.Run.EvolutionSeconds(); })
+    .def("DeviceUsed", [](const PythonRun& r) { return r.Run.DeviceUsed(); },
+      "\"CPU\", \"GPU\", or \"GPU on the host\" (Settings.DeviceOnHost): where the evolution ran.")
+    .def("DeviceBytes", [](const PythonRun& r) { return r.Run.DeviceBytes(); },
+      "The most bytes the GPU held during the evolution (0 on the CPU).");
 
   m.attr("SamplingStage") = nv::SamplingStage;
 }
