@@ -70,6 +70,14 @@ def euler(points, triangles):
 
 
 def check(core, name, xyz, offset, spacing, device, chi, radius=None):
+    try:
+        return compare(core, name, xyz, offset, spacing, device, chi, radius)
+    except RuntimeError as error:
+        print("%s: FAILED: %s" % (name, error), flush=True)
+        return False
+
+
+def compare(core, name, xyz, offset, spacing, device, chi, radius):
     failures = []
     cpu_run, cpu_points, cpu_triangles, cpu_seconds = run(core, xyz, offset, spacing, "cpu")
     gpu_run, gpu_points, gpu_triangles, gpu_seconds = run(core, xyz, offset, spacing, device)

@@ -45,8 +45,13 @@ say "build: pip install with NARROWVOLUME_CUDA=ON (the core and its binding)"
 start=$SECONDS
 venv="$work/venv"
 if [ ! -x "$venv/bin/python" ]; then
-  "$python" -m venv --system-site-packages "$venv" || fail "python3 -m venv"
+  # Without pip of its own (no ensurepip needed): the system's pip, nanobind,
+  # scikit-build-core and numpy are seen through --system-site-packages, and
+  # pip run by the venv's python installs into the venv.
+  "$python" -m venv --without-pip --system-site-packages "$venv" || fail "$python -m venv"
 fi
+"$venv/bin/python" -c "import pip, nanobind, scikit_build_core, numpy" 2>&1 | tee -a "$log" ||
+  fail "$python lacks pip, nanobind, scikit-build-core or numpy (PYTHON=... picks another Python)"
 # The architectures of the GPU at hand (CMake's "native"), unless given.
 arch="${CMAKE_CUDA_ARCHITECTURES:-native}"
 "$venv/bin/python" -m pip install --no-build-isolation --no-deps --no-index --force-reinstall \
