@@ -98,6 +98,13 @@ public:
     NARROW_BAND = 0,
     WHOLE_DOMAIN = 1
   };
+  /// Where the evolution runs (SetDevice).
+  enum DeviceType
+  {
+    DEVICE_AUTOMATIC = 0,
+    DEVICE_CPU = 1,
+    DEVICE_GPU = 2
+  };
   /// Edge-stopping functions, numbered by their equation in the paper.
   enum EdgeStoppingFunctionType
   {
@@ -356,6 +363,23 @@ public:
 
   ///@{
   /**
+   * Where the evolution (phi0, g and the time steps) runs: DEVICE_AUTOMATIC
+   * (default), for now the CPU; DEVICE_CPU, the CPU's threads; DEVICE_GPU,
+   * an NVIDIA GPU through CUDA (one process, PreserveOffset off), with the
+   * same scheme and stopping rule. DEVICE_GPU on a build without CUDA, or
+   * on a machine without a CUDA device, stops the run with an error that
+   * says which. The GPU back end has not yet run on a GPU, so Automatic
+   * stays on the CPU. Field data "DeviceUsed": 1 (CPU) or 2 (GPU).
+   */
+  vtkSetClampMacro(Device, int, DEVICE_AUTOMATIC, DEVICE_GPU);
+  vtkGetMacro(Device, int);
+  void SetDeviceToAutomatic() { this->SetDevice(DEVICE_AUTOMATIC); }
+  void SetDeviceToCPU() { this->SetDevice(DEVICE_CPU); }
+  void SetDeviceToGPU() { this->SetDevice(DEVICE_GPU); }
+  ///@}
+
+  ///@{
+  /**
    * The processes that share the work (default: the global controller, the
    * MPI ranks under pvbatch or pvserver). The run is distributed when the
    * controller has several processes and the pipeline asks each for its
@@ -483,6 +507,7 @@ protected:
   double MinimumCavityVolume;
   int NumberOfThreads;
   double MemoryLimit;
+  int Device;
   vtkMultiProcessController* Controller = nullptr;
 
   vtkIdType NumberOfBandNodes = 0;

@@ -167,6 +167,19 @@ PROPERTIES = (
         "MemoryLimit", "Memory Limit", float, 0.0, 0.0, 1e12, (), None, "Threads and Memory", True, None,
         "Largest memory one run may allocate, in MiB; a grid that needs more is refused with a message before "
         "any large allocation. 0 (the default): half of the machine's physical memory."),
+    Property(
+        "Device", "Device", int, 0, 0, 2,
+        (Choice("DEVICE_AUTOMATIC", "Automatic", 0, "Automatic"),
+         Choice("DEVICE_CPU", "CPU", 1, "CPU"),
+         Choice("DEVICE_GPU", "GPU", 2, "GPU")),
+        "ComputeDevice", "Threads and Memory", True, None,
+        "Where the evolution (phi0, g and the time steps) runs: DEVICE_AUTOMATIC (0, the default), for now "
+        "the CPU; DEVICE_CPU (1), the CPU's threads; DEVICE_GPU (2), an NVIDIA GPU through CUDA, with the "
+        "same scheme and stopping rule (the sheets within 0.05 of a cell of the CPU's). The GPU needs a build "
+        "with CUDA and a CUDA device (else the run stops with an error that says which is missing), one "
+        "process, and {PreserveOffset} off. The GPU back end has not yet run on a GPU: Automatic stays on "
+        "the CPU until it has passed its tests there. Field data \"DeviceUsed\" holds the device that ran: "
+        "1 (CPU) or 2 (GPU)."),
     # --- Output
     Property(
         "Sheets", "Sheets", int, 0, 0, 2,
@@ -262,8 +275,9 @@ RESULTS = (
 
 
 def snake_case(name: str) -> str:
-    """OffsetDistance -> offset_distance (the keyword reconstruct() also accepts)."""
-    return re.sub(r"(?<!^)(?=[A-Z])", "_", name).lower()
+    """OffsetDistance -> offset_distance (the keyword reconstruct() also accepts); an acronym is one
+    word: CPU -> cpu."""
+    return re.sub(r"(?<=[a-z0-9])(?=[A-Z])|(?<=[A-Z])(?=[A-Z][a-z])", "_", name).lower()
 
 
 def option(name: str) -> str:

@@ -339,6 +339,10 @@ NB_MODULE(_core, m)
   nb::enum_<nv::EdgeStopping>(m, "EdgeStopping", nb::is_arithmetic(), "The edge-stopping function g, by equation.")
     .value("Eq3", nv::EdgeStopping::Eq3)
     .value("Eq4", nv::EdgeStopping::Eq4);
+  nb::enum_<nv::ComputeDevice>(m, "ComputeDevice", nb::is_arithmetic(), "Where the evolution runs.")
+    .value("Automatic", nv::ComputeDevice::Automatic)
+    .value("CPU", nv::ComputeDevice::CPU)
+    .value("GPU", nv::ComputeDevice::GPU);
   nb::enum_<nv::Sheets>(m, "Sheets", nb::is_arithmetic(), "The phi = 0 sheets a surface keeps.")
     .value("Both", nv::Sheets::Both)
     .value("Outer", nv::Sheets::Outer)
@@ -352,6 +356,8 @@ NB_MODULE(_core, m)
     .def("OutputBytesPerNode", &nv::Settings::OutputBytesPerNode);
 #define NV_BIND(Type, Name, Default) settings.def_rw(#Name, &nv::Settings::Name);
   NV_SETTINGS(NV_BIND)
+  // Not a property: for tests and benchmarks (nvSettings.h).
+  settings.def_rw("DeviceOnHost", &nv::Settings::DeviceOnHost);
 #undef NV_BIND
 
   nb::class_<nv::Grid>(m, "Grid", "The uniform grid: nodes Origin + (i, j, k) Spacing.")
@@ -497,7 +503,11 @@ NB_MODULE(_core, m)
     .def("NumberOfBandNodes", [](const PythonRun& r) { return r.Run.NumberOfBandNodes(); })
     .def("RelativeChanges", [](const PythonRun& r) { return r.Run.RelativeChanges(); })
     .def("SetupSeconds", [](const PythonRun& r) { return r.Run.SetupSeconds(); })
-    .def("EvolutionSeconds", [](const PythonRun& r) { return r.Run.EvolutionSeconds(); });
+    .def("EvolutionSeconds", [](const PythonRun& r) { return r.Run.EvolutionSeconds(); })
+    .def("DeviceUsed", [](const PythonRun& r) { return r.Run.DeviceUsed(); },
+      "\"CPU\", \"GPU\", or \"GPU on the host\" (Settings.DeviceOnHost): where the evolution ran.")
+    .def("DeviceBytes", [](const PythonRun& r) { return r.Run.DeviceBytes(); },
+      "The most bytes the GPU held during the evolution (0 on the CPU).");
 
   m.attr("SamplingStage") = nv::SamplingStage;
 }

@@ -7,6 +7,15 @@ with Python and numpy, a workstation or a GPU machine without VTK.
 
     python -m venv venv && venv/bin/pip install .      # the core, built by pip
     venv/bin/python benchmarks/core_stages.py --grid 1024 --threads 1 2 4 8 16 [--repeat 3]
+    venv/bin/python benchmarks/core_stages.py --grid 1024 --threads 16 --device cpu gpu
+
+--device picks where the evolution runs (the property Device): cpu (the
+default), gpu (CUDA: a build with NARROWVOLUME_CUDA and a GPU; see
+scripts/test-gpu.sh), or gpu-host (the GPU back end's kernels through its
+host launcher, which runs anywhere: a check of this script and of the
+kernels, not a timing of the GPU). Each device runs at each thread count
+(the stages other than the evolution stay on the CPU's threads); the table
+has a column for each, and the GPU's peak device memory.
 
 The cloud is the performance benchmarks' sphere (table2.py's sphere-1024):
 points on a sphere of radius 0.45 in the unit box, 500,000 of them at 1024³
@@ -71,6 +80,8 @@ def child(args):
     settings.OutputVolume = False
     settings.NumberOfThreads = args.threads
     settings.MemoryLimit = 0.0
+    settings.Device = core.ComputeDevice.CPU if args.device == "cpu" else core.ComputeDevice.GPU
+    settings.DeviceOnHost = args.device == "gpu-host"
     run = core.Reconstruction(settings)
     sink = core.MeshSink()
     start = time.perf_counter()
@@ -82,18 +93,21 @@ def child(args):
     for name, kind, components, values, names in outcome.Summary:
         if name == "StageSeconds":
             stages = dict(zip(names, values))
-    record = dict(grid=args.grid, points=len(xyz), threads=args.threads, band_nodes=run.NumberOfBandNodes(),
+    record = dict(grid=args.grid, points=len(xyz), threads=args.threads, device=args.device,
+                  device_used=run.DeviceUsed(), band_nodes=run.NumberOfBandNodes(),
                   stages=stages, whole=whole,
-                  peak_mb=resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0)
+                  peak_mb=resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0,
+                  device_mb=run.DeviceBytes() / 2.0 ** 20)
     print(json.dumps(record), flush=True)
 
 
 def parent(args):
     records = []
+    columns = [(device, threads) for device in args.device for threads in args.threads]
     for repeat in range(args.repeat):
-        for threads in args.threads:
+        for device, threads in columns:
             command = [sys.executable, os.path.abspath(__file__), "--child", "--grid", str(args.grid),
-                       "--threads", str(threads)]
+                       "--threads", str(threads), "--device", device]
             result = subprocess.run(command, capture_output=True, text=True)
             if result.returncode != 0:
                 sys.exit("core_stages.py: a run failed:\n%s%s" % (result.stdout, result.stderr))
@@ -104,30 +118,37 @@ def parent(args):
         with open(args.json, "w") as out:
             out.writelines(json.dumps(r) + "\n" for r in records)
 
-    def median(threads, pick):
-        return statistics.median(pick(r) for r in records if r["threads"] == threads)
+    def median(column, pick):
+        return statistics.median(pick(r) for r in records if (r["device"], r["threads"]) == column)
+
+    def label(column):
+        device, threads = column
+        return "%s, %d thread%s" % (device.upper() if device != "gpu-host" else "GPU on the host", threads,
+                                    "" if threads == 1 else "s")
 
     names = []
     for r in records:
         names += [name for name in r["stages"] if name not in names]
-    first, last = args.threads[0], args.threads[-1]
+    first, last = columns[0], columns[-1]
     whole_last = median(last, lambda r: r["whole"])
     print()
     print("%d³ grid, %d points, %d band nodes, medians of %d runs (seconds)" % (
         args.grid, records[0]["points"], records[0]["band_nodes"], args.repeat))
     print()
-    header = "| stage | " + " | ".join("%d thread%s" % (t, "" if t == 1 else "s") for t in args.threads)
-    print(header + " | speed-up %d → %d | share at %d |" % (first, last, last))
-    print("|---" * (len(args.threads) + 3) + "|")
+    header = "| stage | " + " | ".join(label(c) for c in columns)
+    print(header + " | speed-up %s → %s | share at the last |" % (label(first), label(last)))
+    print("|---" * (len(columns) + 3) + "|")
     rows = [(name, lambda r, name=name: r["stages"].get(name, 0.0)) for name in names]
     rows.append(("whole (the core's call)", lambda r: r["whole"]))
     for name, pick in rows:
-        seconds = [median(t, pick) for t in args.threads]
+        seconds = [median(c, pick) for c in columns]
         speedup = seconds[0] / seconds[-1] if seconds[-1] > 0 else float("nan")
         print("| %s | %s | %.1fx | %.1f %% |" % (name, " | ".join("%.3f" % s for s in seconds), speedup,
                                               100.0 * seconds[-1] / whole_last))
-    print("| peak memory (MB) | %s | | |" % " | ".join("%.0f" % median(t, lambda r: r["peak_mb"])
-                                                     for t in args.threads))
+    print("| peak memory (MB) | %s | | |" % " | ".join("%.0f" % median(c, lambda r: r["peak_mb"]) for c in columns))
+    if any(device != "cpu" for device, _ in columns):
+        print("| peak GPU memory of the evolution (MB) | %s | | |" % " | ".join(
+            "%.0f" % median(c, lambda r: r["device_mb"]) for c in columns))
 
 
 def main():
@@ -136,11 +157,14 @@ def main():
     parser.add_argument("--threads", type=int, nargs="+", default=[1, os.cpu_count() or 1],
                         help="thread counts (default: 1 and every core)")
     parser.add_argument("--repeat", type=int, default=3, help="runs per thread count (default 3)")
+    parser.add_argument("--device", nargs="+", default=["cpu"], choices=["cpu", "gpu", "gpu-host"],
+                        help="where the evolution runs (default cpu; gpu-host: the GPU's kernels on the host)")
     parser.add_argument("--json", help="also write the runs' JSON lines to this file")
     parser.add_argument("--child", action="store_true", help=argparse.SUPPRESS)
     args = parser.parse_args()
     if args.child:
         args.threads = args.threads[0]
+        args.device = args.device[0]
         child(args)
     else:
         parent(args)

@@ -9,6 +9,9 @@
 # runs the core's C++ tests on the std::thread pool. Extra arguments go to the first ctest (e.g. -L cxx, -R Table1);
 # NV_SKIP_SANITIZE=1 skips the second and third builds. The documentation site is built
 # too (scripts/docs.sh, every warning an error); NV_SKIP_DOCS=1 skips it.
+# A third, small build compiles the core with the CUDA launcher of its
+# device back end (nvcc, the CUDA runtime and CCCL 13 from PyPI, no GPU
+# needed) and runs its test; NV_SKIP_CUDA=1 skips it.
 #
 # Every stage runs even when an earlier one failed (a stage that needs a
 # failed one is reported as not run), a summary of the stages is printed at
@@ -54,6 +57,35 @@ build_sanitize() {
   fi
   cmake --build "$sanitize_dir" --parallel "$(nproc)"
 }
+# The CUDA build (issue 41): the core and TestCoreDevice with
+# NARROWVOLUME_CUDA=ON, so that a change that breaks the CUDA launcher fails
+# the suite on machines without a GPU. The compiler comes from PyPI into a
+# venv, major version 13 as on the GPU machine (CUDA 13.0); g++ 12 is its
+# host compiler. Without a GPU the test runs the host launcher, and the
+# CUDA launcher's error says it found no device.
+cuda_dir="${build_dir}-cuda"
+cuda_packages=('nvidia-cuda-nvcc==13.0.*' 'nvidia-cuda-runtime==13.0.*' 'nvidia-cuda-cccl==13.0.*'
+  'nvidia-cuda-crt==13.0.*' 'nvidia-nvvm==13.0.*')
+build_cuda() {
+  local venv="$cuda_dir/nvcc-venv"
+  if [ ! -x "$venv/bin/python" ]; then
+    /usr/bin/python3 -m venv "$venv" || return 1
+  fi
+  "$venv/bin/pip" install --quiet --disable-pip-version-check "${cuda_packages[@]}" || return 1
+  local cuda
+  cuda="$("$venv/bin/python" -c 'import nvidia, os; print(os.path.join(list(nvidia.__path__)[0], "cu13"))')" || return 1
+  # nvcc.profile links from lib64; the wheels put the libraries in lib.
+  [ -e "$cuda/lib64" ] || ln -s lib "$cuda/lib64"
+  if [ ! -f "$cuda_dir/CMakeCache.txt" ]; then
+    cmake -S "$source_dir" -B "$cuda_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+      -DNARROWVOLUME_BUILD_PLUGIN=OFF -DNARROWVOLUME_WRAP_PYTHON=OFF \
+      -DNARROWVOLUME_CUDA=ON -DCMAKE_CUDA_COMPILER="$cuda/bin/nvcc" -DCMAKE_CUDA_HOST_COMPILER=g++ \
+      -DVTK_DIR=/usr/lib/x86_64-linux-gnu/cmake/paraview-5.11/vtk >/dev/null || return 1
+  fi
+  cmake --build "$cuda_dir" --parallel "$(nproc)" --target TestCoreDevice
+}
+cuda_ctest() { run_ctest "$cuda_dir" -R '^TestCoreDevice$'; }
+
 sanitize_ctest() {
   ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 run_ctest "$sanitize_dir"
 }
@@ -75,6 +107,13 @@ if stage "install packages" "$source_dir/scripts/install-deps.sh"; then
   else
     skipped "ctest (build/)" "the build failed"
     skipped "docs (scripts/docs.sh)" "the build failed"
+  fi
+  if [ "${NV_SKIP_CUDA:-0}" != "1" ]; then
+    if stage "CUDA build (core, nvcc 13 from PyPI)" build_cuda; then
+      stage "ctest (CUDA build: TestCoreDevice)" cuda_ctest
+    else
+      skipped "ctest (CUDA build: TestCoreDevice)" "the CUDA build failed"
+    fi
   fi
   if [ "${NV_SKIP_SANITIZE:-0}" != "1" ]; then
     if stage "sanitizer build" build_sanitize; then

@@ -29,6 +29,15 @@ enum class EdgeStopping
   Eq4 = 4  ///< g = (1 - |phi0|) |phi0|, the paper's choice for narrow band runs
 };
 
+/// Where the evolution runs (the property Device): Automatic is the CPU
+/// until the GPU back end has passed its tests on a GPU (nvReconstruction.cxx).
+enum class ComputeDevice
+{
+  Automatic = 0,
+  CPU = 1,
+  GPU = 2
+};
+
 /// atanh(0.99): the tanh profile goes from -0.99 to 0.99 over 2 sqrt(2) eps atanh(0.99).
 inline double Atanh099()
 {

@@ -300,6 +300,8 @@ std::vector<SummaryArray> RunSummary(const Reconstruction& run, const RemovedPie
       { gaps.LargestGapCenter[0], gaps.LargestGapCenter[1], gaps.LargestGapCenter[2] } },
     { "RemovedPieces", SummaryArray::Double, 1, { static_cast<double>(removed.Pieces) } },
     { "RemovedVoids", SummaryArray::Double, 1, { static_cast<double>(removed.Voids) } },
+    // The Device property's value that ran: 1 (CPU) or 2 (GPU, also its kernels on the host in tests).
+    { "DeviceUsed", SummaryArray::Int, 1, { run.DeviceUsed() == "CPU" ? 1.0 : 2.0 } },
     StageSeconds(run.GetStageTimes()),
   };
 }

@@ -3,6 +3,7 @@
 #include "nvReconstruction.h"
 
 #include "nvCommunicator.h"
+#include "nvDeviceEvolution.h"
 #include "nvHoleProbe.h"
 #include "nvMemory.h"
 #include "nvParallel.h"
@@ -290,9 +291,50 @@ bool Reconstruction::RunSteps(std::vector<double> xyz, std::shared_ptr<const Sam
 {
   // The steps of this file's header, each false when the run stops.
   double bounds[6];
-  return this->CheckPoints(xyz, bounds) && this->PlanGrid(xyz, bounds, std::move(measured)) &&
+  return this->ChooseDevice() && this->CheckPoints(xyz, bounds) && this->PlanGrid(xyz, bounds, std::move(measured)) &&
     this->GatherPoints(xyz) && this->BuildBand(std::move(xyz)) && this->Evolve() &&
     this->Stages.Time("hole probe", [&]() { return this->ProbeHoles(); });
+}
+
+bool Reconstruction::ChooseDevice()
+{
+  // 0. Where the evolution runs. Automatic is the CPU: the GPU launcher has
+  // not yet passed its tests on a GPU (scripts/test-gpu.sh).
+  if (this->TheSettings.Device != ComputeDevice::GPU)
+  {
+    this->Used = "CPU";
+    return true;
+  }
+  if (this->Comm)
+  {
+    return this->Fail("Device GPU runs on one process only: choose Device CPU (or Automatic) for a distributed "
+                      "(MPI) run.");
+  }
+  if (this->TheSettings.PreserveOffset)
+  {
+    return this->Fail("Device GPU has no PreserveOffset yet: turn PreserveOffset off, or choose Device CPU.");
+  }
+  if (this->TheSettings.DeviceOnHost)
+  {
+    this->Launcher = device::MakeHostLauncher();
+    this->Used = "GPU on the host";
+    return true;
+  }
+  std::string why;
+  try
+  {
+    this->Launcher = device::MakeCudaLauncher(why);
+  }
+  catch (const device::DeviceError& error)
+  {
+    why = error.what();
+  }
+  if (!this->Launcher)
+  {
+    return this->Fail("Device is GPU, but " + why + ". Choose Device CPU or Automatic.");
+  }
+  this->Used = "GPU";
+  return true;
 }
 
 bool Reconstruction::CheckPoints(const std::vector<double>& xyz, double bounds[6])
@@ -548,6 +590,10 @@ bool Reconstruction::Evolve()
       return this->Fail("Internal error: neighbouring processes disagree on their shared band layers.");
     }
   }
+  if (this->Launcher)
+  {
+    return this->EvolveOnDevice();
+  }
   {
     // The distances serve phi^0 only: freed before the solver's other arrays
     // are made, so that the two never hold memory together.
@@ -574,7 +620,51 @@ bool Reconstruction::Evolve()
   if (this->Writer)
   {
     const auto writing = StageTimes::Clock::now();
-    this->Writer->WriteBand(this->Band, this->Solver->GetPhi());
+    this->Writer->WriteBand(this->Band, this->GetPhi());
+    this->Writer.reset();
+    this->Stages.Add("volume", writing);
+  }
+  return true;
+}
+
+bool Reconstruction::EvolveOnDevice()
+{
+  // 6, with Device GPU: phi^0, g and the time steps by the device back end
+  // (one process: ChooseDevice refused a distributed run), the same scheme
+  // and stopping rule as the CPU's solver. The band's distances and
+  // neighbour table go to the device, phi comes back.
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<StepReport> reports;
+  try
+  {
+    this->DevicePhi = device::Evolve(this->Band, this->ThePlan.Scheme, *this->Launcher, this->TheMonitor, reports);
+  }
+  catch (const device::DeviceError& error)
+  {
+    this->Launcher.reset();
+    return this->Fail(error.what());
+  }
+  this->DevicePeakBytes = this->Launcher->DeviceBytes();
+  this->Launcher.reset(); // the device's memory freed
+  for (const StepReport& step : reports)
+  {
+    this->Changes.push_back(step.RelativeChange);
+  }
+  this->EvolutionTime = Seconds(start);
+  this->Stages.Add("evolution", this->EvolutionTime);
+  if (this->TheMonitor && this->TheMonitor->Aborted())
+  {
+    this->Stopped = true;
+    return false;
+  }
+  // The outputs need the band's nodes and phi only.
+  Free(this->Band.Distance);
+  Free(this->Band.Neighbor);
+  ReleaseFreedMemory();
+  if (this->Writer)
+  {
+    const auto writing = StageTimes::Clock::now();
+    this->Writer->WriteBand(this->Band, this->DevicePhi);
     this->Writer.reset();
     this->Stages.Add("volume", writing);
   }
@@ -593,7 +683,7 @@ bool Reconstruction::ProbeHoles()
   const Grid& grid = this->ThePlan.TheGrid;
   const std::int64_t layers = BrickLayers(grid);
   const LayerRange owned = this->Part.Owned;
-  const BandField field(this->Band, this->Solver->GetPhi(), this->ThePlan.Scheme);
+  const BandField field(this->Band, this->GetPhi(), this->ThePlan.Scheme);
   std::vector<double> pierced(holes.size(), 0.0);
   ParallelFor(0, static_cast<std::int64_t>(holes.size()), 1, [&](std::int64_t begin, std::int64_t end) {
     for (std::int64_t i = begin; i < end; ++i)
@@ -619,6 +709,7 @@ void Reconstruction::ReleaseBand()
 {
   this->TheHalo.reset();
   this->Solver.reset();
+  BandValues().swap(this->DevicePhi);
   this->Band = NarrowBand{};
   ReleaseFreedMemory();
 }
@@ -637,7 +728,7 @@ bool Reconstruction::ExtractSurface(SurfaceSink& sink) const
   }
   bool done = false;
   WithThreads(this->TheSettings.NumberOfThreads, [&]() {
-    const BandField field(this->Band, this->Solver->GetPhi(), this->ThePlan.Scheme);
+    const BandField field(this->Band, this->GetPhi(), this->ThePlan.Scheme);
     done = ContourBricks(
       this->ThePlan.TheGrid, field, sink, this->Part.Owned.Begin, this->Part.Owned.End, this->TheMonitor);
   });

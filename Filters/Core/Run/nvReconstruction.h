@@ -18,7 +18,9 @@
 //   5. the truncated distance (eq. 6, 7) and the narrow band (steps 1-3),
 //      and, on request, the dense arrays of the output from the same
 //      distances (nvVolume.h);
-//   6. the time steps of the operator-split scheme (eq. 10-12), then the
+//   6. the time steps of the operator-split scheme (eq. 10-12), on the CPU
+//      or, with Device GPU, by the device back end (nvDeviceEvolution.h),
+//      then the
 //      band's phi into the dense arrays, and whether each hole left open
 //      pierces the evolved shell (GapReport);
 //   7. the phi = 0 surface, from the band (ExtractSurface, nvSurface.h).
@@ -29,6 +31,7 @@
 #define nvReconstruction_h
 
 #include "nvAllenCahnSolver.h"
+#include "nvDeviceLauncher.h"
 #include "nvGapClosing.h"
 #include "nvGrid.h"
 #include "nvHalo.h"
@@ -161,7 +164,14 @@ public:
 
   /// The band (after Run, its nodes only: the solver's other arrays are freed).
   const NarrowBand& GetBand() const { return this->Band; }
-  const BandValues& GetPhi() const { return this->Solver->GetPhi(); }
+  const BandValues& GetPhi() const { return this->Solver ? this->Solver->GetPhi() : this->DevicePhi; }
+
+  /// The device that ran the evolution: "CPU", "GPU" (CUDA), or "GPU on the
+  /// host" (the GPU's kernels through the host launcher, Settings::DeviceOnHost);
+  /// empty before the run has chosen.
+  const std::string& DeviceUsed() const { return this->Used; }
+  /// The most bytes the GPU held during the evolution (0 on the CPU).
+  double DeviceBytes() const { return this->DevicePeakBytes; }
 
   /// Frees the band and phi once the outputs no longer need them (after the
   /// surface is extracted), so that the surface's last steps (small pieces,
@@ -177,7 +187,9 @@ private:
   bool PlanGrid(const std::vector<double>& xyz, const double bounds[6], std::shared_ptr<const Sampling> measured);
   bool GatherPoints(std::vector<double>& xyz);
   bool BuildBand(std::vector<double> xyz);
+  bool ChooseDevice();
   bool Evolve();
+  bool EvolveOnDevice();
   bool ProbeHoles();
   bool Fail(const std::string& message);
   bool CheckMemory(double gridNodes, double points);
@@ -203,6 +215,10 @@ private:
   NarrowBand Band;
   std::unique_ptr<Halo> TheHalo;
   std::unique_ptr<AllenCahnSolver> Solver;
+  std::unique_ptr<device::EvolutionLauncher> Launcher; ///< with Device GPU, until the evolution ends
+  BandValues DevicePhi; ///< phi from the device back end (no Solver then)
+  std::string Used;
+  double DevicePeakBytes = 0.0;
   std::int64_t BandNodes = 0;
   std::vector<double> Changes;
   double SetupTime = 0.0;

@@ -25,6 +25,11 @@ struct Settings
   NV_SETTINGS(NV_SETTINGS_FIELD)
 #undef NV_SETTINGS_FIELD
 
+  /// For tests, not a property: Device GPU runs the GPU back end's kernels
+  /// through its host launcher (nvDeviceLauncher.h) instead of CUDA, on any
+  /// machine.
+  bool DeviceOnHost = false;
+
   /// MemoryLimit in bytes (> 0).
   double MemoryLimitBytes() const;
   /// Bytes per node of the dense output piece: the arrays asked for and the

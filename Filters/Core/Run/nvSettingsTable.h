@@ -27,6 +27,7 @@
   X(double, GaussSeidelTolerance, 1e-06) \
   X(int, NumberOfThreads, 0) \
   X(double, MemoryLimit, 0.0) \
+  X(nv::ComputeDevice, Device, nv::ComputeDevice(0)) \
   X(nv::Sheets, Sheets, nv::Sheets(0)) \
   X(bool, RemoveSmallPieces, true) \
   X(bool, OutputVolume, true) \
@@ -55,6 +56,7 @@
   X(GaussSeidelTolerance, "Gauss-Seidel Tolerance") \
   X(NumberOfThreads, "Number Of Threads") \
   X(MemoryLimit, "Memory Limit") \
+  X(Device, "Device") \
   X(Sheets, "Sheets") \
   X(RemoveSmallPieces, "Remove Small Pieces") \
   X(OutputVolume, "Output Volume") \

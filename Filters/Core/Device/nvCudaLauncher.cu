@@ -1,0 +1,237 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+// SPDX-License-Identifier: BSD-3-Clause
+// The CUDA launcher: the kernels of nvDeviceKernels.h on the GPU. This file
+// only allocates, copies and launches; what a node computes is in the
+// kernels, which the host launcher runs too, and the loops around them are
+// in nvDeviceEvolution.cxx.
+//
+// Compiled where CMake finds a CUDA compiler (NARROWVOLUME_CUDA): the suite
+// compiles and links it on machines without a GPU (scripts/test.sh, nvcc
+// from PyPI). It has NOT yet run on a GPU: scripts/test-gpu.sh is the check
+// on a machine with one.
+//
+// Reductions (the sweeps' max change, the stopping rule's norms): each block
+// reduces its nodes in shared memory and writes one partial; the host adds
+// the partials in block order. With the fixed launch shape below the result
+// does not depend on scheduling (no atomics), so a run repeats bit for bit
+// on the same GPU.
+#include "nvDeviceLauncher.h"
+
+#include <cuda_runtime.h>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+namespace nv
+{
+namespace device
+{
+namespace
+{
+constexpr int Threads = 256;      ///< threads a block
+constexpr int MaximumBlocks = 4096; ///< blocks of a launch: grid-stride loops beyond
+
+void Check(cudaError_t status, const char* what)
+{
+  if (status != cudaSuccess)
+  {
+    throw DeviceError(std::string("The GPU failed (") + what + "): " + cudaGetErrorString(status));
+  }
+}
+
+int BlocksFor(std::int64_t n)
+{
+  return static_cast<int>(std::max<std::int64_t>(1, std::min<std::int64_t>(MaximumBlocks, (n + Threads - 1) / Threads)));
+}
+
+template <typename Kernel>
+__global__ void ForEach(std::int64_t begin, std::int64_t end, Kernel kernel)
+{
+  const std::int64_t stride = static_cast<std::int64_t>(gridDim.x) * blockDim.x;
+  for (std::int64_t s = begin + static_cast<std::int64_t>(blockIdx.x) * blockDim.x + threadIdx.x; s < end; s += stride)
+  {
+    kernel(s);
+  }
+}
+
+/// partial[blockIdx.x] = the max (Max = true) or the sum of kernel(s) over this block's nodes.
+template <bool Max, typename Kernel>
+__global__ void Reduce(std::int64_t begin, std::int64_t end, Kernel kernel, double* partial)
+{
+  __shared__ double cache[Threads];
+  const std::int64_t stride = static_cast<std::int64_t>(gridDim.x) * blockDim.x;
+  double value = 0.0;
+  for (std::int64_t s = begin + static_cast<std::int64_t>(blockIdx.x) * blockDim.x + threadIdx.x; s < end; s += stride)
+  {
+    const double v = kernel(s);
+    value = Max ? fmax(value, v) : value + v;
+  }
+  cache[threadIdx.x] = value;
+  __syncthreads();
+  for (int width = Threads / 2; width > 0; width /= 2)
+  {
+    if (static_cast<int>(threadIdx.x) < width)
+    {
+      cache[threadIdx.x] = Max ? fmax(cache[threadIdx.x], cache[threadIdx.x + width])
+                               : cache[threadIdx.x] + cache[threadIdx.x + width];
+    }
+    __syncthreads();
+  }
+  if (threadIdx.x == 0)
+  {
+    partial[blockIdx.x] = cache[0];
+  }
+}
+
+template <typename T>
+T* Allocate(std::int64_t count, double& bytes, const char* what)
+{
+  void* memory = nullptr;
+  const std::size_t size = static_cast<std::size_t>(std::max<std::int64_t>(count, 1)) * sizeof(T);
+  Check(cudaMalloc(&memory, size), what);
+  bytes += static_cast<double>(size);
+  return static_cast<T*>(memory);
+}
+
+class CudaLauncher : public EvolutionLauncher
+{
+public:
+  explicit CudaLauncher(int device)
+  {
+    Check(cudaSetDevice(device), "cudaSetDevice");
+    cudaDeviceProp properties;
+    Check(cudaGetDeviceProperties(&properties, device), "cudaGetDeviceProperties");
+    this->DeviceName = properties.name;
+    this->Partial = Allocate<double>(MaximumBlocks, this->Bytes, "the reductions' partials");
+    this->HostPartial.resize(MaximumBlocks);
+  }
+  ~CudaLauncher() override
+  {
+    // Errors are ignored here: the destructor may run while a DeviceError unwinds.
+    for (void* memory : { static_cast<void*>(this->Partial), static_cast<void*>(this->Neighbor),
+           static_cast<void*>(this->Distance), static_cast<void*>(this->A.Phi), static_cast<void*>(this->A.Previous),
+           static_cast<void*>(this->A.Coupling), static_cast<void*>(this->A.Decay) })
+    {
+      cudaFree(memory);
+    }
+  }
+
+  std::string Name() const override { return "CUDA (" + this->DeviceName + ")"; }
+  double DeviceBytes() const override { return this->Bytes; }
+
+  void Upload(std::int64_t size, const std::uint32_t* neighbor, const double* distance, double inside,
+    double outside) override
+  {
+    this->A.Size = size;
+    this->Neighbor = Allocate<std::uint32_t>(6 * size, this->Bytes, "the neighbour table");
+    this->Distance = Allocate<double>(size, this->Bytes, "the distances");
+    this->A.Phi = Allocate<double>(size + 2, this->Bytes, "phi");
+    this->A.Previous = Allocate<double>(size, this->Bytes, "phi^n");
+    this->A.Coupling = Allocate<double>(size, this->Bytes, "the coupling");
+    this->A.Decay = Allocate<float>(size, this->Bytes, "the decay");
+    this->A.Neighbor = this->Neighbor;
+    this->A.Distance = this->Distance;
+    Check(cudaMemcpy(this->Neighbor, neighbor, sizeof(std::uint32_t) * 6 * size, cudaMemcpyHostToDevice),
+      "copying the neighbour table");
+    Check(cudaMemcpy(this->Distance, distance, sizeof(double) * size, cudaMemcpyHostToDevice),
+      "copying the distances");
+    const double slots[2] = { inside, outside };
+    Check(cudaMemcpy(this->A.Phi + size, slots, sizeof(slots), cudaMemcpyHostToDevice), "copying eq. (5)'s values");
+  }
+  void InitialField(const EvolutionConstants& constants) override
+  {
+    this->For(0, this->A.Size, InitialPhiKernel{ this->A, constants });
+    Check(cudaDeviceSynchronize(), "phi0");
+    Check(cudaFree(this->Distance), "freeing the distances");
+    this->Bytes -= static_cast<double>(sizeof(double) * std::max<std::int64_t>(this->A.Size, 1));
+    this->Distance = nullptr;
+    this->A.Distance = nullptr;
+  }
+  void Coefficients(const EvolutionConstants& constants) override
+  {
+    this->For(0, this->A.Size, CoefficientsKernel{ this->A, constants });
+  }
+  void KeepPrevious() override { this->For(0, this->A.Size, KeepPreviousKernel{ this->A }); }
+  double Relax(std::int64_t begin, std::int64_t end, double omega) override
+  {
+    return this->Reduction<true>(begin, end, RelaxKernel{ this->A, omega });
+  }
+  void React() override { this->For(0, this->A.Size, ReactKernel{ this->A }); }
+  double ChangeSquared(std::int64_t begin, std::int64_t end) override
+  {
+    return this->Reduction<false>(begin, end, ChangeSquaredKernel{ this->A });
+  }
+  double NormSquared(std::int64_t begin, std::int64_t end) override
+  {
+    return this->Reduction<false>(begin, end, NormSquaredKernel{ this->A });
+  }
+  void Download(UninitializedVector<double>& phi) override
+  {
+    phi.resize(static_cast<std::size_t>(this->A.Size + 2));
+    Check(cudaMemcpy(phi.data(), this->A.Phi, sizeof(double) * (this->A.Size + 2), cudaMemcpyDeviceToHost),
+      "copying phi back");
+  }
+
+private:
+  template <typename Kernel>
+  void For(std::int64_t begin, std::int64_t end, const Kernel& kernel)
+  {
+    if (end > begin)
+    {
+      ForEach<<<BlocksFor(end - begin), Threads>>>(begin, end, kernel);
+      Check(cudaGetLastError(), "a kernel's launch");
+    }
+  }
+  template <bool Max, typename Kernel>
+  double Reduction(std::int64_t begin, std::int64_t end, const Kernel& kernel)
+  {
+    if (end <= begin)
+    {
+      return 0.0;
+    }
+    const int blocks = BlocksFor(end - begin);
+    Reduce<Max><<<blocks, Threads>>>(begin, end, kernel, this->Partial);
+    Check(cudaGetLastError(), "a reduction's launch");
+    Check(cudaMemcpy(this->HostPartial.data(), this->Partial, sizeof(double) * blocks, cudaMemcpyDeviceToHost),
+      "copying a reduction back");
+    double result = 0.0;
+    for (int b = 0; b < blocks; ++b)
+    {
+      result = Max ? std::max(result, this->HostPartial[b]) : result + this->HostPartial[b];
+    }
+    return result;
+  }
+
+  std::string DeviceName;
+  double Bytes = 0.0;
+  EvolutionArrays A;
+  std::uint32_t* Neighbor = nullptr;
+  double* Distance = nullptr;
+  double* Partial = nullptr;
+  std::vector<double> HostPartial;
+};
+} // namespace
+
+bool CudaCompiled()
+{
+  return true;
+}
+
+std::unique_ptr<EvolutionLauncher> MakeCudaLauncher(std::string& why)
+{
+  int count = 0;
+  const cudaError_t status = cudaGetDeviceCount(&count);
+  if (status != cudaSuccess || count == 0)
+  {
+    why = std::string("no CUDA device was found (the CUDA runtime says: ") +
+      (status != cudaSuccess ? cudaGetErrorString(status) : "no device") + ")";
+    return nullptr;
+  }
+  int device = 0;
+  Check(cudaGetDevice(&device), "cudaGetDevice");
+  return std::unique_ptr<EvolutionLauncher>(new CudaLauncher(device));
+}
+
+} // namespace device
+} // namespace nv

@@ -1,0 +1,45 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+// SPDX-License-Identifier: BSD-3-Clause
+// The device back end's evolution: phi^0 (eq. 2), g (eq. 4 or 3) and the
+// operator-split time steps (eq. 10-12) on the band, with the CPU core's
+// sweeps, over-relaxation and stopping rule (nvAllenCahnSolver.h), run by a
+// launcher (nvDeviceLauncher.h): on the GPU or, for the tests and machines
+// without one, over the host's threads.
+//
+// Serial runs only (no halo exchange), and without PreserveOffset's drift
+// correction: the run refuses those with the GPU (nvReconstruction.cxx).
+#ifndef nvDeviceEvolution_h
+#define nvDeviceEvolution_h
+
+#include "nvAllenCahnSolver.h"
+#include "nvDeviceLauncher.h"
+#include "nvNarrowBand.h"
+#include "nvParameters.h"
+
+#include <vector>
+
+namespace nv
+{
+class Monitor;
+
+namespace device
+{
+
+/// The scheme's constants of nvDeviceKernels.h from the parameters.
+EvolutionConstants ConstantsOf(const Parameters& parameters);
+
+/**
+ * Evolves phi on `band` (its distances and neighbour table, unchanged) with
+ * `launcher`: phi^0, then time steps until the relative change drops below
+ * ConvergenceTolerance (if > 0) or MaximumNumberOfIterations steps are done,
+ * or the monitor asks to stop. Returns phi at the band's nodes and the two
+ * Dirichlet slots (L + 2 values, as AllenCahnSolver::GetPhi); `reports`
+ * gets one report a step. Throws DeviceError when the device fails.
+ */
+BandValues Evolve(const NarrowBand& band, const Parameters& parameters, EvolutionLauncher& launcher,
+  Monitor* monitor, std::vector<StepReport>& reports);
+
+} // namespace device
+} // namespace nv
+
+#endif

@@ -1,0 +1,83 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+// SPDX-License-Identifier: BSD-3-Clause
+// The two launchers of the device back end's kernels (nvDeviceKernels.h):
+// the host launcher runs them over the thread pool on any machine, the CUDA
+// launcher on a GPU. Each method is one kernel over a range of band nodes,
+// or a copy; the loops that call them are in nvDeviceEvolution.cxx.
+//
+// The CUDA launcher is compiled only where CMake finds a CUDA compiler
+// (NARROWVOLUME_CUDA); without it, MakeCudaLauncher says the build has no
+// CUDA. It has not yet run on a GPU: the suite runs it through the host
+// launcher and compiles the CUDA one (scripts/test.sh), and
+// scripts/test-gpu.sh runs it on a machine with one.
+#ifndef nvDeviceLauncher_h
+#define nvDeviceLauncher_h
+
+#include "nvDeviceKernels.h"
+#include "nvMemory.h"
+
+#include <cstdint>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+namespace nv
+{
+namespace device
+{
+
+/// What a launcher throws when the device fails (an allocation, a copy, a
+/// launch): the message says which, with the CUDA runtime's words.
+class DeviceError : public std::runtime_error
+{
+public:
+  using std::runtime_error::runtime_error;
+};
+
+class EvolutionLauncher
+{
+public:
+  virtual ~EvolutionLauncher();
+  /// "host launcher" or "CUDA (device name)".
+  virtual std::string Name() const = 0;
+
+  /// Holds the arrays of a band of `size` nodes (EvolutionArrays) and copies
+  /// the neighbour table (6 per node) and the distances there; phi's two
+  /// Dirichlet slots (eq. 5) get `inside` and `outside`. The host launcher
+  /// reads the band's arrays in place, which must then outlive it.
+  virtual void Upload(std::int64_t size, const std::uint32_t* neighbor, const double* distance, double inside,
+    double outside) = 0;
+  /// phi^0 (InitialPhiKernel) on all nodes, then the distances are freed.
+  virtual void InitialField(const EvolutionConstants& constants) = 0;
+  /// CoefficientsKernel on all nodes.
+  virtual void Coefficients(const EvolutionConstants& constants) = 0;
+  /// KeepPreviousKernel on all nodes.
+  virtual void KeepPrevious() = 0;
+  /// RelaxKernel on the nodes [begin, end) of one colour; the max |change|.
+  virtual double Relax(std::int64_t begin, std::int64_t end, double omega) = 0;
+  /// ReactKernel on all nodes.
+  virtual void React() = 0;
+  /// The sums of ChangeSquaredKernel and NormSquaredKernel over [begin, end).
+  virtual double ChangeSquared(std::int64_t begin, std::int64_t end) = 0;
+  virtual double NormSquared(std::int64_t begin, std::int64_t end) = 0;
+  /// phi's size + 2 values into `phi` (host memory), after the last kernel.
+  virtual void Download(UninitializedVector<double>& phi) = 0;
+  /// Bytes the launcher holds on its device (0 for the host launcher).
+  virtual double DeviceBytes() const { return 0.0; }
+};
+
+/// The host launcher: the kernels over nv::ParallelFor and its reductions.
+std::unique_ptr<EvolutionLauncher> MakeHostLauncher();
+
+/// Whether this build has the CUDA launcher (NARROWVOLUME_CUDA).
+bool CudaCompiled();
+/**
+ * The CUDA launcher on the current CUDA device, or null with `why` set: the
+ * build has no CUDA, or the CUDA runtime finds no device (its words in `why`).
+ */
+std::unique_ptr<EvolutionLauncher> MakeCudaLauncher(std::string& why);
+
+} // namespace device
+} // namespace nv
+
+#endif

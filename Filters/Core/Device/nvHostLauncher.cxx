@@ -1,0 +1,129 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+// SPDX-License-Identifier: BSD-3-Clause
+// The host launcher: the device back end's kernels (nvDeviceKernels.h) run
+// over the core's threads (nvParallel.h), node by node as a GPU thread runs
+// them. The reductions split the ranges as the CPU core's solver does
+// (ParallelMax, ParallelSum), so phi is the CPU core's bit for bit.
+#include "nvDeviceLauncher.h"
+
+#include "nvMemory.h"
+#include "nvParallel.h"
+
+#include <algorithm>
+
+namespace nv
+{
+namespace device
+{
+EvolutionLauncher::~EvolutionLauncher() = default;
+
+namespace
+{
+constexpr std::int64_t Grain = 4096;
+
+template <typename Kernel>
+void For(std::int64_t begin, std::int64_t end, const Kernel& kernel)
+{
+  ParallelFor(begin, end, Grain, [&](std::int64_t first, std::int64_t last) {
+    for (std::int64_t s = first; s < last; ++s)
+    {
+      kernel(s);
+    }
+  });
+}
+
+template <typename Kernel>
+double Max(std::int64_t begin, std::int64_t end, const Kernel& kernel)
+{
+  return ParallelMax(end - begin, [&](std::int64_t first, std::int64_t last) {
+    double result = 0.0;
+    for (std::int64_t s = begin + first; s < begin + last; ++s)
+    {
+      result = std::max(result, kernel(s));
+    }
+    return result;
+  });
+}
+
+template <typename Kernel>
+double Sum(std::int64_t begin, std::int64_t end, const Kernel& kernel)
+{
+  return ParallelSum(end - begin, [&](std::int64_t first, std::int64_t last) {
+    double result = 0.0;
+    for (std::int64_t s = begin + first; s < begin + last; ++s)
+    {
+      result += kernel(s);
+    }
+    return result;
+  });
+}
+
+class HostLauncher : public EvolutionLauncher
+{
+public:
+  std::string Name() const override { return "host launcher"; }
+
+  void Upload(std::int64_t size, const std::uint32_t* neighbor, const double* distance, double inside,
+    double outside) override
+  {
+    // Allocated unset, first written by the kernels' parallel loops, as the
+    // CPU core's arrays.
+    this->Phi.resize(static_cast<std::size_t>(size + 2));
+    this->Previous.resize(static_cast<std::size_t>(size));
+    this->Coupling.resize(static_cast<std::size_t>(size));
+    this->Decay.resize(static_cast<std::size_t>(size));
+    this->Phi[size] = inside;
+    this->Phi[size + 1] = outside;
+    this->A.Size = size;
+    this->A.Neighbor = neighbor;
+    this->A.Distance = distance;
+    this->A.Phi = this->Phi.data();
+    this->A.Previous = this->Previous.data();
+    this->A.Coupling = this->Coupling.data();
+    this->A.Decay = this->Decay.data();
+  }
+  void InitialField(const EvolutionConstants& constants) override
+  {
+    For(0, this->A.Size, InitialPhiKernel{ this->A, constants });
+    this->A.Distance = nullptr; // the band's: its owner frees it
+  }
+  void Coefficients(const EvolutionConstants& constants) override
+  {
+    For(0, this->A.Size, CoefficientsKernel{ this->A, constants });
+  }
+  void KeepPrevious() override { For(0, this->A.Size, KeepPreviousKernel{ this->A }); }
+  double Relax(std::int64_t begin, std::int64_t end, double omega) override
+  {
+    return Max(begin, end, RelaxKernel{ this->A, omega });
+  }
+  void React() override { For(0, this->A.Size, ReactKernel{ this->A }); }
+  double ChangeSquared(std::int64_t begin, std::int64_t end) override
+  {
+    return Sum(begin, end, ChangeSquaredKernel{ this->A });
+  }
+  double NormSquared(std::int64_t begin, std::int64_t end) override
+  {
+    return Sum(begin, end, NormSquaredKernel{ this->A });
+  }
+  void Download(UninitializedVector<double>& phi) override
+  {
+    phi.swap(this->Phi); // already in host memory
+    this->A = EvolutionArrays();
+  }
+
+private:
+  EvolutionArrays A;
+  UninitializedVector<double> Phi;
+  UninitializedVector<double> Previous;
+  UninitializedVector<double> Coupling;
+  UninitializedVector<float> Decay;
+};
+} // namespace
+
+std::unique_ptr<EvolutionLauncher> MakeHostLauncher()
+{
+  return std::unique_ptr<EvolutionLauncher>(new HostLauncher());
+}
+
+} // namespace device
+} // namespace nv

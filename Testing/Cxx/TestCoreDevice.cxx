@@ -1,0 +1,339 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+// SPDX-License-Identifier: BSD-3-Clause
+// The device back end (Filters/Core/Device) against the CPU core.
+//
+//   TestCoreDevice          its kernels through the host launcher: phi on
+//                           the band is the CPU core's solver's bit for bit
+//                           (the same formulas, the same reductions), on a
+//                           sphere and a torus, both edge-stopping functions
+//                           and the literal stopping rule;
+//                           and the whole run with Device GPU (the property)
+//                           against Device CPU: the surfaces' vertices
+//                           within 0.05 h of each other, both sheets closed;
+//   TestCoreDevice cuda     the same through the CUDA launcher, on a GPU
+//                           (scripts/test-gpu.sh): phi within 1e-9 of the
+//                           CPU core's (fused multiply-adds and the
+//                           reductions' order change the last bits).
+//
+// Device GPU where there is no GPU stops with an error that says why: the
+// build has no CUDA, or the machine no CUDA device.
+#include "nvAllenCahnSolver.h"
+#include "nvDeviceEvolution.h"
+#include "nvDeviceLauncher.h"
+#include "nvGrid.h"
+#include "nvNarrowBand.h"
+#include "nvParameters.h"
+#include "nvReconstruction.h"
+#include "nvSurface.h"
+#include "nvTestUtilities.h"
+#include "nvTruncatedDistance.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+#include <map>
+#include <numeric>
+#include <string>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#ifndef NV_TEST_NAME
+#define NV_TEST_NAME "TestCoreDevice"
+#endif
+
+namespace
+{
+bool OnGpu = false; ///< the CUDA launcher instead of the host launcher
+
+std::unique_ptr<nv::device::EvolutionLauncher> Launcher()
+{
+  if (!OnGpu)
+  {
+    return nv::device::MakeHostLauncher();
+  }
+  std::string why;
+  std::unique_ptr<nv::device::EvolutionLauncher> launcher = nv::device::MakeCudaLauncher(why);
+  if (!launcher)
+  {
+    std::printf("FAILED: no CUDA launcher: %s\n", why.c_str());
+  }
+  return launcher;
+}
+
+/// Points on a torus of radii R (the tube's centre) and r about the z axis.
+std::vector<double> TorusPoints(int n, double R, double r)
+{
+  std::vector<double> xyz;
+  const int around = static_cast<int>(std::sqrt(n * R / r));
+  const int tube = std::max(3, n / around);
+  for (int a = 0; a < around; ++a)
+  {
+    const double u = 2.0 * M_PI * a / around;
+    for (int b = 0; b < tube; ++b)
+    {
+      const double v = 2.0 * M_PI * (b + 0.5 * (a % 2)) / tube;
+      xyz.push_back((R + r * std::cos(v)) * std::cos(u));
+      xyz.push_back((R + r * std::cos(v)) * std::sin(u));
+      xyz.push_back(r * std::sin(v));
+    }
+  }
+  return xyz;
+}
+
+/// The band of the points on a grid of spacing h padded for offset l.
+nv::NarrowBand BandOf(const std::vector<double>& xyz, const nv::Parameters& parameters)
+{
+  double bounds[6] = { 1e300, -1e300, 1e300, -1e300, 1e300, -1e300 };
+  for (std::size_t p = 0; p < xyz.size(); p += 3)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      bounds[2 * a] = std::min(bounds[2 * a], xyz[p + a]);
+      bounds[2 * a + 1] = std::max(bounds[2 * a + 1], xyz[p + a]);
+    }
+  }
+  const nv::Grid grid = nv::MakeGrid(bounds, parameters.Spacing,
+    nv::GridPadding(parameters.Reach(), parameters.Spacing));
+  const nv::TruncatedDistance distance(
+    grid, xyz.data(), static_cast<std::int64_t>(xyz.size() / 3), parameters.Reach());
+  return nv::BuildNarrowBand(distance, parameters);
+}
+
+/// The device back end's phi against the CPU core's solver on one band.
+void Compare(const char* what, const std::vector<double>& xyz, const nv::Parameters& parameters)
+{
+  const nv::NarrowBand band = BandOf(xyz, parameters);
+  NV_CHECK(band.Size() > 1000);
+
+  nv::AllenCahnSolver solver(band, parameters);
+  const std::vector<nv::StepReport> cpu = solver.Run();
+
+  std::unique_ptr<nv::device::EvolutionLauncher> launcher = Launcher();
+  if (!launcher)
+  {
+    NV_CHECK(false);
+    return;
+  }
+  std::vector<nv::StepReport> device;
+  const nv::BandValues phi = nv::device::Evolve(band, parameters, *launcher, nullptr, device);
+
+  NV_CHECK(phi.size() == solver.GetPhi().size());
+  NV_CHECK(device.size() == cpu.size());
+  double largest = 0.0;
+  for (std::size_t s = 0; s < phi.size() && s < solver.GetPhi().size(); ++s)
+  {
+    largest = std::max(largest, std::fabs(phi[s] - solver.GetPhi()[s]));
+  }
+  int sweepsCpu = 0, sweepsDevice = 0;
+  for (std::size_t n = 0; n < cpu.size() && n < device.size(); ++n)
+  {
+    sweepsCpu += cpu[n].Sweeps;
+    sweepsDevice += device[n].Sweeps;
+    if (OnGpu)
+    {
+      NV_CHECK_NEAR(device[n].RelativeChange, cpu[n].RelativeChange, 1e-9);
+    }
+    else
+    {
+      NV_CHECK(device[n].RelativeChange == cpu[n].RelativeChange);
+      NV_CHECK(device[n].Sweeps == cpu[n].Sweeps);
+    }
+  }
+  std::printf("%s on %s: %lld band nodes, %zu steps, sweeps %d (CPU %d), max |phi - phi_CPU| %.3g\n", what,
+    launcher->Name().c_str(), static_cast<long long>(band.Size()), device.size(), sweepsDevice, sweepsCpu, largest);
+  NV_CHECK(largest <= (OnGpu ? 1e-9 : 0.0));
+}
+
+void TestSphere()
+{
+  const double center[3] = { 0.3, -0.1, 0.2 };
+  nv::Parameters p;
+  p.OffsetDistance = 0.1;
+  p.Spacing = 0.02;
+  p.MaximumNumberOfIterations = 3;
+  Compare("sphere, eq. (4), 3 steps", nvtest::SpherePoints(4000, 0.5, center), p);
+  p.EdgeStoppingFunction = nv::EdgeStopping::Eq3;
+  p.Domain = nv::Domain::WholeDomain;
+  Compare("sphere, eq. (3), whole domain", nvtest::SpherePoints(4000, 0.5, center), p);
+}
+
+void TestTorus()
+{
+  nv::Parameters p;
+  p.OffsetDistance = 0.08;
+  p.Spacing = 0.02;
+  // The paper's literal rule, within a cap.
+  p.MaximumNumberOfIterations = 8;
+  p.ConvergenceTolerance = 1e-5;
+  Compare("torus, the literal stopping rule", TorusPoints(8000, 0.6, 0.25), p);
+  p.ConvergenceTolerance = 0.02; // stops before the cap
+  p.Relaxation = 1.0;            // plain Gauss-Seidel
+  Compare("torus, tolerance 0.02, plain Gauss-Seidel", TorusPoints(8000, 0.6, 0.25), p);
+}
+
+/// The largest distance from a vertex of `a` to the nearest vertex of `b`
+/// (vertices hashed into cells of size h).
+double LargestVertexDistance(const nv::SurfaceMesh& a, const nv::SurfaceMesh& b, double h)
+{
+  const auto key = [h](const double* x, int di, int dj, int dk) {
+    const std::int64_t i = static_cast<std::int64_t>(std::floor(x[0] / h)) + di;
+    const std::int64_t j = static_cast<std::int64_t>(std::floor(x[1] / h)) + dj;
+    const std::int64_t k = static_cast<std::int64_t>(std::floor(x[2] / h)) + dk;
+    return (i * 73856093) ^ (j * 19349663) ^ (k * 83492791);
+  };
+  std::unordered_multimap<std::int64_t, std::size_t> cells;
+  for (std::size_t p = 0; p < b.Points.size(); p += 3)
+  {
+    cells.emplace(key(&b.Points[p], 0, 0, 0), p);
+  }
+  double largest = 0.0;
+  for (std::size_t p = 0; p < a.Points.size(); p += 3)
+  {
+    double nearest = 1e300;
+    for (int di = -1; di <= 1; ++di)
+      for (int dj = -1; dj <= 1; ++dj)
+        for (int dk = -1; dk <= 1; ++dk)
+        {
+          const auto range = cells.equal_range(key(&a.Points[p], di, dj, dk));
+          for (auto it = range.first; it != range.second; ++it)
+          {
+            const double* q = &b.Points[it->second];
+            nearest = std::min(nearest,
+              std::sqrt((a.Points[p] - q[0]) * (a.Points[p] - q[0]) + (a.Points[p + 1] - q[1]) * (a.Points[p + 1] - q[1]) +
+                (a.Points[p + 2] - q[2]) * (a.Points[p + 2] - q[2])));
+          }
+        }
+    largest = std::max(largest, nearest);
+  }
+  return largest;
+}
+
+/// Whether every edge of the mesh joins exactly two triangles; `pieces`
+/// gets the number of connected pieces.
+bool Closed(const nv::SurfaceMesh& mesh, int& pieces)
+{
+  std::map<std::pair<nv::VertexId, nv::VertexId>, int> edges;
+  std::vector<std::size_t> parent(mesh.Points.size() / 3);
+  std::iota(parent.begin(), parent.end(), 0);
+  const auto root = [&parent](std::size_t v) {
+    while (parent[v] != v)
+    {
+      v = parent[v] = parent[parent[v]];
+    }
+    return v;
+  };
+  for (std::size_t t = 0; t + 2 < mesh.Triangles.size(); t += 3)
+  {
+    for (int e = 0; e < 3; ++e)
+    {
+      const nv::VertexId u = mesh.Triangles[t + e], v = mesh.Triangles[t + (e + 1) % 3];
+      ++edges[std::make_pair(std::min(u, v), std::max(u, v))];
+      parent[root(static_cast<std::size_t>(u))] = root(static_cast<std::size_t>(v));
+    }
+  }
+  pieces = 0;
+  for (std::size_t v = 0; v < parent.size(); ++v)
+  {
+    pieces += root(v) == v ? 1 : 0;
+  }
+  for (const auto& edge : edges)
+  {
+    if (edge.second != 2)
+    {
+      return false;
+    }
+  }
+  return !edges.empty();
+}
+
+/// The whole run (nv::Reconstruction) with Device GPU against Device CPU.
+void CompareRuns(const char* what, const std::vector<double>& xyz, nv::Settings settings)
+{
+  settings.Device = nv::ComputeDevice::CPU;
+  nv::Reconstruction cpu(settings, nullptr, nullptr);
+  NV_CHECK(cpu.Run(xyz));
+  nv::SurfaceMesh cpuMesh;
+  NV_CHECK(cpu.ExtractSurface(cpuMesh));
+  NV_CHECK(cpu.DeviceUsed() == "CPU");
+
+  settings.Device = nv::ComputeDevice::GPU;
+  settings.DeviceOnHost = !OnGpu;
+  nv::Reconstruction gpu(settings, nullptr, nullptr);
+  const bool ran = gpu.Run(xyz);
+  if (!ran)
+  {
+    std::printf("FAILED: %s: %s\n", what, gpu.Error().c_str());
+    NV_CHECK(false);
+    return;
+  }
+  nv::SurfaceMesh gpuMesh;
+  NV_CHECK(gpu.ExtractSurface(gpuMesh));
+  NV_CHECK(gpu.DeviceUsed() == (OnGpu ? "GPU" : "GPU on the host"));
+  NV_CHECK(gpu.RelativeChanges().size() == cpu.RelativeChanges().size());
+
+  const double h = cpu.GetGrid().Spacing;
+  const double apart = std::max(
+    LargestVertexDistance(gpuMesh, cpuMesh, h), LargestVertexDistance(cpuMesh, gpuMesh, h));
+  int cpuPieces = 0, gpuPieces = 0;
+  const bool cpuClosed = Closed(cpuMesh, cpuPieces);
+  const bool gpuClosed = Closed(gpuMesh, gpuPieces);
+  std::printf("%s, Device GPU (%s) against CPU: %zu and %zu vertices, the farthest %.3g h from the other's; "
+              "closed %d and %d, pieces %d and %d\n",
+    what, gpu.DeviceUsed().c_str(), gpuMesh.Points.size() / 3, cpuMesh.Points.size() / 3, apart / h, gpuClosed,
+    cpuClosed, gpuPieces, cpuPieces);
+  NV_CHECK(!gpuMesh.Points.empty());
+  NV_CHECK(apart <= 0.05 * h);
+  NV_CHECK(gpuClosed && cpuClosed);
+  NV_CHECK(gpuPieces == 2 && cpuPieces == 2); // the outer and the inner sheet
+}
+
+void TestRuns()
+{
+  nv::Settings settings;
+  settings.OffsetDistance = 0.1;
+  settings.SampleSpacing = 0.01; // the Table 1 sphere at h = 0.01
+  settings.OutputVolume = false;
+  const double center[3] = { 0.0, 0.0, 0.0 };
+  CompareRuns("sphere (Table 1, h = 0.01)", nvtest::SpherePoints(30000, 0.5, center), settings);
+  settings.OffsetDistance = 0.08;
+  settings.SampleSpacing = 0.02;
+  CompareRuns("torus", TorusPoints(20000, 0.6, 0.25), settings);
+}
+
+/// Device GPU where the GPU is missing: an error that says what is missing.
+void TestMissingGpu()
+{
+  if (OnGpu)
+  {
+    return;
+  }
+  nv::Settings settings;
+  settings.Device = nv::ComputeDevice::GPU;
+  const double center[3] = { 0.0, 0.0, 0.0 };
+  nv::Reconstruction run(settings, nullptr, nullptr);
+  NV_CHECK(!run.Run(nvtest::SpherePoints(2000, 0.5, center)));
+  const std::string expected =
+    nv::device::CudaCompiled() ? "no CUDA device was found" : "this build of NarrowVolume has no CUDA";
+  std::printf("Device GPU here: %s\n", run.Error().c_str());
+  NV_CHECK(run.Error().find("Device is GPU, but " + expected) == 0);
+  // Automatic runs on the CPU.
+  settings.Device = nv::ComputeDevice::Automatic;
+  nv::Reconstruction automatic(settings, nullptr, nullptr);
+  NV_CHECK(automatic.Run(nvtest::SpherePoints(2000, 0.5, center)));
+  NV_CHECK(automatic.DeviceUsed() == "CPU");
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  OnGpu = argc > 1 && std::strcmp(argv[1], "cuda") == 0;
+  TestSphere();
+  TestTorus();
+  TestRuns();
+  TestMissingGpu();
+  return nvtest::Result(NV_TEST_NAME);
+}

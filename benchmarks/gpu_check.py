@@ -1,0 +1,135 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+# SPDX-License-Identifier: BSD-3-Clause
+"""The GPU back end against the CPU core, through the pip package's core
+(narrowvolume._core, no VTK): the check scripts/test-gpu.sh runs on a
+machine with a GPU.
+
+    venv/bin/python benchmarks/gpu_check.py [--device gpu | gpu-host]
+
+For the Table 1 sphere (diameter 1, l = 0.1) at h = 0.01 and 0.005, and a
+torus, it runs the whole reconstruction with Device CPU and Device GPU and
+checks that: the GPU ran (DeviceUsed), both surfaces have the same vertices
+and triangles, every vertex within 0.05 h of the CPU's, both surfaces closed
+(each edge in two triangles) with the Euler characteristic of two sheets
+(4 for the sphere's two spheres, 0 for the torus's two tori); and, for the
+sphere, the inner sheet's error against the radius 0.4 at or below the
+paper's Table 1 (max 1.307e-3 and 3.723e-4, average 9.938e-4 and 2.173e-4).
+One line per case, then PASSED or FAILED; exit 1 on a failure.
+gpu-host runs the GPU back end's kernels through the host launcher: the
+same check on any machine (the host launcher gives the CPU's surface
+exactly).
+"""
+import argparse
+import math
+import sys
+import time
+
+import numpy as np
+
+import clouds  # the benchmarks' clouds (numpy only)
+from core_stages import load_core
+
+# Table 1 (sphere, l = 0.1): h -> (max error, average error) on the inner sheet.
+TABLE1 = {0.01: (1.307e-3, 9.938e-4), 0.005: (3.723e-4, 2.173e-4)}
+
+
+def torus_points(n, big, small):
+    around = int(math.sqrt(n * big / small))
+    tube = max(3, n // around)
+    u = 2 * np.pi * np.arange(around)[:, None] / around
+    v = 2 * np.pi * (np.arange(tube)[None, :] + 0.5 * (np.arange(around)[:, None] % 2)) / tube
+    x = (big + small * np.cos(v)) * np.cos(u)
+    y = (big + small * np.cos(v)) * np.sin(u)
+    z = small * np.sin(v) + 0 * u
+    return np.ascontiguousarray(np.stack([x.ravel(), y.ravel(), z.ravel()], axis=1))
+
+
+def run(core, xyz, offset, spacing, device):
+    settings = core.Settings()
+    settings.OffsetDistance = offset
+    settings.SampleSpacing = spacing
+    settings.OutputVolume = False
+    settings.Device = core.ComputeDevice.CPU if device == "cpu" else core.ComputeDevice.GPU
+    settings.DeviceOnHost = device == "gpu-host"
+    reconstruction = core.Reconstruction(settings)
+    sink = core.MeshSink()
+    start = time.perf_counter()
+    outcome = reconstruction.Reconstruct(xyz, None, sink)
+    seconds = time.perf_counter() - start
+    if outcome.Error:
+        raise RuntimeError("%s: %s" % (device, outcome.Error))
+    points, _, triangles = sink.Take()
+    return reconstruction, np.asarray(points), np.asarray(triangles), seconds
+
+
+def euler(points, triangles):
+    """(closed, V - E + F) of a triangle mesh."""
+    edges = np.sort(np.concatenate([triangles[:, [0, 1]], triangles[:, [1, 2]], triangles[:, [2, 0]]]), axis=1)
+    unique, counts = np.unique(edges, axis=0, return_counts=True)
+    return bool(len(counts) and np.all(counts == 2)), len(points) - len(unique) + len(triangles)
+
+
+def check(core, name, xyz, offset, spacing, device, chi, radius=None):
+    try:
+        return compare(core, name, xyz, offset, spacing, device, chi, radius)
+    except RuntimeError as error:
+        print("%s: FAILED: %s" % (name, error), flush=True)
+        return False
+
+
+def compare(core, name, xyz, offset, spacing, device, chi, radius):
+    failures = []
+    cpu_run, cpu_points, cpu_triangles, cpu_seconds = run(core, xyz, offset, spacing, "cpu")
+    gpu_run, gpu_points, gpu_triangles, gpu_seconds = run(core, xyz, offset, spacing, device)
+    expected = {"gpu": "GPU", "gpu-host": "GPU on the host"}[device]
+    if gpu_run.DeviceUsed() != expected:
+        failures.append("DeviceUsed %r, not %r" % (gpu_run.DeviceUsed(), expected))
+    apart = float("nan")
+    if len(gpu_points) != len(cpu_points) or len(gpu_triangles) != len(cpu_triangles):
+        failures.append("%d vertices and %d triangles, the CPU's %d and %d" % (
+            len(gpu_points), len(gpu_triangles), len(cpu_points), len(cpu_triangles)))
+    else:
+        apart = float(np.max(np.linalg.norm(gpu_points - cpu_points, axis=1))) / spacing if len(cpu_points) else 0.0
+        if not apart <= 0.05:
+            failures.append("a vertex %.3g h from the CPU's" % apart)
+    for who, points, triangles in (("GPU", gpu_points, gpu_triangles), ("CPU", cpu_points, cpu_triangles)):
+        closed, characteristic = euler(points, triangles)
+        if not closed or characteristic != chi:
+            failures.append("the %s's surface: closed %s, V - E + F = %d (want %d)" % (
+                who, closed, characteristic, chi))
+    errors = ""
+    if radius is not None:
+        r = np.linalg.norm(gpu_points, axis=1)
+        inner = r < radius + offset / 2  # the inner sheet, near radius - l
+        error = np.abs(r[inner] - (radius - offset))
+        table = TABLE1.get(spacing)
+        errors = ", inner sheet error max %.3e average %.3e" % (error.max(), error.mean())
+        if table and (error.max() > table[0] or error.mean() > table[1]):
+            errors += " (Table 1: %.3e, %.3e)" % table
+            failures.append("the inner sheet's error exceeds Table 1's")
+    print("%s: %d band nodes, %d vertices, the farthest %.3g h from the CPU's%s; whole run %.3f s (%s), "
+          "%.3f s (CPU); evolution %.3f s and %.3f s; GPU memory %.0f MB: %s" % (
+              name, gpu_run.NumberOfBandNodes(), len(gpu_points), apart, errors, gpu_seconds, expected,
+              cpu_seconds, gpu_run.EvolutionSeconds(), cpu_run.EvolutionSeconds(), gpu_run.DeviceBytes() / 2 ** 20,
+              "; ".join(failures) or "ok"), flush=True)
+    return not failures
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--device", default="gpu", choices=["gpu", "gpu-host"])
+    args = parser.parse_args()
+    core = load_core()
+    center = (0.0, 0.0, 0.0)
+    ok = True
+    for h in (0.01, 0.005):
+        n = int(30000 * (0.01 / h) ** 2)
+        sphere = np.ascontiguousarray(clouds.nvclouds.sphere_points(n, 0.5, center))
+        ok &= check(core, "sphere (Table 1), h = %g" % h, sphere, 0.1, h, args.device, chi=4, radius=0.5)
+    ok &= check(core, "torus", torus_points(40000, 0.6, 0.25), 0.08, 0.01, args.device, chi=0)
+    print("gpu_check.py: %s" % ("PASSED" if ok else "FAILED"), flush=True)
+    sys.exit(0 if ok else 1)
+
+
+if __name__ == "__main__":
+    main()
