@@ -133,18 +133,18 @@ private:
 /// D on the nodes inside S (the outer phi > 0) up to `cap`, and outside S
 /// near the sheet; `cap` elsewhere. Each vertex of the sheet gives the nodes
 /// within two cells of it their distance to it; from those, the nearest
-/// vertex moves inward node by node (nearest first, to the 26 neighbours: a
-/// closest-point propagation), as a node's nearest vertex is, but for rare
-/// ties, its neighbours' nearest.
+/// vertex moves inward node by node, to the 26 neighbours, nearest first (a
+/// closest-point propagation: a node's nearest vertex is, but for rare
+/// ties, one of its neighbours'). "Nearest first" by buckets h / 8 wide
+/// (Dial's queue): within a bucket the order is the order of arrival, which
+/// the sweep of each bucket keeps, so the result is the same on every run.
 std::vector<float> SheetDistance(const Grid& grid, const float* outer, const std::vector<double>& sheet, double cap)
 {
   const std::int64_t nodes = grid.NumberOfNodes();
   std::vector<float> distance(static_cast<std::size_t>(nodes), static_cast<float>(cap));
   std::vector<std::int32_t> nearest(static_cast<std::size_t>(nodes), -1);
   const double h = grid.Spacing;
-  auto position = [&](std::int64_t n, double x[3]) {
-    std::int64_t ijk[3];
-    grid.Ijk(n, ijk);
+  auto position = [&](const std::int64_t ijk[3], double x[3]) {
     for (int a = 0; a < 3; ++a)
     {
       x[a] = grid.Origin[a] + static_cast<double>(ijk[a]) * h;
@@ -164,15 +164,16 @@ std::vector<float> SheetDistance(const Grid& grid, const float* outer, const std
       low[a] = std::max<std::int64_t>(0, c - 1);
       high[a] = std::min(grid.Dims[a] - 1, c + 2);
     }
-    for (std::int64_t k = low[2]; k <= high[2]; ++k)
+    std::int64_t ijk[3];
+    for (ijk[2] = low[2]; ijk[2] <= high[2]; ++ijk[2])
     {
-      for (std::int64_t j = low[1]; j <= high[1]; ++j)
+      for (ijk[1] = low[1]; ijk[1] <= high[1]; ++ijk[1])
       {
-        for (std::int64_t i = low[0]; i <= high[0]; ++i)
+        for (ijk[0] = low[0]; ijk[0] <= high[0]; ++ijk[0])
         {
-          const std::int64_t n = grid.Index(i, j, k);
+          const std::int64_t n = grid.Index(ijk[0], ijk[1], ijk[2]);
           double x[3];
-          position(n, x);
+          position(ijk, x);
           const double d = std::sqrt(squared(x, static_cast<std::int32_t>(v)));
           if (d < distance[n])
           {
@@ -183,54 +184,67 @@ std::vector<float> SheetDistance(const Grid& grid, const float* outer, const std
       }
     }
   }
-  using Entry = std::pair<float, std::int64_t>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+  const double width = h / 8.0;
+  const std::size_t buckets = static_cast<std::size_t>(cap / width) + 2;
+  using Entry = std::pair<std::int64_t, float>; // a node, its distance when queued
+  std::vector<std::vector<Entry>> queue(buckets);
+  auto bucket = [&](double d) { return std::min(buckets - 1, static_cast<std::size_t>(d / width)); };
   for (std::int64_t n = 0; n < nodes; ++n)
   {
     if (nearest[n] >= 0 && outer[n] > 0.0f)
     {
-      queue.emplace(distance[n], n);
+      queue[bucket(distance[n])].emplace_back(n, distance[n]);
     }
   }
-  while (!queue.empty())
+  for (std::size_t b = 0; b < buckets; ++b)
   {
-    const Entry top = queue.top();
-    queue.pop();
-    const std::int64_t n = top.second;
-    if (top.first > distance[n])
+    // The bucket grows while it is swept: a neighbour can come out nearer
+    // than this bucket's lower end (by at most a cell's diagonal), and is
+    // swept in it then.
+    for (std::size_t e = 0; e < queue[b].size(); ++e)
     {
-      continue; // an older entry
-    }
-    std::int64_t ijk[3];
-    grid.Ijk(n, ijk);
-    for (int dk = -1; dk <= 1; ++dk)
-    {
-      for (int dj = -1; dj <= 1; ++dj)
+      const std::int64_t n = queue[b][e].first;
+      if (distance[n] < queue[b][e].second)
       {
-        for (int di = -1; di <= 1; ++di)
+        continue; // queued again since, nearer
+      }
+      std::int64_t ijk[3];
+      grid.Ijk(n, ijk);
+      const std::int32_t v = nearest[n];
+      std::int64_t around[3];
+      for (around[2] = std::max<std::int64_t>(0, ijk[2] - 1); around[2] <= std::min(grid.Dims[2] - 1, ijk[2] + 1);
+           ++around[2])
+      {
+        for (around[1] = std::max<std::int64_t>(0, ijk[1] - 1); around[1] <= std::min(grid.Dims[1] - 1, ijk[1] + 1);
+             ++around[1])
         {
-          const std::int64_t i = ijk[0] + di, j = ijk[1] + dj, k = ijk[2] + dk;
-          if (i < 0 || j < 0 || k < 0 || i >= grid.Dims[0] || j >= grid.Dims[1] || k >= grid.Dims[2])
+          for (around[0] = std::max<std::int64_t>(0, ijk[0] - 1);
+               around[0] <= std::min(grid.Dims[0] - 1, ijk[0] + 1); ++around[0])
           {
-            continue;
-          }
-          const std::int64_t m = grid.Index(i, j, k);
-          if (!(outer[m] > 0.0f))
-          {
-            continue;
-          }
-          double x[3];
-          position(m, x);
-          const float d = static_cast<float>(std::sqrt(squared(x, nearest[n])));
-          if (d < distance[m] && d < cap)
-          {
-            distance[m] = d;
-            nearest[m] = nearest[n];
-            queue.emplace(d, m);
+            const std::int64_t m = grid.Index(around[0], around[1], around[2]);
+            if (!(outer[m] > 0.0f) || nearest[m] == v)
+            {
+              continue;
+            }
+            double x[3];
+            position(around, x);
+            const double d2 = squared(x, v);
+            const double now = distance[m];
+            if (d2 < now * now)
+            {
+              const float d = static_cast<float>(std::sqrt(d2));
+              if (d < distance[m] && d < cap)
+              {
+                distance[m] = d;
+                nearest[m] = v;
+                queue[std::max(b, bucket(d))].emplace_back(m, d);
+              }
+            }
           }
         }
       }
     }
+    std::vector<Entry>().swap(queue[b]);
   }
   return distance;
 }
@@ -327,17 +341,39 @@ private:
   std::vector<float> Stored;         ///< their nodes' values, BrickNodes each
 };
 
+/// D at a place, trilinear between the nodes of its cell.
+double DistanceAt(const Grid& grid, const std::vector<float>& distance, const double x[3])
+{
+  std::int64_t c[3];
+  double t[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    const double u = (x[a] - grid.Origin[a]) / grid.Spacing;
+    c[a] = std::min(grid.Dims[a] - 2, std::max<std::int64_t>(0, static_cast<std::int64_t>(std::floor(u))));
+    t[a] = std::min(1.0, std::max(0.0, u - static_cast<double>(c[a])));
+  }
+  double value = 0.0;
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const int di = corner & 1, dj = (corner >> 1) & 1, dk = corner >> 2;
+    const double weight = (di ? t[0] : 1.0 - t[0]) * (dj ? t[1] : 1.0 - t[1]) * (dk ? t[2] : 1.0 - t[2]);
+    value += weight * distance[grid.Index(c[0] + di, c[1] + dj, c[2] + dk)];
+  }
+  return value;
+}
+
 /// The least distance from a vertex of the inner surface (D > l + w / 2)
 /// to a vertex of the outer surface; 0 without an inner surface.
-double MinimumWall(const Grid& grid, const SurfaceArrays& part, const NearestPoints& sheet, double offset, double wall)
+double MinimumWall(const Grid& grid, const SurfaceArrays& part, const std::vector<float>& distance, double offset,
+  double wall)
 {
   const std::int64_t n = part.NumberOfPoints;
   std::vector<char> inner(static_cast<std::size_t>(n), 0);
-  const double split = offset + 0.5 * wall, cap = offset + 2.0 * wall + 4.0 * grid.Spacing;
+  const double split = offset + 0.5 * wall;
   ParallelFor(0, n, 1024, [&](std::int64_t begin, std::int64_t end) {
     for (std::int64_t p = begin; p < end; ++p)
     {
-      inner[p] = sheet.Distance(part.Points + 3 * p, cap) > split;
+      inner[p] = DistanceAt(grid, distance, part.Points + 3 * p) > split;
     }
   });
   std::vector<double> outerPoints, innerPoints;
@@ -379,11 +415,9 @@ bool MakePart(const Grid& grid, const Parameters& parameters, const float* outer
   {
     return false;
   }
-  const NearestPoints sheetPoints(sheet.Points.data(), static_cast<std::int64_t>(sheet.Points.size() / 3));
   // The part's surfaces, f = 0.
-  std::vector<float> distance = SheetDistance(grid, outer, sheet.Points, l + wall + 4.0 * grid.Spacing);
+  const std::vector<float> distance = SheetDistance(grid, outer, sheet.Points, l + wall + 4.0 * grid.Spacing);
   const PartField part(grid, outer, distance, l, wall);
-  decltype(distance)().swap(distance);
   if (!ContourBricks(grid, part, sink, 0, -1, monitor))
   {
     return false;
@@ -404,7 +438,7 @@ bool MakePart(const Grid& grid, const Parameters& parameters, const float* outer
   report.KeptCavities = removed.Cavities;
   report.RemovedCavities = removed.Voids;
   report.RemovedPieces = removed.Pieces;
-  report.MinimumWallThickness = report.KeptCavities > 0 ? MinimumWall(grid, arrays, sheetPoints, l, wall) : 0.0;
+  report.MinimumWallThickness = report.KeptCavities > 0 ? MinimumWall(grid, arrays, distance, l, wall) : 0.0;
   for (std::int64_t p = 0; p < arrays.NumberOfPoints; ++p)
   {
     for (int a = 0; a < 3; ++a)
