@@ -34,8 +34,87 @@
 #include <chrono>
 #include <cstring>
 #include <memory>
+#include <utility>
 
 vtkStandardNewMacro(vtkNarrowVolumeReconstruction);
+
+//------------------------------------------------------------------------------
+// The properties' Set/Get (declared one per line in the header) over the
+// fields of the core's settings, for every row of the property table
+// (NV_SETTINGS); a setter clamps as the table says (NV_SETTINGS_RANGES).
+namespace
+{
+/// A property's name as a type (Range<PropertyName>).
+#define NV_TAG(Type, Name, Default) struct Name##Property;
+NV_SETTINGS(NV_TAG)
+#undef NV_TAG
+
+/// The range a property's setter clamps to: none, unless the table gives one.
+template <class Property>
+struct Range
+{
+  static constexpr bool Clamped = false;
+  static constexpr double Low = 0.0, High = 0.0;
+};
+#define NV_RANGE(Name, LowValue, HighValue)                                                        \
+  template <>                                                                                      \
+  struct Range<Name##Property>                                                                     \
+  {                                                                                                \
+    static constexpr bool Clamped = true;                                                          \
+    static constexpr double Low = LowValue, High = HighValue;                                      \
+  };
+NV_SETTINGS_RANGES(NV_RANGE)
+#undef NV_RANGE
+
+/// value clamped to Property's range, as vtkSetClampMacro clamps.
+template <class Property, class T>
+T Clamp(T value)
+{
+  if constexpr (Range<Property>::Clamped)
+  {
+    if (value < Range<Property>::Low)
+    {
+      return static_cast<T>(Range<Property>::Low);
+    }
+    if (value > Range<Property>::High)
+    {
+      return static_cast<T>(Range<Property>::High);
+    }
+  }
+  return value;
+}
+
+/// Stores value in field; whether it changed (the filter is then Modified).
+template <class Field, class T>
+bool Store(Field& field, T value)
+{
+  const Field stored = static_cast<Field>(value);
+  if (field != stored)
+  {
+    field = stored;
+    return true;
+  }
+  return false;
+}
+} // namespace
+
+#define NV_ACCESSORS(Type, Name, Default)                                                          \
+  void vtkNarrowVolumeReconstruction::Set##Name(                                                   \
+    decltype(std::declval<const vtkNarrowVolumeReconstruction&>().Get##Name()) value)              \
+  {                                                                                                \
+    if (Store(this->Settings->Name, Clamp<Name##Property>(value)))                                 \
+    {                                                                                              \
+      this->Modified();                                                                            \
+    }                                                                                              \
+  }                                                                                                \
+  decltype(std::declval<const vtkNarrowVolumeReconstruction&>().Get##Name())                       \
+    vtkNarrowVolumeReconstruction::Get##Name() const                                               \
+  {                                                                                                \
+    return static_cast<decltype(std::declval<const vtkNarrowVolumeReconstruction&>().Get##Name())>( \
+      this->Settings->Name);                                                                       \
+  }
+NV_SETTINGS(NV_ACCESSORS)
+#undef NV_ACCESSORS
 
 namespace
 {
@@ -144,12 +223,8 @@ struct vtkNarrowVolumeReconstruction::DenseArrays
 
 //------------------------------------------------------------------------------
 vtkNarrowVolumeReconstruction::vtkNarrowVolumeReconstruction()
+  : Settings(new nv::Settings()) // the property table's defaults
 {
-  // The properties' defaults are the core's (the property table's).
-  const nv::Settings defaults;
-#define NV_DEFAULT(Type, Name, Default) this->Name = static_cast<decltype(this->Name)>(defaults.Name);
-  NV_SETTINGS(NV_DEFAULT)
-#undef NV_DEFAULT
   this->SetNumberOfInputPorts(1);
   this->SetNumberOfOutputPorts(2);
   this->SetController(vtkMultiProcessController::GetGlobalController());
@@ -232,15 +307,6 @@ bool vtkNarrowVolumeReconstruction::IsDistributed(vtkInformationVector* outputVe
     }
   }
   return false;
-}
-
-nv::Settings vtkNarrowVolumeReconstruction::GetSettings() const
-{
-  nv::Settings settings;
-#define NV_COPY(Type, Name, Default) settings.Name = static_cast<Type>(this->Name);
-  NV_SETTINGS(NV_COPY)
-#undef NV_COPY
-  return settings;
 }
 
 //------------------------------------------------------------------------------
@@ -474,7 +540,7 @@ void vtkNarrowVolumeReconstruction::MakeVolume(
   volume->SetOrigin(grid.Origin[0], grid.Origin[1], grid.Origin[2]);
   volume->SetSpacing(grid.Spacing, grid.Spacing, grid.Spacing);
   volume->SetExtent(0, nx, 0, ny, static_cast<int>(outcome.VolumeBegin), static_cast<int>(outcome.VolumeEnd - 1));
-  if (!this->OutputVolume)
+  if (!this->Settings->OutputVolume)
   {
     return;
   }
@@ -553,7 +619,7 @@ std::shared_ptr<const nv::Sampling> vtkNarrowVolumeReconstruction::MeasureSampli
     auto sampling = std::make_shared<nv::Sampling>();
     bool complete = false;
     monitor.Stage(0.0, nv::SamplingStage);
-    nv::WithThreads(this->NumberOfThreads,
+    nv::WithThreads(this->Settings->NumberOfThreads,
       [&]() { complete = sampling->Measure(PointsOf(input), communicator, &monitor); });
     this->SamplingUnreported += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (measured)
@@ -578,7 +644,7 @@ std::shared_ptr<const nv::Sampling> vtkNarrowVolumeReconstruction::MeasureSampli
 void vtkNarrowVolumeReconstruction::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-#define NV_PRINT(Type, Name, Default) os << indent << #Name ": " << this->Name << "\n";
+#define NV_PRINT(Type, Name, Default) os << indent << #Name ": " << this->Get##Name() << "\n";
   NV_SETTINGS(NV_PRINT)
 #undef NV_PRINT
   os << indent << "Controller: " << this->Controller << "\n";

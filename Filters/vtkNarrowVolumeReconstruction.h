@@ -86,6 +86,23 @@ class vtkMultiProcessController;
 class vtkPointSet;
 class vtkPolyData;
 
+// Set/Get of a property over its field of the core's settings (the filter's
+// nv::Settings), as vtkSetMacro/vtkGetMacro declare them over a member; the
+// definitions, made for every property from the property table, are in the
+// .cxx. A switch adds <name>On/Off (vtkBooleanMacro); a clamped value, its
+// range (vtkSetClampMacro: the setter clamps to the table's range).
+#define vtkNarrowVolumeSettingMacro(name, type)                                                     \
+  virtual void Set##name(type value);                                                                 \
+  virtual type Get##name() const
+#define vtkNarrowVolumeSwitchMacro(name)                                                            \
+  virtual void name##On() { this->Set##name(true); }                                                 \
+  virtual void name##Off() { this->Set##name(false); }                                               \
+  vtkNarrowVolumeSettingMacro(name, bool)
+#define vtkNarrowVolumeClampMacro(name, type, low, high)                                            \
+  virtual type Get##name##MinValue() { return low; }                                                 \
+  virtual type Get##name##MaxValue() { return high; }                                                \
+  vtkNarrowVolumeSettingMacro(name, type)
+
 class NARROWVOLUMEFILTERS_EXPORT vtkNarrowVolumeReconstruction : public vtkAlgorithm
 {
 public:
@@ -111,160 +128,7 @@ public:
     EQUATION_3 = 3, ///< g = 1 - phi0^2
     EQUATION_4 = 4  ///< g = (1 - |phi0|) |phi0|
   };
-
-  ///@{
-  /**
-   * Offset distance l in world units: the half-thickness of the shell, the
-   * distance of both phi = 0 sheets from the points. 0 (the default) chooses
-   * it from the cloud: l = max(1.5 m, q), where m is the median and q the
-   * 99.9th percentile of the distances from each point to its nearest
-   * neighbour (at least 4 h when the grid is capped, see SampleSpacing).
-   * GetOffsetDistanceUsed() tells the value of the last run.
-   */
-  vtkSetMacro(OffsetDistance, double);
-  vtkGetMacro(OffsetDistance, double);
-  ///@}
-
-  ///@{
-  /**
-   * Bridge the holes of the sampling (default on). A hole is an empty disc
-   * on the sampled surface wider than l (radius): the shell's wall is
-   * pierced there, and one such tunnel joins its outer and inner sheets.
-   * Holes up to ClosingRadius are filled with points before the distance is
-   * computed, so that the wall over them stays at least 0.66 l thick on each
-   * side; wider openings (a scan's border, the mouth of a cup, an open base)
-   * are left open and reported. Concavities are not filled. Off: the points
-   * as given (the paper's method).
-   */
-  vtkSetMacro(CloseGaps, bool);
-  vtkGetMacro(CloseGaps, bool);
-  vtkBooleanMacro(CloseGaps, bool);
-  ///@}
-
-  ///@{
-  /**
-   * The widest hole bridged, as the radius of its empty disc, in world
-   * units; 0 (the default): 3 l. GetClosingRadiusUsed() tells the value of
-   * the last run (0 with CloseGaps off).
-   */
-  vtkSetMacro(ClosingRadius, double);
-  vtkGetMacro(ClosingRadius, double);
-  ///@}
-
-  ///@{
-  /**
-   * Grid spacing h in world units. When <= 0 (the default), h comes from
-   * MaximumDimension, or, when that is 0 too, h = l / 4 (the paper's ratio)
-   * with at most 320 cells along the longest side of the padded box.
-   * GetSampleSpacingUsed() tells the value of the last run.
-   */
-  vtkSetMacro(SampleSpacing, double);
-  vtkGetMacro(SampleSpacing, double);
-  ///@}
-
-  ///@{
-  /**
-   * Number of cells along the longest side of the padded box when
-   * SampleSpacing <= 0 (at least 16); 0 (the default): h follows l, see
-   * SampleSpacing.
-   */
-  vtkSetClampMacro(MaximumDimension, int, 0, 100000);
-  vtkGetMacro(MaximumDimension, int);
-  ///@}
-
-  ///@{
-  /**
-   * xi = eps_m with m = XiCells (eq. 2): the width of the initial profile, and
-   * of the band, 2 m cells. Larger values close small holes and thin gaps.
-   * Range [1, 64] (below 1 cell the band's Dirichlet rule, eq. 5, no longer
-   * holds); other values are refused when the filter runs. Default 2 (the paper's).
-   */
-  vtkSetMacro(XiCells, double);
-  vtkGetMacro(XiCells, double);
-  ///@}
-
-  ///@{
-  /**
-   * eps = eps_m with m = EpsilonCells (eq. 1, 12): the interface width of the
-   * Allen-Cahn evolution. Larger values smooth more. Range [0.5, 256]; other
-   * values are refused when the filter runs. Default 6 (the paper's).
-   */
-  vtkSetMacro(EpsilonCells, double);
-  vtkGetMacro(EpsilonCells, double);
-  ///@}
-
-  ///@{
-  /**
-   * Time step dt. When <= 0 (the default), dt = eps^2 (the paper's).
-   */
-  vtkSetMacro(TimeStep, double);
-  vtkGetMacro(TimeStep, double);
-  ///@}
-
-  ///@{
-  /**
-   * Largest number of time steps. Default 3: see ConvergenceTolerance.
-   */
-  vtkSetClampMacro(MaximumNumberOfIterations, int, 0, 100000);
-  vtkGetMacro(MaximumNumberOfIterations, int);
-  ///@}
-
-  ///@{
-  /**
-   * Stop when ||phi^{n+1} - phi^n||_2 / ||phi^n||_2 over the updated nodes
-   * drops below this value (the paper's rule, section 4, with 1e-5). 0 runs
-   * exactly MaximumNumberOfIterations steps. Default 0: the documentation
-   * (doc/explanation/choices.md, the stopping rule) says why the default
-   * stopping rule is a fixed number of steps.
-   */
-  vtkSetClampMacro(ConvergenceTolerance, double, 0.0, 1.0);
-  vtkGetMacro(ConvergenceTolerance, double);
-  ///@}
-
-  ///@{
-  /**
-   * Tolerance of the Gauss-Seidel iteration of the implicit step (10): sweeps
-   * stop when no node changes by this much or more. Default 1e-6 (the paper's).
-   */
-  vtkSetClampMacro(GaussSeidelTolerance, double, 1e-14, 1.0);
-  vtkGetMacro(GaussSeidelTolerance, double);
-  ///@}
-
-  ///@{
-  /**
-   * Where the scheme runs: NARROW_BAND (default), only on band nodes; or
-   * WHOLE_DOMAIN, on every node of the grid, for comparison.
-   */
-  vtkSetClampMacro(Domain, int, NARROW_BAND, WHOLE_DOMAIN);
-  vtkGetMacro(Domain, int);
-  void SetDomainToNarrowBand() { this->SetDomain(NARROW_BAND); }
-  void SetDomainToWholeDomain() { this->SetDomain(WHOLE_DOMAIN); }
-  ///@}
-
-  ///@{
-  /**
-   * Edge-stopping function g: EQUATION_4 (default), (1 - |phi0|) |phi0|; or
-   * EQUATION_3, 1 - phi0^2.
-   */
-  vtkSetClampMacro(EdgeStoppingFunction, int, EQUATION_3, EQUATION_4);
-  vtkGetMacro(EdgeStoppingFunction, int);
-  void SetEdgeStoppingFunctionToEquation3() { this->SetEdgeStoppingFunction(EQUATION_3); }
-  void SetEdgeStoppingFunctionToEquation4() { this->SetEdgeStoppingFunction(EQUATION_4); }
-  ///@}
-
-  ///@{
-  /**
-   * Keep the sheets at the offset distance while they are smoothed: after
-   * each step, the local mean translation of the sheets (their drift by
-   * mean-curvature motion) is cancelled, so that 10 to 20 steps smooth noise
-   * and sampling wrinkles without shrinking curved parts. Off (default):
-   * exactly the paper's scheme. Costs about a third of a step more.
-   */
-  vtkSetMacro(PreserveOffset, bool);
-  vtkGetMacro(PreserveOffset, bool);
-  vtkBooleanMacro(PreserveOffset, bool);
-  ///@}
-
+  /// Which sheets the surface output holds (SetSheets).
   enum SheetsType
   {
     BOTH_SHEETS = 0,
@@ -274,108 +138,62 @@ public:
 
   ///@{
   /**
-   * Which phi = 0 sheets the surface output holds: BOTH_SHEETS (default);
-   * OUTER_SHEET, the one facing the outside (for a closed input, its dilation
-   * by OffsetDistance); or INNER_SHEETS, those facing cavities enclosed by the
-   * shell (its erosion). An open input (a one-sided scan) has only an outer
-   * sheet. Choosing one sheet needs the dense grid even when OutputVolume is off.
+   * The properties of the method, one per line, in the panel's order. What
+   * each means, its unit, default and range: the parameter reference
+   * (doc/reference/parameters.md, made from the property table,
+   * Python/_properties.py, as are ParaView's tooltips). Each line declares
+   * Set<Name> and Get<Name>, and as VTK's macros do, <Name>On and <Name>Off
+   * for a switch (vtkNarrowVolumeSwitchMacro), Get<Name>MinValue and
+   * Get<Name>MaxValue for a value the setter clamps
+   * (vtkNarrowVolumeClampMacro). The values live in the core's settings
+   * (nv::Settings, whose fields and defaults the table makes), which the
+   * filter hands to the core as they are; the test PythonApi checks the
+   * names, defaults and ranges here against the table. An enumerated
+   * property also has a setter per value (SetSheetsToOuter) and the class's
+   * constants (OUTER_SHEET) below.
    */
-  vtkSetClampMacro(Sheets, int, BOTH_SHEETS, INNER_SHEETS);
-  vtkGetMacro(Sheets, int);
-  void SetSheetsToBoth() { this->SetSheets(BOTH_SHEETS); }
-  void SetSheetsToOuter() { this->SetSheets(OUTER_SHEET); }
-  void SetSheetsToInner() { this->SetSheets(INNER_SHEETS); }
+  vtkNarrowVolumeSettingMacro(OffsetDistance, double);
+  vtkNarrowVolumeSwitchMacro(CloseGaps);
+  vtkNarrowVolumeSettingMacro(ClosingRadius, double);
+  vtkNarrowVolumeSettingMacro(SampleSpacing, double);
+  vtkNarrowVolumeClampMacro(MaximumDimension, int, 0, 100000);
+  vtkNarrowVolumeSettingMacro(XiCells, double);
+  vtkNarrowVolumeSettingMacro(EpsilonCells, double);
+  vtkNarrowVolumeClampMacro(EdgeStoppingFunction, int, EQUATION_3, EQUATION_4);
+  vtkNarrowVolumeClampMacro(Domain, int, NARROW_BAND, WHOLE_DOMAIN);
+  vtkNarrowVolumeClampMacro(MaximumNumberOfIterations, int, 0, 100000);
+  vtkNarrowVolumeSwitchMacro(PreserveOffset);
+  vtkNarrowVolumeClampMacro(ConvergenceTolerance, double, 0.0, 1.0);
+  vtkNarrowVolumeSettingMacro(TimeStep, double);
+  vtkNarrowVolumeClampMacro(GaussSeidelTolerance, double, 1e-14, 1.0);
+  vtkNarrowVolumeClampMacro(NumberOfThreads, int, 0, 1024);
+  vtkNarrowVolumeClampMacro(MemoryLimit, double, 0.0, 1e12);
+  vtkNarrowVolumeClampMacro(Device, int, DEVICE_AUTOMATIC, DEVICE_GPU);
+  vtkNarrowVolumeClampMacro(Sheets, int, BOTH_SHEETS, INNER_SHEETS);
+  vtkNarrowVolumeSwitchMacro(RemoveSmallPieces);
+  vtkNarrowVolumeSwitchMacro(OutputVolume);
+  vtkNarrowVolumeSwitchMacro(OutputInitialPhi);
+  vtkNarrowVolumeSwitchMacro(OutputDistance);
+  vtkNarrowVolumeSwitchMacro(OutputNarrowBand);
+  vtkNarrowVolumeSettingMacro(WallThickness, double);
+  vtkNarrowVolumeSettingMacro(MinimumCavityVolume, double);
   ///@}
 
   ///@{
   /**
-   * Whether output port 0 carries the phase field on the grid. Off: the
-   * volume output keeps only its geometry (origin, spacing, extent) and the
-   * surface is extracted slab by slab, so memory follows the band and not
-   * the box. The extra arrays below need the volume. Default on.
+   * The enumerated properties by their values' names (EdgeStoppingFunction,
+   * Domain, Device, Sheets: see the parameter reference).
    */
-  vtkSetMacro(OutputVolume, bool);
-  vtkGetMacro(OutputVolume, bool);
-  vtkBooleanMacro(OutputVolume, bool);
-  ///@}
-
-  ///@{
-  /**
-   * Whether to remove the small pieces of the shell: loose pieces smaller than
-   * a ball of radius 2 l (the balls around lone points) and voids inside the
-   * wall smaller than a ball of radius l. Field data "RemovedPieces" and
-   * "RemovedVoids" count them. Not applied in a distributed run (a piece may
-   * span processes). Default on.
-   */
-  vtkSetMacro(RemoveSmallPieces, bool);
-  vtkGetMacro(RemoveSmallPieces, bool);
-  vtkBooleanMacro(RemoveSmallPieces, bool);
-  ///@}
-
-  ///@{
-  /**
-   * Extra point arrays on output port 0: "InitialPhi" (phi0 of eq. 2),
-   * "Distance" (the truncated distance of eq. 6) and "NarrowBand" (1 on band
-   * nodes). All off by default.
-   */
-  vtkSetMacro(OutputInitialPhi, bool);
-  vtkGetMacro(OutputInitialPhi, bool);
-  vtkBooleanMacro(OutputInitialPhi, bool);
-  vtkSetMacro(OutputDistance, bool);
-  vtkGetMacro(OutputDistance, bool);
-  vtkBooleanMacro(OutputDistance, bool);
-  vtkSetMacro(OutputNarrowBand, bool);
-  vtkGetMacro(OutputNarrowBand, bool);
-  vtkBooleanMacro(OutputNarrowBand, bool);
-  ///@}
-
-  ///@{
-  /**
-   * Printing: above 0, the Surface output is a hollow part to print, its
-   * outer surface on the scan (the cloud's closing) and its inner surface
-   * WallThickness inside it (world units); 0 (default): the shell. Cavities
-   * below MinimumCavityVolume (0: 1 % of the largest) are merged into the
-   * wall. See the parameter reference.
-   */
-  vtkSetMacro(WallThickness, double);
-  vtkGetMacro(WallThickness, double);
-  vtkSetMacro(MinimumCavityVolume, double);
-  vtkGetMacro(MinimumCavityVolume, double);
-  ///@}
-
-  ///@{
-  /**
-   * Threads for the parallel loops; 0 (default) uses all cores.
-   */
-  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
-  vtkGetMacro(NumberOfThreads, int);
-  ///@}
-
-  ///@{
-  /**
-   * Largest memory, in MiB, that the filter may allocate for one run; a grid
-   * that needs more is refused before any large allocation. 0 (default) means
-   * half of the machine's physical memory.
-   */
-  vtkSetClampMacro(MemoryLimit, double, 0.0, 1e12);
-  vtkGetMacro(MemoryLimit, double);
-  ///@}
-
-  ///@{
-  /**
-   * Where the evolution (phi0, g and the time steps) runs: DEVICE_AUTOMATIC
-   * (default), for now the CPU; DEVICE_CPU, the CPU's threads; DEVICE_GPU,
-   * an NVIDIA GPU through CUDA (one process, PreserveOffset off), with the
-   * same scheme and stopping rule. DEVICE_GPU on a build without CUDA, or
-   * on a machine without a CUDA device, stops the run with an error that
-   * says which. The GPU back end has not yet run on a GPU, so Automatic
-   * stays on the CPU. Field data "DeviceUsed": 1 (CPU) or 2 (GPU).
-   */
-  vtkSetClampMacro(Device, int, DEVICE_AUTOMATIC, DEVICE_GPU);
-  vtkGetMacro(Device, int);
+  void SetEdgeStoppingFunctionToEquation3() { this->SetEdgeStoppingFunction(EQUATION_3); }
+  void SetEdgeStoppingFunctionToEquation4() { this->SetEdgeStoppingFunction(EQUATION_4); }
+  void SetDomainToNarrowBand() { this->SetDomain(NARROW_BAND); }
+  void SetDomainToWholeDomain() { this->SetDomain(WHOLE_DOMAIN); }
   void SetDeviceToAutomatic() { this->SetDevice(DEVICE_AUTOMATIC); }
   void SetDeviceToCPU() { this->SetDevice(DEVICE_CPU); }
   void SetDeviceToGPU() { this->SetDevice(DEVICE_GPU); }
+  void SetSheetsToBoth() { this->SetSheets(BOTH_SHEETS); }
+  void SetSheetsToOuter() { this->SetSheets(OUTER_SHEET); }
+  void SetSheetsToInner() { this->SetSheets(INNER_SHEETS); }
   ///@}
 
   ///@{
@@ -464,7 +282,7 @@ protected:
   /// Whether this request is one piece of a distributed run (see SetController).
   bool IsDistributed(vtkInformationVector* outputVector) const;
   /// The properties, as the core takes them.
-  nv::Settings GetSettings() const;
+  const nv::Settings& GetSettings() const { return *this->Settings; }
   /// The results of the last run (run null: none yet), for the Get...() methods.
   void KeepResults(const nv::Reconstruction* run, const nv::Outcome& outcome);
   /// A message of the core with the properties named as PanelLabelsInMessages says.
@@ -481,33 +299,8 @@ protected:
   std::shared_ptr<const nv::Sampling> MeasureSampling(
     vtkPointSet* input, nv::Communicator* communicator, nv::Monitor& monitor, bool* measured = nullptr);
 
-  // The properties: their defaults come from the core's nv::Settings (the
-  // property table, Python/_properties.py), set by the constructor.
-  double OffsetDistance;
-  bool CloseGaps;
-  double ClosingRadius;
-  double SampleSpacing;
-  int MaximumDimension;
-  double XiCells;
-  double EpsilonCells;
-  double TimeStep;
-  int MaximumNumberOfIterations;
-  double ConvergenceTolerance;
-  double GaussSeidelTolerance;
-  int Domain;
-  int EdgeStoppingFunction;
-  bool PreserveOffset;
-  int Sheets;
-  bool RemoveSmallPieces;
-  bool OutputVolume;
-  bool OutputInitialPhi;
-  bool OutputDistance;
-  bool OutputNarrowBand;
-  double WallThickness;
-  double MinimumCavityVolume;
-  int NumberOfThreads;
-  double MemoryLimit;
-  int Device;
+  // The properties, as the core takes them (defaults: the property table's).
+  std::unique_ptr<nv::Settings> Settings;
   vtkMultiProcessController* Controller = nullptr;
 
   vtkIdType NumberOfBandNodes = 0;

@@ -15,8 +15,9 @@ header is committed, and the PropertyTable test checks it):
 
 - the core's nv::Settings: its fields and their defaults
   (Filters/Core/Run/nvSettingsTable.h, read by nvSettings.h), which the VTK
-  filter copies (its constructor, GetSettings, PrintSelf) and the binding
-  binds (Python/nvBindings.cxx), field by field through one macro;
+  filter holds (its Set/Get are defined over the fields, clamped to the
+  table's ranges) and the binding binds (Python/nvBindings.cxx), field by
+  field through one macro;
 - the ParaView server-manager XML of the filter (_servermanager.py makes
   the whole proxy, for the compiled plugin and for the Python plugin);
 - the parameter reference (Markdown: the site's doc/reference/parameters.md),
@@ -26,8 +27,8 @@ header is committed, and the PropertyTable test checks it):
   docstrings, _filter.py), reconstruct()'s keywords and the command line's
   options (_cli.py).
 
-Adding a property: a row here, the core code that uses it, and its Set/Get
-(with its doc comment and its member) in Filters/vtkNarrowVolumeReconstruction.h,
+Adding a property: a row here, the core code that uses it, and its line
+(vtkNarrowVolumeSettingMacro and the like) in Filters/vtkNarrowVolumeReconstruction.h,
 as VTK's wrapping needs real declarations; then rewrite the summary table
 with `python3 cmake/generate-properties.py --readme doc/how-to/choose-parameters.md`. The tests
 check the table against the wrapped C++ class (PythonApi: names, defaults,

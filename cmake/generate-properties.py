@@ -72,6 +72,10 @@ def cpp_default(prop):
     return repr(float(prop.default)) if prop.kind is float else str(prop.default)
 
 
+def cpp_number(prop, value):
+    return repr(float(value)) if prop.kind is float else str(int(value))
+
+
 def header(table):
     lines = [
         "// SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers",
@@ -82,13 +86,22 @@ def header(table):
         "//",
         "// NV_SETTINGS(X) calls X(Type, Name, Default) for each property of the",
         "// filter, in the table's order: nv::Settings declares its fields with it",
-        "// (nvSettings.h), the VTK filter copies them, the binding binds them.",
+        "// (nvSettings.h), the VTK filter defines its Set/Get over them, the",
+        "// binding binds them.",
         "#ifndef nvSettingsTable_h",
         "#define nvSettingsTable_h",
         "",
         "#define NV_SETTINGS(X) \\",
     ]
     rows = ["  X(%s, %s, %s)" % (cpp_type(p), p.name, cpp_default(p)) for p in table.PROPERTIES]
+    lines += [row + " \\" for row in rows[:-1]] + [rows[-1], ""]
+    lines += [
+        "// NV_SETTINGS_RANGES(X) calls X(Name, Low, High) for each property whose",
+        "// setter clamps its value to [Low, High] (as vtkSetClampMacro).",
+        "#define NV_SETTINGS_RANGES(X) \\",
+    ]
+    rows = ["  X(%s, %s, %s)" % (p.name, cpp_number(p, p.low), cpp_number(p, p.high))
+            for p in table.PROPERTIES if p.low is not None]
     lines += [row + " \\" for row in rows[:-1]] + [rows[-1], ""]
     lines += [
         "// NV_PANEL_LABELS(X) calls X(Name, \"Label\") for each property: the VTK",

@@ -149,7 +149,8 @@ def test_consumer_blocks_match_the_consumer(blocks, source_dir):
     consumer = open(os.path.join(source_dir, "Testing", "Consumer", "CMakeLists.txt"), encoding="utf-8").read()
     header = open(os.path.join(source_dir, "Filters", "vtkNarrowVolumeReconstruction.h"), encoding="utf-8").read()
     declared = set(re.findall(r"\b(\w+)\(", header))
-    for macro, name in re.findall(r"vtk(Set|Get|SetClamp|Boolean|GetObject)Macro\((\w+)", header):
+    for macro, name in re.findall(r"vtk(Set|Get|SetClamp|Boolean|GetObject|NarrowVolumeSetting|NarrowVolumeSwitch"
+                                  r"|NarrowVolumeClamp)Macro\((\w+)", header):
         declared |= {"Set" + name, "Get" + name, name + "On", name + "Off"}
     declared |= {"SetInputData", "SetInputConnection", "GetOutputPort", "Update", "New"}
     checked = 0

@@ -90,6 +90,15 @@ def _signatures(declaration):
         if kind in ("vtkGetVector3Macro", "vtkGetVectorMacro"):
             size = args[2] if kind == "vtkGetVectorMacro" else "3"
             return ["%s* Get%s()" % (args[1], name), "void Get%s(%s data[%s])" % (name, args[1], size)], None
+        if kind in ("vtkNarrowVolumeSettingMacro", "vtkNarrowVolumeSwitchMacro", "vtkNarrowVolumeClampMacro"):
+            kind_type = "bool" if kind == "vtkNarrowVolumeSwitchMacro" else args[1]
+            out = ["void Set%s(%s value)" % (name, kind_type), "%s Get%s()" % (kind_type, name)]
+            if kind == "vtkNarrowVolumeSwitchMacro":
+                return out + ["void %sOn()" % name, "void %sOff()" % name], None
+            if kind == "vtkNarrowVolumeClampMacro":
+                return (out + ["%s Get%sMinValue()" % (kind_type, name), "%s Get%sMaxValue()" % (kind_type, name)],
+                        "Set%s clamps to [%s, %s]." % (name, args[2], args[3]))
+            return out, None
         if kind == "vtkGetObjectMacro":
             return ["%s* Get%s()" % (args[1], name)], None
         return [], None  # vtkTypeMacro and the like: no method of this class's own

@@ -4,10 +4,10 @@
 //
 // The fields, their types and defaults come from the property table,
 // Python/_properties.py, through NV_SETTINGS (nvSettingsTable.h, which
-// cmake/generate-properties.py writes into the build): one field per
+// cmake/generate-properties.py writes; committed): one field per
 // property, named as the property (OffsetDistance, Domain, Sheets, ...).
-// The VTK filter and the Python filter of the wheel both fill one from their
-// properties; a default-constructed one holds their defaults. The table
+// The VTK filter and the Python filter of the wheel both keep their
+// properties in one; a default-constructed one holds their defaults. The table
 // says what each means; the code that uses a field says how.
 #ifndef nvSettings_h
 #define nvSettings_h

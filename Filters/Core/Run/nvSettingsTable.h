@@ -6,7 +6,8 @@
 //
 // NV_SETTINGS(X) calls X(Type, Name, Default) for each property of the
 // filter, in the table's order: nv::Settings declares its fields with it
-// (nvSettings.h), the VTK filter copies them, the binding binds them.
+// (nvSettings.h), the VTK filter defines its Set/Get over them, the
+// binding binds them.
 #ifndef nvSettingsTable_h
 #define nvSettingsTable_h
 
@@ -36,6 +37,20 @@
   X(bool, OutputNarrowBand, false) \
   X(double, WallThickness, 0.0) \
   X(double, MinimumCavityVolume, 0.0)
+
+// NV_SETTINGS_RANGES(X) calls X(Name, Low, High) for each property whose
+// setter clamps its value to [Low, High] (as vtkSetClampMacro).
+#define NV_SETTINGS_RANGES(X) \
+  X(MaximumDimension, 0, 100000) \
+  X(EdgeStoppingFunction, 3, 4) \
+  X(Domain, 0, 1) \
+  X(MaximumNumberOfIterations, 0, 100000) \
+  X(ConvergenceTolerance, 0.0, 1.0) \
+  X(GaussSeidelTolerance, 1e-14, 1.0) \
+  X(NumberOfThreads, 0, 1024) \
+  X(MemoryLimit, 0.0, 1000000000000.0) \
+  X(Device, 0, 2) \
+  X(Sheets, 0, 2)
 
 // NV_PANEL_LABELS(X) calls X(Name, "Label") for each property: the VTK
 // filter's messages name the properties by their panel labels in ParaView.
