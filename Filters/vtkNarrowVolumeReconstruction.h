@@ -177,6 +177,8 @@ public:
   vtkNarrowVolumeSwitchMacro(OutputNarrowBand);
   vtkNarrowVolumeSettingMacro(WallThickness, double);
   vtkNarrowVolumeSettingMacro(MinimumCavityVolume, double);
+  vtkNarrowVolumeClampMacro(NumberOfDrainHoles, int, 0, 64);
+  vtkNarrowVolumeSettingMacro(DrainHoleDiameter, double);
   ///@}
 
   ///@{

@@ -229,6 +229,16 @@ PROPERTIES = (
         "With {WallThickness} above 0: cavities of the part smaller than this volume (world units cubed) are "
         "merged into the wall, so that no small sealed pocket traps resin or powder. 0 (the default): those "
         "smaller than 1 % of the largest cavity. The value used is in field data \"MinimumCavityVolume\"."),
+    Property(
+        "NumberOfDrainHoles", "Number Of Drain Holes", int, 0, 0, 64, (), None, "Printing", False, None,
+        "With {WallThickness} above 0: drill this many holes through the wall from each cavity, at its lowest "
+        "points along z (at least three diameters apart), so that resin or powder drains out; orient the "
+        "cloud with the part's bottom towards -z first. The holes are made on the field, so the surface stays "
+        "closed and manifold. 0 (the default): none. Field data \"DrainHoles\" counts those made."),
+    Property(
+        "DrainHoleDiameter", "Drain Hole Diameter", float, 0.0, None, None, (), None, "Printing", True, None,
+        "The drain holes' diameter in world units. 0 (the default): twice {WallThickness}, at least four grid "
+        "cells."),
 )
 
 BY_NAME = {p.name: p for p in PROPERTIES}
@@ -236,7 +246,7 @@ BY_NAME = {p.name: p for p in PROPERTIES}
 # The properties whose 0 means "chosen by the filter": the panel's groups that
 # hold one say "(0 = automatic)" in their title.
 AUTOMATIC_WHEN_ZERO = frozenset(("OffsetDistance", "ClosingRadius", "SampleSpacing", "MaximumDimension",
-                                 "NumberOfThreads", "MemoryLimit", "MinimumCavityVolume"))
+                                 "NumberOfThreads", "MemoryLimit", "MinimumCavityVolume", "DrainHoleDiameter"))
 
 Result = namedtuple("Result", "name label kind size beside panel doc")
 Result.__doc__ = """A value the last run chose, which the ParaView panel shows

@@ -17,6 +17,9 @@
   the defaults with a wall of 2 % of the diagonal: closed and manifold, a
   cavity, no inner vertex nearer than w - h to the outer surface, the part
   within 2 h of the scan's bounding box on every side.
+- Drain holes on the sphere: one or two, the cavity open, the part closed
+  and manifold, no material across the hole at the bottom, the material
+  less the holes' volume.
 - An open scan (a hemisphere): the part is empty and a warning says why;
   its advice (WallThickness 0) gives the shell.
 - WallThickness 0 (the default): no part's field data, the shell as before.
@@ -236,6 +239,30 @@ def test_small_cavity_merged():
     merged = kept["CavityVolume"][0] - figures["CavityVolume"][0]
     assert figures["MaterialVolume"][0] - kept["MaterialVolume"][0] == pytest.approx(merged, rel=1e-9)
     assert 0.85 * small_cavity < merged < small_cavity
+
+
+def test_drain_holes():
+    # One hole from the sphere's cavity, at its lowest point: the cavity
+    # opens (one surface), the part stays closed and manifold, the hole is
+    # round about the bottom, and the material loses about the hole's volume.
+    h, l, w = 0.01, 0.1, 0.05
+    xyz = nvshapes.sphere_points(h)
+    _, plain, _ = part_of(xyz, OffsetDistance=l, SampleSpacing=h, WallThickness=w)
+    for holes in (1, 2):
+        surface, figures, warnings = part_of(xyz, OffsetDistance=l, SampleSpacing=h, WallThickness=w,
+                                             NumberOfDrainHoles=holes)
+        assert warnings == []
+        check_closed(surface)
+        ids, points, _ = regions_of(surface)
+        assert len(np.unique(ids)) == 1, "the cavity opens to the outside"
+        assert figures["DrainHoles"] == [holes]
+        assert figures["CavityVolume"] == plain["CavityVolume"]
+        radius = w  # the automatic diameter: twice the wall
+        lost = plain["MaterialVolume"][0] - figures["MaterialVolume"][0]
+        assert lost == pytest.approx(holes * math.pi * radius ** 2 * w, rel=0.25)
+        below = points[points[:, 2] < 0.5 - 0.5 * math.sqrt(3) / 2]  # within 30 degrees of the bottom
+        off_axis = np.hypot(below[:, 0] - 0.5, below[:, 1] - 0.5)
+        assert off_axis.min() > 0.9 * radius, "no material across the hole at the bottom"
 
 
 def test_open_scan_warns():

@@ -249,12 +249,42 @@ std::vector<float> SheetDistance(const Grid& grid, const float* outer, const std
   return distance;
 }
 
+/// A drain hole: the nodes within Radius of the segment from A (inside a
+/// cavity) to B (outside the part) are no material.
+struct Drill
+{
+  double A[3], B[3];
+  double Radius;
+
+  /// The distance from x to the hole's surface, negative inside the hole.
+  double Signed(const double x[3]) const
+  {
+    double ab[3], ax[3], along = 0.0, length = 0.0;
+    for (int a = 0; a < 3; ++a)
+    {
+      ab[a] = this->B[a] - this->A[a];
+      ax[a] = x[a] - this->A[a];
+      along += ab[a] * ax[a];
+      length += ab[a] * ab[a];
+    }
+    const double t = length > 0.0 ? std::min(1.0, std::max(0.0, along / length)) : 0.0;
+    double d2 = 0.0;
+    for (int a = 0; a < 3; ++a)
+    {
+      const double r = ax[a] - t * ab[a];
+      d2 += r * r;
+    }
+    return std::sqrt(d2) - this->Radius;
+  }
+};
+
 /// f of the header, clamped to +-Clamp, brick by brick: a value per brick
 /// where f is beyond +-Clamp on all of it, else its nodes' values.
 class PartField : public BrickField
 {
 public:
-  PartField(const Grid& grid, const float* outer, const std::vector<float>& distance, double offset, double wall)
+  PartField(const Grid& grid, const float* outer, const std::vector<float>& distance, double offset, double wall,
+    const std::vector<Drill>& drills = {})
     : BrickDims(BrickDimensions(grid))
   {
     const float clamp = static_cast<float>(3.0 * grid.Spacing);
@@ -282,8 +312,18 @@ public:
                 const std::int64_t n = grid.Index(x, y, z);
                 const double d = distance[n];
                 const double inside = std::min(d - offset, offset + wall - d);
-                f = static_cast<float>(std::max<double>(-clamp, std::min<double>(clamp,
-                  outer[n] > 0.0f ? inside : -(offset + d))));
+                double value = outer[n] > 0.0f ? inside : -(offset + d);
+                if (!drills.empty() && value > -clamp)
+                {
+                  const double at[3] = { grid.Origin[0] + static_cast<double>(x) * grid.Spacing,
+                    grid.Origin[1] + static_cast<double>(y) * grid.Spacing,
+                    grid.Origin[2] + static_cast<double>(z) * grid.Spacing };
+                  for (const Drill& drill : drills)
+                  {
+                    value = std::min(value, drill.Signed(at)); // the hole less the material
+                  }
+                }
+                f = static_cast<float>(std::max<double>(-clamp, std::min<double>(clamp, value)));
               }
               mine[i + BrickSize * (j + BrickSize * k)] = f;
               above = above && f >= clamp;
@@ -402,10 +442,113 @@ double MinimumWall(const Grid& grid, const SurfaceArrays& part, const std::vecto
   });
   return least;
 }
+/// The drain holes: the cavities are the regions of nodes inside S deeper
+/// than l + w (6-connected) whose volume is at least `minimumVolume` (the
+/// cavities kept); in each, the nodes above its surface's lowest points
+/// along z, `count` of them at least three diameters apart, each the top of
+/// a hole straight down through the wall to 2 h past the outside.
+std::vector<Drill> DrainHoles(const Grid& grid, const float* outer, const std::vector<float>& distance, double offset,
+  double wall, double minimumVolume, int count, double radius)
+{
+  const std::int64_t nodes = grid.NumberOfNodes();
+  const double h = grid.Spacing, deep = offset + wall;
+  auto cavity = [&](std::int64_t n) { return outer[n] > 0.0f && distance[n] >= deep; };
+  std::vector<std::int32_t> label(static_cast<std::size_t>(nodes), -1);
+  std::vector<Drill> drills;
+  std::vector<std::int64_t> region;
+  std::int32_t next = 0;
+  // Nodes in ascending order, z slowest: a region's first node is its lowest.
+  for (std::int64_t start = 0; start < nodes; ++start)
+  {
+    if (label[start] >= 0 || !cavity(start))
+    {
+      continue;
+    }
+    region.assign(1, start);
+    label[start] = next;
+    for (std::size_t head = 0; head < region.size(); ++head)
+    {
+      std::int64_t ijk[3];
+      grid.Ijk(region[head], ijk);
+      for (int a = 0; a < 3; ++a)
+      {
+        for (int step : { -1, 1 })
+        {
+          std::int64_t to[3] = { ijk[0], ijk[1], ijk[2] };
+          to[a] += step;
+          if (to[a] < 0 || to[a] >= grid.Dims[a])
+          {
+            continue;
+          }
+          const std::int64_t m = grid.Index(to[0], to[1], to[2]);
+          if (label[m] < 0 && cavity(m))
+          {
+            label[m] = next;
+            region.push_back(m);
+          }
+        }
+      }
+    }
+    ++next;
+    if (static_cast<double>(region.size()) * h * h * h < minimumVolume)
+    {
+      continue; // merged into the wall
+    }
+    // The lowest points of the cavity's surface: below a node, about
+    // D - (l + w) under it (the surface is D = l + w); the region sorted by
+    // that height (then its node order).
+    const auto height = [&](std::int64_t n) {
+      return grid.Origin[2] + static_cast<double>(n / (grid.Dims[0] * grid.Dims[1])) * h - (distance[n] - deep);
+    };
+    std::stable_sort(region.begin(), region.end(), [&](std::int64_t u, std::int64_t v) { return height(u) < height(v); });
+    std::vector<std::array<double, 3>> tops;
+    for (std::int64_t n : region)
+    {
+      if (static_cast<int>(tops.size()) == count)
+      {
+        break;
+      }
+      std::int64_t ijk[3];
+      grid.Ijk(n, ijk);
+      std::array<double, 3> x;
+      for (int a = 0; a < 3; ++a)
+      {
+        x[a] = grid.Origin[a] + static_cast<double>(ijk[a]) * h;
+      }
+      bool apart = true;
+      for (const auto& t : tops)
+      {
+        const double dx = t[0] - x[0], dy = t[1] - x[1];
+        apart = apart && dx * dx + dy * dy >= 36.0 * radius * radius;
+      }
+      if (!apart)
+      {
+        continue;
+      }
+      tops.push_back(x);
+      // Down through the wall until outside S, then 2 h and a radius more.
+      std::int64_t k = ijk[2];
+      while (k > 0 && outer[grid.Index(ijk[0], ijk[1], k)] > 0.0f)
+      {
+        --k;
+      }
+      Drill drill;
+      for (int a = 0; a < 3; ++a)
+      {
+        drill.A[a] = drill.B[a] = x[a];
+      }
+      drill.A[2] += radius;
+      drill.B[2] = grid.Origin[2] + static_cast<double>(k) * h - 2.0 * h - radius;
+      drill.Radius = radius;
+      drills.push_back(drill);
+    }
+  }
+  return drills;
+}
 } // namespace
 
 bool MakePart(const Grid& grid, const Parameters& parameters, const float* outer, double wall, double minimumCavity,
-  SurfaceSink& sink, Monitor* monitor, PrintReport& report)
+  int drainHoles, double drainDiameter, SurfaceSink& sink, Monitor* monitor, PrintReport& report)
 {
   const double l = parameters.OffsetDistance;
   // The outer sheet: phi = 0 with the cavities filled.
@@ -439,6 +582,31 @@ bool MakePart(const Grid& grid, const Parameters& parameters, const float* outer
   report.RemovedCavities = removed.Voids;
   report.RemovedPieces = removed.Pieces;
   report.MinimumWallThickness = report.KeptCavities > 0 ? MinimumWall(grid, arrays, distance, l, wall) : 0.0;
+  if (drainHoles > 0 && report.KeptCavities > 0)
+  {
+    // Again with the holes: the kept cavities now open to the outside, the
+    // merged ones go as before (by the same volume).
+    const double radius = 0.5 * (drainDiameter > 0.0 ? drainDiameter : std::max(2.0 * wall, 4.0 * grid.Spacing));
+    const std::vector<Drill> drills =
+      DrainHoles(grid, outer, distance, l, wall, report.MinimumCavityVolume, drainHoles, radius);
+    const PartField drilled(grid, outer, distance, l, wall, drills);
+    SurfaceArrays none = sink.View();
+    none.NumberOfPoints = none.NumberOfTriangles = 0;
+    sink.Truncate(none);
+    if (!ContourBricks(grid, drilled, sink, 0, -1, monitor))
+    {
+      return false;
+    }
+    PieceLimits again = limits;
+    again.Void = report.MinimumCavityVolume;
+    again.VoidShare = 0.0;
+    arrays = sink.View();
+    const RemovedPieces opened = RemoveSmallPieces(arrays, again, grid, nullptr, 0, 0);
+    sink.Truncate(arrays);
+    arrays = sink.View();
+    report.MaterialVolume = opened.Volume;
+    report.DrainHoles = static_cast<std::int64_t>(drills.size());
+  }
   for (std::int64_t p = 0; p < arrays.NumberOfPoints; ++p)
   {
     for (int a = 0; a < 3; ++a)

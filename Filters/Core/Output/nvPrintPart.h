@@ -27,6 +27,10 @@
 // D >= l >= 4 h. f is kept within +-3 h, where the contouring reads it; a
 // brick wholly beyond that is one value.
 //
+// Drain holes (NumberOfDrainHoles): from the lowest points of each cavity
+// kept, straight down (-z) through the wall, f = min(f, distance to the
+// hole's surface), so the surface stays closed and manifold.
+//
 // Cavities: a closed part of the surface around a region outside it is a
 // cavity; those smaller than MinimumCavityVolume (0: 1 % of the largest)
 // are merged into the wall (their surface goes, RemoveSmallPieces), so that
@@ -55,6 +59,7 @@ struct PrintReport
   std::int64_t KeptCavities = 0;
   std::int64_t RemovedCavities = 0;
   std::int64_t RemovedPieces = 0;
+  std::int64_t DrainHoles = 0; ///< holes drilled from the cavities to the outside
   std::array<double, 6> Bounds{ { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 } }; ///< the part's xmin, xmax, ymin, ...
 };
 
@@ -62,10 +67,14 @@ struct PrintReport
  * Makes the part into `sink`. outer: phi on every node of the grid, once
  * KeepSheets(Outer) filled the cavities (phi > 0: inside the outer sheet).
  * wall: w; minimumCavity: cavities below it are merged into the wall (0:
- * below 1 % of the largest). Returns false if the monitor stopped it.
+ * below 1 % of the largest). drainHoles: holes drilled from each cavity
+ * kept, at its lowest points along z, of diameter drainDiameter (0: 2 w, at
+ * least 4 h): f is made again with them (f = min(f, the distance to the
+ * hole's surface)) and contoured again, so the part stays closed. Returns
+ * false if the monitor stopped it.
  */
 bool MakePart(const Grid& grid, const Parameters& parameters, const float* outer, double wall, double minimumCavity,
-  SurfaceSink& sink, Monitor* monitor, PrintReport& report);
+  int drainHoles, double drainDiameter, SurfaceSink& sink, Monitor* monitor, PrintReport& report);
 
 } // namespace nv
 

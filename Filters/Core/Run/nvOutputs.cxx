@@ -329,7 +329,8 @@ bool MakeSurface(Reconstruction& run, SurfaceSink& sink, const VolumeArrays& den
       WithThreads(settings.NumberOfThreads, [&]() {
         KeepSheets(grid, outer.data(), Sheets::Outer);
         made = MakePart(grid, run.GetParameters(), outer.data(), settings.WallThickness,
-          settings.MinimumCavityVolume, sink, monitor, outcome.Print);
+          settings.MinimumCavityVolume, settings.NumberOfDrainHoles, settings.DrainHoleDiameter, sink, monitor,
+          outcome.Print);
       });
       return made;
     });
@@ -487,6 +488,7 @@ Outcome Reconstruct(Reconstruction& run, std::vector<double> xyz, std::shared_pt
       { "RemovedCavities", SummaryArray::Double, 1, { static_cast<double>(print.RemovedCavities) } },
       { "MinimumCavityVolume", SummaryArray::Double, 1, { print.MinimumCavityVolume } },
       { "PartBounds", SummaryArray::Double, 6, { print.Bounds.begin(), print.Bounds.end() } },
+      { "DrainHoles", SummaryArray::Double, 1, { static_cast<double>(print.DrainHoles) } },
     };
     outcome.Summary.insert(outcome.Summary.end() - 1, part.begin(), part.end()); // StageSeconds stays last
   }

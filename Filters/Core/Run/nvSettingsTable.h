@@ -36,7 +36,9 @@
   X(bool, OutputDistance, false) \
   X(bool, OutputNarrowBand, false) \
   X(double, WallThickness, 0.0) \
-  X(double, MinimumCavityVolume, 0.0)
+  X(double, MinimumCavityVolume, 0.0) \
+  X(int, NumberOfDrainHoles, 0) \
+  X(double, DrainHoleDiameter, 0.0)
 
 // NV_SETTINGS_RANGES(X) calls X(Name, Low, High) for each property whose
 // setter clamps its value to [Low, High] (as vtkSetClampMacro).
@@ -50,7 +52,8 @@
   X(NumberOfThreads, 0, 1024) \
   X(MemoryLimit, 0.0, 1000000000000.0) \
   X(Device, 0, 2) \
-  X(Sheets, 0, 2)
+  X(Sheets, 0, 2) \
+  X(NumberOfDrainHoles, 0, 64)
 
 // NV_PANEL_LABELS(X) calls X(Name, "Label") for each property: the VTK
 // filter's messages name the properties by their panel labels in ParaView.
@@ -79,6 +82,8 @@
   X(OutputDistance, "Output Distance") \
   X(OutputNarrowBand, "Output Narrow Band") \
   X(WallThickness, "Wall Thickness") \
-  X(MinimumCavityVolume, "Minimum Cavity Volume")
+  X(MinimumCavityVolume, "Minimum Cavity Volume") \
+  X(NumberOfDrainHoles, "Number Of Drain Holes") \
+  X(DrainHoleDiameter, "Drain Hole Diameter")
 
 #endif
