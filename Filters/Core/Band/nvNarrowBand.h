@@ -100,6 +100,29 @@ constexpr std::int64_t MaximumBandSize = 4294967295LL - 2;
 using BrickVisitor = std::function<void(std::int64_t brick, const double distance[BrickNodes])>;
 
 /**
+ * The distances of eq. (6) of batches of bricks, computed elsewhere than by
+ * TruncatedDistance::ComputeBrick: by the device back end
+ * (nvDeviceDistance.h), on the GPU or through its host launcher. A source
+ * must give ComputeBrick's distances and BrickWithin's answers bit for bit,
+ * so that the band is the one the CPU finds.
+ */
+class BrickDistanceSource
+{
+public:
+  virtual ~BrickDistanceSource();
+  /// The most bricks a call of Compute takes.
+  virtual std::int64_t BatchSize() const = 0;
+  /**
+   * For the `count` bricks `bricks` (grid brick indices): covered[a] =
+   * BrickWithin(bricks[a], coverRadius), or 0 for all when coverRadius is 0;
+   * and for each brick not covered, distance[BrickNodes a + n] =
+   * ComputeBrick(bricks[a])[n] (a covered brick's distances are left unset).
+   */
+  virtual void Compute(const std::int64_t* bricks, std::int64_t count, double coverRadius, double* distance,
+    std::uint8_t* covered) = 0;
+};
+
+/**
  * Finds the band nodes: in Domain::NarrowBand mode the nodes with
  * l - eta/2 < d < l + eta/2 (|phi0| < 1 - delta), in Domain::WholeDomain mode
  * every node of the grid. Returns an empty band if the monitor asks to stop.
@@ -108,10 +131,12 @@ using BrickVisitor = std::function<void(std::int64_t brick, const double distanc
  * with the distances of every reached brick (none is skipped then). times:
  * if set, gets the seconds of steps 1 ("band: collect", the distances), 2
  * ("band: store"), and 3 ("band: index bricks", "band: neighbours").
+ * source: if set, step 1 takes the distances from it, batch by batch,
+ * instead of computing them on the host (the same band, bit for bit).
  */
 NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& parameters,
   Monitor* monitor = nullptr, const Subdomain* part = nullptr, const BrickVisitor& visitor = nullptr,
-  StageTimes* times = nullptr);
+  StageTimes* times = nullptr, BrickDistanceSource* source = nullptr);
 
 } // namespace nv
 

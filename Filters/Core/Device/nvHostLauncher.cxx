@@ -22,9 +22,9 @@ namespace
 constexpr std::int64_t Grain = 4096;
 
 template <typename Kernel>
-void For(std::int64_t begin, std::int64_t end, const Kernel& kernel)
+void For(std::int64_t begin, std::int64_t end, const Kernel& kernel, std::int64_t grain = Grain)
 {
-  ParallelFor(begin, end, Grain, [&](std::int64_t first, std::int64_t last) {
+  ParallelFor(begin, end, grain, [&](std::int64_t first, std::int64_t last) {
     for (std::int64_t s = first; s < last; ++s)
     {
       kernel(s);
@@ -111,7 +111,26 @@ public:
     this->A = EvolutionArrays();
   }
 
+  void UploadPoints(const double* points, std::int64_t, const std::int64_t* bucketStart, std::int64_t) override
+  {
+    this->D.Points = points; // read in place
+    this->D.BucketStart = bucketStart;
+  }
+  void DistanceBricks(const std::int64_t* bricks, std::int64_t count, const DistanceConstants& constants,
+    double* distance, std::uint8_t* covered) override
+  {
+    DistanceArrays arrays = this->D;
+    arrays.Bricks = bricks;
+    arrays.Distance = distance;
+    arrays.Covered = covered;
+    For(0, count, CoveredKernel{ arrays, constants }, 8);
+    // 8 bricks of nodes a task: the nodes of a brick read the same points.
+    For(0, count * 512, DistanceKernel{ arrays, constants }, 8 * 512);
+  }
+  void FreePoints() override { this->D = DistanceArrays(); }
+
 private:
+  DistanceArrays D;
   EvolutionArrays A;
   UninitializedVector<double> Phi;
   UninitializedVector<double> Previous;
