@@ -98,7 +98,7 @@ public:
     NARROW_BAND = 0,
     WHOLE_DOMAIN = 1
   };
-  /// Where the evolution runs (SetDevice).
+  /// Where the distance and the evolution run (SetDevice).
   enum DeviceType
   {
     DEVICE_AUTOMATIC = 0,
@@ -363,10 +363,11 @@ public:
 
   ///@{
   /**
-   * Where the evolution (phi0, g and the time steps) runs: DEVICE_AUTOMATIC
-   * (default), for now the CPU; DEVICE_CPU, the CPU's threads; DEVICE_GPU,
-   * an NVIDIA GPU through CUDA (one process, PreserveOffset off), with the
-   * same scheme and stopping rule. DEVICE_GPU on a build without CUDA, or
+   * Where the truncated distance and the evolution (phi0, g and the time
+   * steps) run: DEVICE_AUTOMATIC (default), for now the CPU; DEVICE_CPU, the
+   * CPU's threads; DEVICE_GPU, an NVIDIA GPU through CUDA (one process,
+   * PreserveOffset off), with the CPU's distances and the same scheme and
+   * stopping rule. DEVICE_GPU on a build without CUDA, or
    * on a machine without a CUDA device, stops the run with an error that
    * says which. The GPU back end has not yet run on a GPU, so Automatic
    * stays on the CPU. Field data "DeviceUsed": 1 (CPU) or 2 (GPU).

@@ -5,7 +5,9 @@
 // CoveredKernel in nvDeviceKernels.h), on the GPU or through the host
 // launcher, batch by batch, for the band's step 1 (BuildNarrowBand's
 // BrickDistanceSource). They are TruncatedDistance::ComputeBrick's and
-// BrickWithin's bit for bit, so the band is the CPU's.
+// BrickWithin's bit for bit through the host launcher (TestCoreDevice), and
+// are written to be on the GPU too (not yet run there), so the band is the
+// CPU's.
 //
 // What stays on the host for now: the points' sort into bricks
 // (TruncatedDistance's constructor), the bricks to visit (ReachedBricks)

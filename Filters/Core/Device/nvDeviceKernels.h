@@ -199,8 +199,9 @@ struct NormSquaredKernel
 /// a * b and a + b, each rounded once: nvcc would otherwise fuse
 /// a * b + c into one fused multiply-add, rounded once instead of twice, and
 /// the distances would differ from the CPU core's in the last bit. With
-/// them the GPU's distances are ComputeBrick's bit for bit (the square root
-/// and the division are IEEE's correctly rounded ones in CUDA's double too).
+/// them the GPU's distances should be ComputeBrick's bit for bit (CUDA's
+/// double square root is IEEE's correctly rounded one too), which
+/// TestCoreDevice cuda checks on a GPU: not yet run there.
 NV_HD inline double MulRn(double a, double b)
 {
 #if defined(__CUDA_ARCH__)
