@@ -9,7 +9,9 @@
 //                           and the literal stopping rule; the truncated
 //                           distance (eq. 6) the CPU core's bit for bit on
 //                           every reached brick of a sphere and a torus, and
-//                           the band built from it the CPU's array for array;
+//                           the band built from it (its nodes picked on the
+//                           device, or on the host from the distances) the
+//                           CPU's array for array;
 //                           and the whole run with Device GPU (the property)
 //                           against Device CPU: the surfaces' vertices
 //                           within 0.05 h of each other, both sheets closed;
@@ -344,8 +346,9 @@ void CompareDistance(
   NV_CHECK(differ == 0);
   NV_CHECK(coverDiffer == 0);
 
-  // The band from the device's distances, and with a visitor (no brick
-  // skipped, each brick's distances handed over), against the CPU's.
+  // The band with its nodes picked on the device (BandCountKernel,
+  // BandCompactKernel), and with a visitor (no brick skipped, each brick's
+  // distances handed over, the nodes picked on the host), against the CPU's.
   const nv::NarrowBand cpuBand = nv::BuildNarrowBand(distance, parameters);
   nv::NarrowBand deviceBand;
   {
@@ -376,8 +379,8 @@ void CompareDistance(
   const bool sameVisited = cpuVisited == deviceVisited && !cpuVisited.empty() &&
     SameValues(deviceVisitedBand.Inside, cpuVisitedBand.Inside) &&
     SameValues(deviceVisitedBand.Distance, cpuVisitedBand.Distance);
-  std::printf("%s, the band from the device's distances: %lld nodes, the CPU's array for array: %s; with a "
-              "visitor (%zu bricks): %s\n",
+  std::printf("%s, the band picked on the device: %lld nodes, the CPU's array for array: %s; from the "
+              "device's distances with a visitor (%zu bricks): %s\n",
     what, static_cast<long long>(deviceBand.Size()), same ? "yes" : "NO", deviceVisited.size(),
     sameVisited ? "yes" : "NO");
   NV_CHECK(deviceBand.Size() > 1000);

@@ -7,6 +7,7 @@
 #include "nvTruncatedDistance.h"
 
 #include <algorithm>
+#include <stdexcept>
 #include <cmath>
 
 namespace nv
@@ -196,6 +197,59 @@ bool CollectBandNodes(const TruncatedDistance& distance, const Parameters& param
   });
 }
 
+/// Step 1, continued, with the band's nodes picked by `source` (the device
+/// back end) batch by batch: perBrick and band.Inside as CollectBandNodes
+/// makes them. False if the monitor stopped it.
+bool CollectPickedNodes(BrickDistanceSource& source, const TruncatedDistance& distances,
+  const Parameters& parameters, Monitor* monitor, NarrowBand& band, std::vector<BrickBand>& perBrick, std::int64_t batch, double coverRadius)
+{
+  const std::int64_t numberOfBricks = static_cast<std::int64_t>(band.Bricks.size());
+  const double lower = parameters.OffsetDistance - parameters.HalfBandWidth();
+  const bool whole = parameters.Domain == Domain::WholeDomain;
+  std::vector<std::int32_t> red(static_cast<std::size_t>(batch)), black(static_cast<std::size_t>(batch));
+  std::vector<std::int64_t> first(static_cast<std::size_t>(batch));
+  UninitializedVector<std::uint16_t> offset;
+  UninitializedVector<double> distance;
+  for (std::int64_t done = 0; done < numberOfBricks; done += batch)
+  {
+    if (monitor && monitor->Aborted())
+    {
+      return false;
+    }
+    const std::int64_t count = std::min(batch, numberOfBricks - done);
+    source.CollectNodes(&band.Bricks[done], count, coverRadius, lower, distances.GetReach(), whole, red.data(),
+      black.data(), &band.Inside[done * BrickNodes / 64], offset, distance);
+    std::int64_t total = 0;
+    for (std::int64_t c = 0; c < count; ++c)
+    {
+      first[c] = total;
+      total += red[c] + black[c];
+    }
+    ParallelFor(0, count, 64, [&](std::int64_t begin, std::int64_t end) {
+      for (std::int64_t c = begin; c < end; ++c)
+      {
+        BrickBand& out = perBrick[done + c];
+        for (int colour = 0; colour < 2; ++colour)
+        {
+          std::vector<BandEntry>& list = colour == 0 ? out.Red : out.Black;
+          const std::int64_t from = first[c] + (colour == 0 ? 0 : red[c]);
+          const std::int64_t size = colour == 0 ? red[c] : black[c];
+          list.resize(static_cast<std::size_t>(size));
+          for (std::int64_t e = 0; e < size; ++e)
+          {
+            list[e] = BandEntry{ offset[from + e], distance[from + e] };
+          }
+        }
+      }
+    });
+    if (monitor)
+    {
+      monitor->Progress(static_cast<double>(done + count) / numberOfBricks);
+    }
+  }
+  return !(monitor && monitor->Aborted());
+}
+
 /// Step 1, continued, with the distances from `source` (the device back
 /// end), batch by batch: the same band nodes and Inside bits as
 /// CollectBandNodes when the source gives ComputeBrick's and BrickWithin's
@@ -210,6 +264,10 @@ bool CollectBandNodesFrom(BrickDistanceSource& source, const TruncatedDistance& 
   const double lower = parameters.OffsetDistance - parameters.HalfBandWidth();
   const double coverRadius = SkipsCoveredBricks(parameters, visitor) ? lower : 0.0;
   const std::int64_t batch = std::max<std::int64_t>(1, std::min(source.BatchSize(), numberOfBricks));
+  if (source.PicksNodes() && !visitor)
+  {
+    return CollectPickedNodes(source, distance, parameters, monitor, band, perBrick, batch, coverRadius);
+  }
   UninitializedVector<double> d(static_cast<std::size_t>(batch * BrickNodes));
   std::vector<std::uint8_t> covered(static_cast<std::size_t>(batch));
   for (std::int64_t done = 0; done < numberOfBricks; done += batch)
@@ -416,6 +474,12 @@ void ConnectNeighbours(const BrickIndex& index, const Parameters& parameters, Na
 } // namespace
 
 BrickDistanceSource::~BrickDistanceSource() = default;
+
+void BrickDistanceSource::CollectNodes(const std::int64_t*, std::int64_t, double, double, double, bool,
+  std::int32_t*, std::int32_t*, std::uint64_t*, UninitializedVector<std::uint16_t>&, UninitializedVector<double>&)
+{
+  throw std::logic_error("BrickDistanceSource::CollectNodes: this source does not pick the band's nodes");
+}
 
 NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& parameters, Monitor* monitor,
   const Subdomain* part, const BrickVisitor& visitor, StageTimes* times, BrickDistanceSource* source)

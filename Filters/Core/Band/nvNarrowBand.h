@@ -120,6 +120,23 @@ public:
    */
   virtual void Compute(const std::int64_t* bricks, std::int64_t count, double coverRadius, double* distance,
     std::uint8_t* covered) = 0;
+
+  /// Whether the source also picks the band's nodes (CollectNodes), so that
+  /// only they, not every distance, come back (the band uses it where no
+  /// visitor wants the distances).
+  virtual bool PicksNodes() const { return false; }
+  /**
+   * Step 1 for the `count` bricks `bricks`, as CollectBandNodes does it from
+   * Compute's distances: `red[a]`, `black[a]`: batch brick a's band nodes
+   * of each colour; `offset` and `distance` (resized): the band nodes, brick
+   * after brick, each brick's red ones then its black ones in ascending
+   * place in the brick; `inside`: 8 words a brick, NarrowBand::Inside's.
+   * lower, upper: the band's bounds l -/+ eta/2; whole: every node of the
+   * grid is a band node (Domain::WholeDomain).
+   */
+  virtual void CollectNodes(const std::int64_t* bricks, std::int64_t count, double coverRadius, double lower,
+    double upper, bool whole, std::int32_t* red, std::int32_t* black, std::uint64_t* inside,
+    UninitializedVector<std::uint16_t>& offset, UninitializedVector<double>& distance);
 };
 
 /**

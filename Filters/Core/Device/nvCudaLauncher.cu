@@ -4,8 +4,9 @@
 // only allocates, copies and launches; what a node computes is in the
 // kernels, which the host launcher runs too, and the loops around them are
 // in nvDeviceEvolution.cxx (the evolution) and nvDeviceDistance.cxx (the
-// truncated distance, batch by batch of bricks: each batch's distances come
-// back to the host, where the band's nodes are still collected).
+// truncated distance and the band's nodes, batch by batch of bricks: only
+// each batch's band nodes come back to the host, or all its distances where
+// the dense volume wants them).
 //
 // Compiled where CMake finds a CUDA compiler (NARROWVOLUME_CUDA): the suite
 // compiles and links it on machines without a GPU (scripts/test.sh, nvcc
@@ -128,7 +129,10 @@ public:
            static_cast<void*>(this->Distance), static_cast<void*>(this->A.Phi), static_cast<void*>(this->A.Previous),
            static_cast<void*>(this->A.Coupling), static_cast<void*>(this->A.Decay), static_cast<void*>(this->Points),
            static_cast<void*>(this->BucketStart), static_cast<void*>(this->Bricks),
-           static_cast<void*>(this->BrickDistance), static_cast<void*>(this->Covered) })
+           static_cast<void*>(this->BrickDistance), static_cast<void*>(this->Covered),
+           static_cast<void*>(this->RedCount), static_cast<void*>(this->BlackCount), static_cast<void*>(this->First),
+           static_cast<void*>(this->Inside), static_cast<void*>(this->NodeOffset),
+           static_cast<void*>(this->NodeDistance) })
     {
       cudaFree(memory);
     }
@@ -229,15 +233,79 @@ public:
     this->For(0, count, CoveredKernel{ arrays, constants });
     // One thread a node: a block of 256 threads is half a brick.
     this->For(0, count * 512, DistanceKernel{ arrays, constants });
-    Check(cudaMemcpy(covered, this->Covered, count, cudaMemcpyDeviceToHost), "copying the covered bricks back");
-    Check(cudaMemcpy(distance, this->BrickDistance, sizeof(double) * 512 * count, cudaMemcpyDeviceToHost),
-      "copying the distances back");
+    if (covered)
+    {
+      Check(cudaMemcpy(covered, this->Covered, count, cudaMemcpyDeviceToHost), "copying the covered bricks back");
+    }
+    if (distance)
+    {
+      Check(cudaMemcpy(distance, this->BrickDistance, sizeof(double) * 512 * count, cudaMemcpyDeviceToHost),
+        "copying the distances back");
+    }
+  }
+  void BandNodes(std::int64_t count, const BandNodeConstants& constants, std::int32_t* red, std::int32_t* black,
+    std::uint64_t* inside, UninitializedVector<std::uint16_t>& offset, UninitializedVector<double>& distance) override
+  {
+    if (count <= 0)
+    {
+      offset.clear();
+      distance.clear();
+      return;
+    }
+    if (count > this->NodeCapacity) // the band nodes' buffers, kept from batch to batch
+    {
+      this->ReleaseNodes();
+      this->RedCount = Allocate<std::int32_t>(count, this->Bytes, this->Peak, "the red counts of a batch");
+      this->BlackCount = Allocate<std::int32_t>(count, this->Bytes, this->Peak, "the black counts of a batch");
+      this->First = Allocate<std::int64_t>(count, this->Bytes, this->Peak, "the band nodes' places in a batch");
+      this->Inside = Allocate<std::uint64_t>(8 * count, this->Bytes, this->Peak, "the inside bits of a batch");
+      this->NodeOffset = Allocate<std::uint16_t>(512 * count, this->Bytes, this->Peak, "the band nodes of a batch");
+      this->NodeDistance = Allocate<double>(512 * count, this->Bytes, this->Peak, "the band nodes' distances");
+      this->NodeCapacity = count;
+    }
+    BandNodeArrays arrays;
+    arrays.Bricks = this->Bricks;
+    arrays.Distance = this->BrickDistance;
+    arrays.Covered = this->Covered;
+    arrays.RedCount = this->RedCount;
+    arrays.BlackCount = this->BlackCount;
+    arrays.First = this->First;
+    arrays.NodeOffset = this->NodeOffset;
+    arrays.NodeDistance = this->NodeDistance;
+    arrays.Inside = this->Inside;
+    this->For(0, count, BandCountKernel{ arrays, constants });
+    Check(cudaMemcpy(red, this->RedCount, sizeof(std::int32_t) * count, cudaMemcpyDeviceToHost),
+      "copying the red counts back");
+    Check(cudaMemcpy(black, this->BlackCount, sizeof(std::int32_t) * count, cudaMemcpyDeviceToHost),
+      "copying the black counts back");
+    std::vector<std::int64_t> first(static_cast<std::size_t>(count));
+    std::int64_t total = 0;
+    for (std::int64_t c = 0; c < count; ++c)
+    {
+      first[c] = total;
+      total += red[c] + black[c];
+    }
+    Check(cudaMemcpy(this->First, first.data(), sizeof(std::int64_t) * count, cudaMemcpyHostToDevice),
+      "copying the band nodes' places");
+    this->For(0, count, BandCompactKernel{ arrays, constants });
+    offset.resize(static_cast<std::size_t>(total));
+    distance.resize(static_cast<std::size_t>(total));
+    Check(cudaMemcpy(inside, this->Inside, sizeof(std::uint64_t) * 8 * count, cudaMemcpyDeviceToHost),
+      "copying the inside bits back");
+    if (total > 0)
+    {
+      Check(cudaMemcpy(offset.data(), this->NodeOffset, sizeof(std::uint16_t) * total, cudaMemcpyDeviceToHost),
+        "copying the band nodes back");
+      Check(cudaMemcpy(distance.data(), this->NodeDistance, sizeof(double) * total, cudaMemcpyDeviceToHost),
+        "copying the band nodes' distances back");
+    }
   }
   void FreePoints() override
   {
     Release(this->Points, 3 * this->NumberOfPoints, this->Bytes);
     Release(this->BucketStart, this->NumberOfBricks + 1, this->Bytes);
     this->ReleaseBatch();
+    this->ReleaseNodes();
   }
 
 private:
@@ -247,6 +315,16 @@ private:
     Release(this->BrickDistance, 512 * this->BatchCapacity, this->Bytes);
     Release(this->Covered, this->BatchCapacity, this->Bytes);
     this->BatchCapacity = 0;
+  }
+  void ReleaseNodes()
+  {
+    Release(this->RedCount, this->NodeCapacity, this->Bytes);
+    Release(this->BlackCount, this->NodeCapacity, this->Bytes);
+    Release(this->First, this->NodeCapacity, this->Bytes);
+    Release(this->Inside, 8 * this->NodeCapacity, this->Bytes);
+    Release(this->NodeOffset, 512 * this->NodeCapacity, this->Bytes);
+    Release(this->NodeDistance, 512 * this->NodeCapacity, this->Bytes);
+    this->NodeCapacity = 0;
   }
   template <typename Kernel>
   void For(std::int64_t begin, std::int64_t end, const Kernel& kernel)
@@ -289,6 +367,14 @@ private:
   std::int64_t* Bricks = nullptr;
   double* BrickDistance = nullptr;
   std::uint8_t* Covered = nullptr;
+  // The band nodes of a batch (BandNodeArrays).
+  std::int64_t NodeCapacity = 0;
+  std::int32_t* RedCount = nullptr;
+  std::int32_t* BlackCount = nullptr;
+  std::int64_t* First = nullptr;
+  std::uint64_t* Inside = nullptr;
+  std::uint16_t* NodeOffset = nullptr;
+  double* NodeDistance = nullptr;
   EvolutionArrays A;
   std::uint32_t* Neighbor = nullptr;
   double* Distance = nullptr;

@@ -56,5 +56,18 @@ void LauncherDistance::Compute(
     bricks, count, DistanceConstantsOf(this->Distance, coverRadius), distance, covered);
 }
 
+void LauncherDistance::CollectNodes(const std::int64_t* bricks, std::int64_t count, double coverRadius,
+  double lower, double upper, bool whole, std::int32_t* red, std::int32_t* black, std::uint64_t* inside,
+  UninitializedVector<std::uint16_t>& offset, UninitializedVector<double>& distance)
+{
+  BandNodeConstants constants;
+  constants.Grid = DistanceConstantsOf(this->Distance, coverRadius);
+  constants.Lower = lower;
+  constants.Upper = upper;
+  constants.Whole = whole;
+  this->Launcher.DistanceBricks(bricks, count, constants.Grid, nullptr, nullptr); // kept on the device
+  this->Launcher.BandNodes(count, constants, red, black, inside, offset, distance);
+}
+
 } // namespace device
 } // namespace nv

@@ -9,10 +9,12 @@
 // are written to be on the GPU too (not yet run there), so the band is the
 // CPU's.
 //
-// What stays on the host for now: the points' sort into bricks
-// (TruncatedDistance's constructor), the bricks to visit (ReachedBricks)
-// and the band's nodes, picked from each batch's distances as they come
-// back (nvNarrowBand.cxx).
+// The band's nodes of each batch are picked on the device too (CollectNodes):
+// only they come back, unless the dense volume wants every distance (a
+// BrickVisitor: then each batch's distances come back). What stays on the
+// host for now: the points' sort into bricks (TruncatedDistance's
+// constructor), the bricks to visit (ReachedBricks), the band's arrays
+// stored in order and its neighbours (nvNarrowBand.cxx, steps 2 and 3).
 #ifndef nvDeviceDistance_h
 #define nvDeviceDistance_h
 
@@ -49,6 +51,12 @@ public:
   /// Throws DeviceError when the device fails.
   void Compute(const std::int64_t* bricks, std::int64_t count, double coverRadius, double* distance,
     std::uint8_t* covered) override;
+  /// The band's nodes picked on the device too (BandCountKernel,
+  /// BandCompactKernel): only they come back. Throws DeviceError.
+  bool PicksNodes() const override { return true; }
+  void CollectNodes(const std::int64_t* bricks, std::int64_t count, double coverRadius, double lower, double upper,
+    bool whole, std::int32_t* red, std::int32_t* black, std::uint64_t* inside,
+    UninitializedVector<std::uint16_t>& offset, UninitializedVector<double>& distance) override;
 
 private:
   const TruncatedDistance& Distance;

@@ -431,6 +431,128 @@ struct DistanceKernel
   }
 };
 
+// ---------------------------------------------------------------------------
+// The band's nodes of step 1 (eq. 7), picked from a batch's distances on the
+// device, so that only they come back to the host (nvNarrowBand.cxx's
+// ClassifyBrickNodes, written the same way).
+
+/**
+ * The band's nodes of one batch of bricks, as both sides hold them.
+ * Precision, array by array:
+ *
+ * - Distance, Covered, Bricks: DistanceArrays' (read here).
+ * - RedCount, BlackCount: int32, a brick: its band nodes of each colour
+ *   (at most 512).
+ * - First: int64, a brick: where its nodes go in NodeOffset and
+ *   NodeDistance, its red ones first, then its black ones (the host's sums
+ *   of the counts over the bricks before it in the batch).
+ * - NodeOffset: uint16, a band node: i + 8 (j + 8 k) in its brick, as
+ *   NarrowBand::Offset.
+ * - NodeDistance: double, a band node: its d, as NarrowBand::Distance.
+ * - Inside: uint64, 8 a brick: NarrowBand::Inside's bits (the nodes off the
+ *   band with d <= l - eta/2; all of a covered brick's).
+ */
+struct BandNodeArrays
+{
+  const std::int64_t* Bricks = nullptr;
+  const double* Distance = nullptr;
+  const std::uint8_t* Covered = nullptr;
+  std::int32_t* RedCount = nullptr;
+  std::int32_t* BlackCount = nullptr;
+  const std::int64_t* First = nullptr;
+  std::uint16_t* NodeOffset = nullptr;
+  double* NodeDistance = nullptr;
+  std::uint64_t* Inside = nullptr;
+};
+
+/// The band's bounds (nvNarrowBand.cxx's ClassifyBrickNodes).
+struct BandNodeConstants
+{
+  DistanceConstants Grid; ///< GridDims and BrickDims are read
+  double Lower = 0.0;     ///< l - eta/2
+  double Upper = 0.0;     ///< the reach l + eta/2, world units
+  bool Whole = false;     ///< Domain::WholeDomain: every node in the grid
+};
+
+/// Whether node n of a brick whose first node is `first` lies in the grid,
+/// and its colour (red: i + j + k even).
+NV_HD inline bool NodeInGrid(const DistanceConstants& c, const std::int64_t first[3], int n, bool& red)
+{
+  const std::int64_t i = first[0] + (n & 7), j = first[1] + ((n >> 3) & 7), k = first[2] + (n >> 6);
+  red = ((i + j + k) & 1) == 0;
+  return i < c.GridDims[0] && j < c.GridDims[1] && k < c.GridDims[2];
+}
+
+/// Counts batch brick c's band nodes of each colour and sets its Inside bits.
+struct BandCountKernel
+{
+  BandNodeArrays A;
+  BandNodeConstants C;
+  NV_HD void operator()(std::int64_t c) const
+  {
+    std::int32_t red = 0, black = 0;
+    std::uint64_t* inside = A.Inside + 8 * c;
+    for (int w = 0; w < 8; ++w)
+    {
+      inside[w] = A.Covered[c] ? ~std::uint64_t(0) : std::uint64_t(0);
+    }
+    if (!A.Covered[c])
+    {
+      std::int64_t first[3], last[3];
+      BrickNodeRange(C.Grid, A.Bricks[c], first, last);
+      const double* d = A.Distance + 512 * c;
+      for (int n = 0; n < 512; ++n)
+      {
+        bool isRed = false;
+        if (!NodeInGrid(C.Grid, first, n, isRed))
+        {
+          continue;
+        }
+        if (C.Whole || (C.Lower < d[n] && d[n] < C.Upper))
+        {
+          red += isRed ? 1 : 0;
+          black += isRed ? 0 : 1;
+        }
+        else if (d[n] <= C.Lower)
+        {
+          inside[n / 64] |= std::uint64_t(1) << (n % 64);
+        }
+      }
+    }
+    A.RedCount[c] = red;
+    A.BlackCount[c] = black;
+  }
+};
+
+/// Writes batch brick c's band nodes from First[c] on, red ones then black
+/// ones, each in ascending node order (as CollectBandNodes' lists).
+struct BandCompactKernel
+{
+  BandNodeArrays A;
+  BandNodeConstants C;
+  NV_HD void operator()(std::int64_t c) const
+  {
+    if (A.Covered[c])
+    {
+      return;
+    }
+    std::int64_t first[3], last[3];
+    BrickNodeRange(C.Grid, A.Bricks[c], first, last);
+    const double* d = A.Distance + 512 * c;
+    std::int64_t red = A.First[c], black = A.First[c] + A.RedCount[c];
+    for (int n = 0; n < 512; ++n)
+    {
+      bool isRed = false;
+      if (NodeInGrid(C.Grid, first, n, isRed) && (C.Whole || (C.Lower < d[n] && d[n] < C.Upper)))
+      {
+        const std::int64_t s = isRed ? red++ : black++;
+        A.NodeOffset[s] = static_cast<std::uint16_t>(n);
+        A.NodeDistance[s] = d[n];
+      }
+    }
+  }
+};
+
 } // namespace device
 } // namespace nv
 

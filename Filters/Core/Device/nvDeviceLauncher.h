@@ -76,11 +76,21 @@ public:
   /// then outlive it (until FreePoints).
   virtual void UploadPoints(
     const double* points, std::int64_t numberOfPoints, const std::int64_t* bucketStart, std::int64_t numberOfBricks) = 0;
-  /// CoveredKernel on the `count` bricks `bricks` (host memory), then
-  /// DistanceKernel on their nodes; `distance` (BrickNodes per brick) and
-  /// `covered` (one per brick) are host memory.
+  /// CoveredKernel on the `count` bricks `bricks` (host memory, kept until
+  /// the next batch), then DistanceKernel on their nodes; `distance`
+  /// (BrickNodes per brick) and `covered` (one per brick), host memory, get
+  /// them back, unless null (then they stay on the device for BandNodes).
   virtual void DistanceBricks(const std::int64_t* bricks, std::int64_t count, const DistanceConstants& constants,
     double* distance, std::uint8_t* covered) = 0;
+  /// After DistanceBricks on the same `count` bricks: BandCountKernel, the
+  /// sums of the counts (BandNodeArrays::First), BandCompactKernel; back
+  /// into host memory come the counts (`red`, `black`: count each), the
+  /// Inside bits (8 words a brick) and the band's nodes (`offset`,
+  /// `distance`: brick after brick, each brick's red nodes then its black
+  /// ones).
+  virtual void BandNodes(std::int64_t count, const BandNodeConstants& constants, std::int32_t* red,
+    std::int32_t* black, std::uint64_t* inside, UninitializedVector<std::uint16_t>& offset,
+    UninitializedVector<double>& distance) = 0;
   /// Lets the points go (their device memory freed).
   virtual void FreePoints() = 0;
 };
