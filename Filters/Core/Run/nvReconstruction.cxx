@@ -543,9 +543,10 @@ bool Reconstruction::BuildBand(std::vector<double> xyz)
     this->Stages.Add("distance", sorting);
     if (this->Launcher)
     {
-      // Device GPU: the distances of eq. (6) by the device's kernels, the
-      // CPU's bit for bit (nvDeviceDistance.h); the band's nodes picked on
-      // the host from each batch.
+      // Device GPU: the distances of eq. (6) and the band's nodes among
+      // them by the device's kernels, the CPU's bit for bit
+      // (nvDeviceDistance.h); the band's arrays and neighbours (steps 2
+      // and 3) on the host.
       try
       {
         device::LauncherDistance onDevice(distance, *this->Launcher);
