@@ -363,11 +363,10 @@ public:
 
   ///@{
   /**
-   * Where the truncated distance and the evolution (phi0, g and the time
-   * steps) run: DEVICE_AUTOMATIC (default), for now the CPU; DEVICE_CPU, the
-   * CPU's threads; DEVICE_GPU, an NVIDIA GPU through CUDA (one process,
-   * PreserveOffset off), with the CPU's distances and the same scheme and
-   * stopping rule. DEVICE_GPU on a build without CUDA, or
+   * Where the evolution (phi0, g and the time steps) runs: DEVICE_AUTOMATIC
+   * (default), for now the CPU; DEVICE_CPU, the CPU's threads; DEVICE_GPU,
+   * an NVIDIA GPU through CUDA (one process, PreserveOffset off), with the
+   * same scheme and stopping rule. DEVICE_GPU on a build without CUDA, or
    * on a machine without a CUDA device, stops the run with an error that
    * says which. The GPU back end has not yet run on a GPU, so Automatic
    * stays on the CPU. Field data "DeviceUsed": 1 (CPU) or 2 (GPU).
