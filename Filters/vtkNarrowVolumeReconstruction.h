@@ -115,7 +115,7 @@ public:
     NARROW_BAND = 0,
     WHOLE_DOMAIN = 1
   };
-  /// Where the evolution runs (SetDevice).
+  /// Where the distance and the evolution run (SetDevice).
   enum DeviceType
   {
     DEVICE_AUTOMATIC = 0,

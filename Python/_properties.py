@@ -174,9 +174,10 @@ PROPERTIES = (
          Choice("DEVICE_CPU", "CPU", 1, "CPU"),
          Choice("DEVICE_GPU", "GPU", 2, "GPU")),
         "ComputeDevice", "Threads and Memory", True, None,
-        "Where the evolution (phi0, g and the time steps) runs: DEVICE_AUTOMATIC (0, the default), for now "
-        "the CPU; DEVICE_CPU (1), the CPU's threads; DEVICE_GPU (2), an NVIDIA GPU through CUDA, with the "
-        "same scheme and stopping rule (the sheets within 0.05 of a cell of the CPU's). The GPU needs a build "
+        "Where the truncated distance and the evolution (phi0, g and the time steps) run: DEVICE_AUTOMATIC "
+        "(0, the default), for now the CPU; DEVICE_CPU (1), the CPU's threads; DEVICE_GPU (2), an NVIDIA GPU "
+        "through CUDA, with the CPU's distances and the same scheme and stopping rule (the sheets within 0.05 "
+        "of a cell of the CPU's). The GPU needs a build "
         "with CUDA and a CUDA device (else the run stops with an error that says which is missing), one "
         "process, and {PreserveOffset} off. The GPU back end has not yet run on a GPU: Automatic stays on "
         "the CPU until it has passed its tests there. Field data \"DeviceUsed\" holds the device that ran: "

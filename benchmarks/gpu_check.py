@@ -8,7 +8,9 @@ machine with a GPU.
 
 For the Table 1 sphere (diameter 1, l = 0.1) at h = 0.01 and 0.005, and a
 torus, it runs the whole reconstruction with Device CPU and Device GPU and
-checks that: the GPU ran (DeviceUsed), both surfaces have the same vertices
+checks that: the GPU ran (DeviceUsed), the band has the CPU's number of
+nodes (the truncated distance on the device is the CPU's bit for bit), both
+surfaces have the same vertices
 and triangles, every vertex within 0.05 h of the CPU's, both surfaces closed
 (each edge in two triangles) with the Euler characteristic of two sheets
 (4 for the sphere's two spheres, 0 for the torus's two tori); and, for the
@@ -59,7 +61,11 @@ def run(core, xyz, offset, spacing, device):
     if outcome.Error:
         raise RuntimeError("%s: %s" % (device, outcome.Error))
     points, _, triangles = sink.Take()
-    return reconstruction, np.asarray(points), np.asarray(triangles), seconds
+    stages = {}
+    for name, kind, components, values, names in outcome.Summary:
+        if name == "StageSeconds":
+            stages = dict(zip(names, values))
+    return reconstruction, np.asarray(points), np.asarray(triangles), seconds, stages
 
 
 def euler(points, triangles):
@@ -79,11 +85,16 @@ def check(core, name, xyz, offset, spacing, device, chi, radius=None):
 
 def compare(core, name, xyz, offset, spacing, device, chi, radius):
     failures = []
-    cpu_run, cpu_points, cpu_triangles, cpu_seconds = run(core, xyz, offset, spacing, "cpu")
-    gpu_run, gpu_points, gpu_triangles, gpu_seconds = run(core, xyz, offset, spacing, device)
+    cpu_run, cpu_points, cpu_triangles, cpu_seconds, cpu_stages = run(core, xyz, offset, spacing, "cpu")
+    gpu_run, gpu_points, gpu_triangles, gpu_seconds, gpu_stages = run(core, xyz, offset, spacing, device)
     expected = {"gpu": "GPU", "gpu-host": "GPU on the host"}[device]
     if gpu_run.DeviceUsed() != expected:
         failures.append("DeviceUsed %r, not %r" % (gpu_run.DeviceUsed(), expected))
+    # The truncated distance on the device is the CPU's bit for bit, and so
+    # is the band: the same number of nodes.
+    if gpu_run.NumberOfBandNodes() != cpu_run.NumberOfBandNodes():
+        failures.append("%d band nodes, the CPU's %d (the distances differ)" % (
+            gpu_run.NumberOfBandNodes(), cpu_run.NumberOfBandNodes()))
     apart = float("nan")
     if len(gpu_points) != len(cpu_points) or len(gpu_triangles) != len(cpu_triangles):
         failures.append("%d vertices and %d triangles, the CPU's %d and %d" % (
@@ -107,10 +118,13 @@ def compare(core, name, xyz, offset, spacing, device, chi, radius):
         if table and (error.max() > table[0] or error.mean() > table[1]):
             errors += " (Table 1: %.3e, %.3e)" % table
             failures.append("the inner sheet's error exceeds Table 1's")
+    collect = "band: collect"  # the distances (eq. 6) and the band's nodes, step 1
     print("%s: %d band nodes, %d vertices, the farthest %.3g h from the CPU's%s; whole run %.3f s (%s), "
-          "%.3f s (CPU); evolution %.3f s and %.3f s; GPU memory %.0f MB: %s" % (
+          "%.3f s (CPU); distance and band nodes %.3f s and %.3f s; evolution %.3f s and %.3f s; "
+          "GPU memory %.0f MB: %s" % (
               name, gpu_run.NumberOfBandNodes(), len(gpu_points), apart, errors, gpu_seconds, expected,
-              cpu_seconds, gpu_run.EvolutionSeconds(), cpu_run.EvolutionSeconds(), gpu_run.DeviceBytes() / 2 ** 20,
+              cpu_seconds, gpu_stages.get(collect, float("nan")), cpu_stages.get(collect, float("nan")),
+              gpu_run.EvolutionSeconds(), cpu_run.EvolutionSeconds(), gpu_run.DeviceBytes() / 2 ** 20,
               "; ".join(failures) or "ok"), flush=True)
     return not failures
 

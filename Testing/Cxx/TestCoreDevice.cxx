@@ -6,18 +6,27 @@
 //                           the band is the CPU core's solver's bit for bit
 //                           (the same formulas, the same reductions), on a
 //                           sphere and a torus, both edge-stopping functions
-//                           and the literal stopping rule;
+//                           and the literal stopping rule; the truncated
+//                           distance (eq. 6) the CPU core's bit for bit on
+//                           every reached brick of a sphere and a torus, and
+//                           the band built from it (its nodes picked on the
+//                           device, or on the host from the distances) the
+//                           CPU's array for array;
 //                           and the whole run with Device GPU (the property)
 //                           against Device CPU: the surfaces' vertices
 //                           within 0.05 h of each other, both sheets closed;
 //   TestCoreDevice cuda     the same through the CUDA launcher, on a GPU
 //                           (scripts/test-gpu.sh): phi within 1e-9 of the
 //                           CPU core's (fused multiply-adds and the
-//                           reductions' order change the last bits).
+//                           reductions' order change the last bits); the
+//                           distances and the band bit for bit, as on the
+//                           host (nvDeviceKernels.h keeps nvcc from fusing
+//                           the distance's products and sums).
 //
 // Device GPU where there is no GPU stops with an error that says why: the
 // build has no CUDA, or the machine no CUDA device.
 #include "nvAllenCahnSolver.h"
+#include "nvDeviceDistance.h"
 #include "nvDeviceEvolution.h"
 #include "nvDeviceLauncher.h"
 #include "nvGrid.h"
@@ -32,8 +41,9 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <memory>
 #include <map>
+#include <memory>
+#include <mutex>
 #include <numeric>
 #include <string>
 #include <unordered_map>
@@ -249,6 +259,149 @@ bool Closed(const nv::SurfaceMesh& mesh, int& pieces)
   return !edges.empty();
 }
 
+/// The grid of BandOf for the points.
+nv::Grid GridOf(const std::vector<double>& xyz, const nv::Parameters& parameters)
+{
+  double bounds[6] = { 1e300, -1e300, 1e300, -1e300, 1e300, -1e300 };
+  for (std::size_t p = 0; p < xyz.size(); p += 3)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      bounds[2 * a] = std::min(bounds[2 * a], xyz[p + a]);
+      bounds[2 * a + 1] = std::max(bounds[2 * a + 1], xyz[p + a]);
+    }
+  }
+  return nv::MakeGrid(bounds, parameters.Spacing, nv::GridPadding(parameters.Reach(), parameters.Spacing));
+}
+
+template <typename T, typename A, typename B>
+bool SameValues(const std::vector<T, A>& a, const std::vector<T, B>& b)
+{
+  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin());
+}
+
+/// The device back end's truncated distance (DistanceKernel, CoveredKernel)
+/// against the CPU core's (ComputeBrick, BrickWithin) on every reached
+/// brick: the same bits (the same tests and arithmetic, nvDeviceKernels.h);
+/// and the band built from it, array for array the CPU's.
+void CompareDistance(
+  const char* what, const std::vector<double>& xyz, const nv::Parameters& parameters, bool someCovered)
+{
+  const nv::TruncatedDistance distance(
+    GridOf(xyz, parameters), xyz.data(), static_cast<std::int64_t>(xyz.size() / 3), parameters.Reach());
+  std::unique_ptr<nv::device::EvolutionLauncher> launcher = Launcher();
+  if (!launcher)
+  {
+    NV_CHECK(false);
+    return;
+  }
+  const std::vector<std::int64_t> bricks = distance.ReachedBricks();
+  const double lower = parameters.OffsetDistance - parameters.HalfBandWidth();
+  std::int64_t nodes = 0, finite = 0, differ = 0, coveredBricks = 0, coverDiffer = 0;
+  double largest = 0.0;
+  {
+    // 1000 bricks a batch: several batches, the last one short.
+    nv::device::LauncherDistance device(distance, *launcher, 1000);
+    // Bricks deep inside the shell tested here (covered, their distances
+    // not computed); every brick's distances, none skipped, in the band's
+    // check with a visitor below.
+    std::vector<double> d(bricks.size() * nv::BrickNodes);
+    std::vector<std::uint8_t> covered(bricks.size());
+    for (std::size_t done = 0; done < bricks.size(); done += 1000)
+    {
+      const std::int64_t count = std::min<std::int64_t>(1000, static_cast<std::int64_t>(bricks.size() - done));
+      device.Compute(&bricks[done], count, lower, &d[done * nv::BrickNodes], &covered[done]);
+    }
+    double cpu[nv::BrickNodes];
+    for (std::size_t a = 0; a < bricks.size(); ++a)
+    {
+      const bool within = distance.BrickWithin(bricks[a], lower);
+      coverDiffer += (covered[a] != 0) != within ? 1 : 0;
+      coveredBricks += within ? 1 : 0;
+      if (within || covered[a])
+      {
+        continue;
+      }
+      distance.ComputeBrick(bricks[a], cpu);
+      for (int n = 0; n < nv::BrickNodes; ++n)
+      {
+        const double gpu = d[a * nv::BrickNodes + n];
+        ++nodes;
+        finite += std::isfinite(cpu[n]) ? 1 : 0;
+        if (!(gpu == cpu[n]))
+        {
+          ++differ;
+          largest = std::max(largest, std::isfinite(cpu[n]) && std::isfinite(gpu) ? std::fabs(gpu - cpu[n]) : 1e300);
+        }
+      }
+    }
+  }
+  std::printf("%s, the distance on %s: %zu bricks, %lld nodes (%lld within reach), %lld covered; %lld distances "
+              "differ from the CPU's (the largest by %.3g), %lld covered flags differ\n",
+    what, launcher->Name().c_str(), bricks.size(), static_cast<long long>(nodes), static_cast<long long>(finite),
+    static_cast<long long>(coveredBricks), static_cast<long long>(differ), largest,
+    static_cast<long long>(coverDiffer));
+  NV_CHECK(finite > 1000);
+  NV_CHECK((coveredBricks > 0) == someCovered);
+  NV_CHECK(differ == 0);
+  NV_CHECK(coverDiffer == 0);
+
+  // The band with its nodes picked on the device (BandCountKernel,
+  // BandCompactKernel), and with a visitor (no brick skipped, each brick's
+  // distances handed over, the nodes picked on the host), against the CPU's.
+  const nv::NarrowBand cpuBand = nv::BuildNarrowBand(distance, parameters);
+  nv::NarrowBand deviceBand;
+  {
+    nv::device::LauncherDistance device(distance, *launcher, 777);
+    deviceBand = nv::BuildNarrowBand(distance, parameters, nullptr, nullptr, nullptr, nullptr, &device);
+  }
+  const bool same = deviceBand.Size() == cpuBand.Size() && deviceBand.RedCount == cpuBand.RedCount &&
+    SameValues(deviceBand.Offset, cpuBand.Offset) && SameValues(deviceBand.Distance, cpuBand.Distance) &&
+    SameValues(deviceBand.Neighbor, cpuBand.Neighbor) && SameValues(deviceBand.Bricks, cpuBand.Bricks) &&
+    SameValues(deviceBand.RedStart, cpuBand.RedStart) && SameValues(deviceBand.BlackStart, cpuBand.BlackStart) &&
+    SameValues(deviceBand.Inside, cpuBand.Inside);
+  std::map<std::int64_t, std::vector<double>> cpuVisited, deviceVisited;
+  std::mutex guard;
+  const auto visitor = [&guard](std::map<std::int64_t, std::vector<double>>& into) {
+    return [&guard, &into](std::int64_t brick, const double* d) {
+      std::lock_guard<std::mutex> lock(guard);
+      into[brick].assign(d, d + nv::BrickNodes);
+    };
+  };
+  const nv::NarrowBand cpuVisitedBand =
+    nv::BuildNarrowBand(distance, parameters, nullptr, nullptr, visitor(cpuVisited));
+  nv::NarrowBand deviceVisitedBand;
+  {
+    nv::device::LauncherDistance device(distance, *launcher);
+    deviceVisitedBand =
+      nv::BuildNarrowBand(distance, parameters, nullptr, nullptr, visitor(deviceVisited), nullptr, &device);
+  }
+  const bool sameVisited = cpuVisited == deviceVisited && !cpuVisited.empty() &&
+    SameValues(deviceVisitedBand.Inside, cpuVisitedBand.Inside) &&
+    SameValues(deviceVisitedBand.Distance, cpuVisitedBand.Distance);
+  std::printf("%s, the band picked on the device: %lld nodes, the CPU's array for array: %s; from the "
+              "device's distances with a visitor (%zu bricks): %s\n",
+    what, static_cast<long long>(deviceBand.Size()), same ? "yes" : "NO", deviceVisited.size(),
+    sameVisited ? "yes" : "NO");
+  NV_CHECK(deviceBand.Size() > 1000);
+  NV_CHECK(same);
+  NV_CHECK(sameVisited);
+}
+
+void TestDistance()
+{
+  const double center[3] = { 0.3, -0.1, 0.2 };
+  nv::Parameters p;
+  p.OffsetDistance = 0.1;
+  p.Spacing = 0.01; // the Table 1 sphere at h = 0.01: bricks deep inside the shell are covered
+  CompareDistance("sphere (Table 1, h = 0.01)", nvtest::SpherePoints(30000, 0.5, center), p, true);
+  p.OffsetDistance = 0.08;
+  p.Spacing = 0.02;
+  CompareDistance("torus", TorusPoints(20000, 0.6, 0.25), p, false); // no brick inside the thin tube's shell
+  p.Domain = nv::Domain::WholeDomain;
+  CompareDistance("torus, whole domain", TorusPoints(8000, 0.6, 0.25), p, false);
+}
+
 /// The whole run (nv::Reconstruction) with Device GPU against Device CPU.
 void CompareRuns(const char* what, const std::vector<double>& xyz, nv::Settings settings)
 {
@@ -333,6 +486,7 @@ int main(int argc, char* argv[])
   OnGpu = argc > 1 && std::strcmp(argv[1], "cuda") == 0;
   TestSphere();
   TestTorus();
+  TestDistance();
   TestRuns();
   TestMissingGpu();
   return nvtest::Result(NV_TEST_NAME);

@@ -7,6 +7,7 @@
 #include "nvTruncatedDistance.h"
 
 #include <algorithm>
+#include <stdexcept>
 #include <cmath>
 
 namespace nv
@@ -20,19 +21,58 @@ bool IsRed(std::int64_t i, std::int64_t j, std::int64_t k)
   return ((i + j + k) & 1) == 0;
 }
 
-/// Visits the band nodes of one brick in ascending grid index: fn(i, j, k,
-/// n, d), n = i + 8 (j + 8 k) in the brick. Marks the brick's other nodes inside the shell in `inside`, and hands
-/// its distances to `visitor`, if any.
+/// Visits the band nodes of one brick whose distances `d` are known, in
+/// ascending grid index: fn(i, j, k, n, d), n = i + 8 (j + 8 k) in the
+/// brick; sets the bits of its other nodes inside the shell in `inside`
+/// (cleared by the caller).
 template <typename Fn>
-void ForEachBandNode(const TruncatedDistance& distance, const Parameters& parameters, std::int64_t brick,
-  const BrickVisitor& visitor, double scratch[BrickNodes], std::uint64_t inside[BrickNodes / 64], Fn&& fn)
+void ClassifyBrickNodes(const TruncatedDistance& distance, const Parameters& parameters, std::int64_t brick,
+  const double d[BrickNodes], std::uint64_t inside[BrickNodes / 64], Fn&& fn)
 {
   const Grid& grid = distance.GetGrid();
   const bool whole = parameters.Domain == Domain::WholeDomain;
   const double lower = parameters.OffsetDistance - parameters.HalfBandWidth();
   const double upper = distance.GetReach();
+  std::int64_t first[3];
+  distance.BrickFirstNode(brick, first);
+  for (int k = 0; k < BrickSize && first[2] + k < grid.Dims[2]; ++k)
+  {
+    for (int j = 0; j < BrickSize && first[1] + j < grid.Dims[1]; ++j)
+    {
+      for (int i = 0; i < BrickSize && first[0] + i < grid.Dims[0]; ++i)
+      {
+        const int n = i + BrickSize * (j + BrickSize * k);
+        if (whole || (lower < d[n] && d[n] < upper))
+        {
+          fn(first[0] + i, first[1] + j, first[2] + k, n, d[n]);
+        }
+        else if (d[n] <= lower)
+        {
+          inside[n / 64] |= std::uint64_t(1) << (n % 64);
+        }
+      }
+    }
+  }
+}
+
+/// Whether step 1 may skip the bricks that BrickWithin(brick, lower) finds
+/// deep inside the shell (none is skipped in whole domain mode, nor when
+/// the visitor wants every brick's distances).
+bool SkipsCoveredBricks(const Parameters& parameters, const BrickVisitor& visitor)
+{
+  return parameters.Domain != Domain::WholeDomain && !visitor;
+}
+
+/// Visits the band nodes of one brick in ascending grid index (as
+/// ClassifyBrickNodes), computing its distances here. Marks the brick's other nodes inside the shell in `inside`, and hands
+/// its distances to `visitor`, if any.
+template <typename Fn>
+void ForEachBandNode(const TruncatedDistance& distance, const Parameters& parameters, std::int64_t brick,
+  const BrickVisitor& visitor, double scratch[BrickNodes], std::uint64_t inside[BrickNodes / 64], Fn&& fn)
+{
+  const double lower = parameters.OffsetDistance - parameters.HalfBandWidth();
   std::fill(inside, inside + BrickNodes / 64, std::uint64_t(0));
-  if (!whole && !visitor && distance.BrickWithin(brick, lower))
+  if (SkipsCoveredBricks(parameters, visitor) && distance.BrickWithin(brick, lower))
   {
     // d <= l - eta/2 on the whole brick (deep inside the shell): no band node
     std::fill(inside, inside + BrickNodes / 64, ~std::uint64_t(0));
@@ -43,27 +83,7 @@ void ForEachBandNode(const TruncatedDistance& distance, const Parameters& parame
   {
     visitor(brick, scratch);
   }
-  std::int64_t first[3];
-  distance.BrickFirstNode(brick, first);
-  for (int k = 0; k < BrickSize && first[2] + k < grid.Dims[2]; ++k)
-  {
-    for (int j = 0; j < BrickSize && first[1] + j < grid.Dims[1]; ++j)
-    {
-      for (int i = 0; i < BrickSize && first[0] + i < grid.Dims[0]; ++i)
-      {
-        const int n = i + BrickSize * (j + BrickSize * k);
-        const double d = scratch[n];
-        if (whole || (lower < d && d < upper))
-        {
-          fn(first[0] + i, first[1] + j, first[2] + k, n, d);
-        }
-        else if (d <= lower)
-        {
-          inside[n / 64] |= std::uint64_t(1) << (n % 64);
-        }
-      }
-    }
-  }
+  ClassifyBrickNodes(distance, parameters, brick, scratch, inside, fn);
 }
 
 } // namespace
@@ -175,6 +195,117 @@ bool CollectBandNodes(const TruncatedDistance& distance, const Parameters& param
         });
     }
   });
+}
+
+/// Step 1, continued, with the band's nodes picked by `source` (the device
+/// back end) batch by batch: perBrick and band.Inside as CollectBandNodes
+/// makes them. False if the monitor stopped it.
+bool CollectPickedNodes(BrickDistanceSource& source, const TruncatedDistance& distances,
+  const Parameters& parameters, Monitor* monitor, NarrowBand& band, std::vector<BrickBand>& perBrick, std::int64_t batch, double coverRadius)
+{
+  const std::int64_t numberOfBricks = static_cast<std::int64_t>(band.Bricks.size());
+  const double lower = parameters.OffsetDistance - parameters.HalfBandWidth();
+  const bool whole = parameters.Domain == Domain::WholeDomain;
+  std::vector<std::int32_t> red(static_cast<std::size_t>(batch)), black(static_cast<std::size_t>(batch));
+  std::vector<std::int64_t> first(static_cast<std::size_t>(batch));
+  UninitializedVector<std::uint16_t> offset;
+  UninitializedVector<double> distance;
+  for (std::int64_t done = 0; done < numberOfBricks; done += batch)
+  {
+    if (monitor && monitor->Aborted())
+    {
+      return false;
+    }
+    const std::int64_t count = std::min(batch, numberOfBricks - done);
+    source.CollectNodes(&band.Bricks[done], count, coverRadius, lower, distances.GetReach(), whole, red.data(),
+      black.data(), &band.Inside[done * BrickNodes / 64], offset, distance);
+    std::int64_t total = 0;
+    for (std::int64_t c = 0; c < count; ++c)
+    {
+      first[c] = total;
+      total += red[c] + black[c];
+    }
+    ParallelFor(0, count, 64, [&](std::int64_t begin, std::int64_t end) {
+      for (std::int64_t c = begin; c < end; ++c)
+      {
+        BrickBand& out = perBrick[done + c];
+        for (int colour = 0; colour < 2; ++colour)
+        {
+          std::vector<BandEntry>& list = colour == 0 ? out.Red : out.Black;
+          const std::int64_t from = first[c] + (colour == 0 ? 0 : red[c]);
+          const std::int64_t size = colour == 0 ? red[c] : black[c];
+          list.resize(static_cast<std::size_t>(size));
+          for (std::int64_t e = 0; e < size; ++e)
+          {
+            list[e] = BandEntry{ offset[from + e], distance[from + e] };
+          }
+        }
+      }
+    });
+    if (monitor)
+    {
+      monitor->Progress(static_cast<double>(done + count) / numberOfBricks);
+    }
+  }
+  return !(monitor && monitor->Aborted());
+}
+
+/// Step 1, continued, with the distances from `source` (the device back
+/// end), batch by batch: the same band nodes and Inside bits as
+/// CollectBandNodes when the source gives ComputeBrick's and BrickWithin's
+/// results. False if the monitor stopped it.
+bool CollectBandNodesFrom(BrickDistanceSource& source, const TruncatedDistance& distance,
+  const Parameters& parameters, Monitor* monitor, const BrickVisitor& visitor, NarrowBand& band,
+  std::vector<BrickBand>& perBrick)
+{
+  const std::int64_t numberOfBricks = static_cast<std::int64_t>(band.Bricks.size());
+  perBrick.resize(static_cast<std::size_t>(numberOfBricks));
+  band.Inside.resize(static_cast<std::size_t>(numberOfBricks * BrickNodes / 64));
+  const double lower = parameters.OffsetDistance - parameters.HalfBandWidth();
+  const double coverRadius = SkipsCoveredBricks(parameters, visitor) ? lower : 0.0;
+  const std::int64_t batch = std::max<std::int64_t>(1, std::min(source.BatchSize(), numberOfBricks));
+  if (source.PicksNodes() && !visitor)
+  {
+    return CollectPickedNodes(source, distance, parameters, monitor, band, perBrick, batch, coverRadius);
+  }
+  UninitializedVector<double> d(static_cast<std::size_t>(batch * BrickNodes));
+  std::vector<std::uint8_t> covered(static_cast<std::size_t>(batch));
+  for (std::int64_t done = 0; done < numberOfBricks; done += batch)
+  {
+    if (monitor && monitor->Aborted())
+    {
+      return false;
+    }
+    const std::int64_t count = std::min(batch, numberOfBricks - done);
+    source.Compute(&band.Bricks[done], count, coverRadius, d.data(), covered.data());
+    ParallelFor(0, count, 16, [&](std::int64_t begin, std::int64_t end) {
+      for (std::int64_t c = begin; c < end; ++c)
+      {
+        const std::int64_t a = done + c;
+        std::uint64_t* inside = &band.Inside[a * BrickNodes / 64];
+        const double* brickDistance = &d[c * BrickNodes];
+        std::fill(inside, inside + BrickNodes / 64, covered[c] ? ~std::uint64_t(0) : std::uint64_t(0));
+        if (covered[c])
+        {
+          continue; // d <= l - eta/2 on the whole brick, as ForEachBandNode
+        }
+        if (visitor)
+        {
+          visitor(band.Bricks[a], brickDistance);
+        }
+        BrickBand& out = perBrick[a];
+        ClassifyBrickNodes(distance, parameters, band.Bricks[a], brickDistance, inside,
+          [&](std::int64_t i, std::int64_t j, std::int64_t k, int n, double dn) {
+            (IsRed(i, j, k) ? out.Red : out.Black).push_back(BandEntry{ static_cast<std::uint16_t>(n), dn });
+          });
+      }
+    });
+    if (monitor)
+    {
+      monitor->Progress(static_cast<double>(done + count) / numberOfBricks);
+    }
+  }
+  return !(monitor && monitor->Aborted());
 }
 
 /// Step 2: the band nodes stored compactly, red ones first, in brick order
@@ -342,8 +473,16 @@ void ConnectNeighbours(const BrickIndex& index, const Parameters& parameters, Na
 
 } // namespace
 
+BrickDistanceSource::~BrickDistanceSource() = default;
+
+void BrickDistanceSource::CollectNodes(const std::int64_t*, std::int64_t, double, double, double, bool,
+  std::int32_t*, std::int32_t*, std::uint64_t*, UninitializedVector<std::uint16_t>&, UninitializedVector<double>&)
+{
+  throw std::logic_error("BrickDistanceSource::CollectNodes: this source does not pick the band's nodes");
+}
+
 NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& parameters, Monitor* monitor,
-  const Subdomain* part, const BrickVisitor& visitor, StageTimes* times)
+  const Subdomain* part, const BrickVisitor& visitor, StageTimes* times, BrickDistanceSource* source)
 {
   StageTimes untimed;
   times = times ? times : &untimed;
@@ -357,7 +496,10 @@ NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& 
   // Step 1: the bricks to visit and their band nodes.
   band.Bricks = BricksToVisit(distance, parameters, *part);
   std::vector<BrickBand> perBrick;
-  if (!times->Time("band: collect", [&]() { return CollectBandNodes(distance, parameters, monitor, visitor, band, perBrick); }))
+  if (!times->Time("band: collect", [&]() {
+        return source ? CollectBandNodesFrom(*source, distance, parameters, monitor, visitor, band, perBrick)
+                      : CollectBandNodes(distance, parameters, monitor, visitor, band, perBrick);
+      }))
   {
     return NarrowBand{};
   }

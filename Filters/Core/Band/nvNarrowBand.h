@@ -100,6 +100,46 @@ constexpr std::int64_t MaximumBandSize = 4294967295LL - 2;
 using BrickVisitor = std::function<void(std::int64_t brick, const double distance[BrickNodes])>;
 
 /**
+ * The distances of eq. (6) of batches of bricks, computed elsewhere than by
+ * TruncatedDistance::ComputeBrick: by the device back end
+ * (nvDeviceDistance.h), on the GPU or through its host launcher. A source
+ * must give ComputeBrick's distances and BrickWithin's answers bit for bit,
+ * so that the band is the one the CPU finds.
+ */
+class BrickDistanceSource
+{
+public:
+  virtual ~BrickDistanceSource();
+  /// The most bricks a call of Compute takes.
+  virtual std::int64_t BatchSize() const = 0;
+  /**
+   * For the `count` bricks `bricks` (grid brick indices): covered[a] =
+   * BrickWithin(bricks[a], coverRadius), or 0 for all when coverRadius is 0;
+   * and for each brick not covered, distance[BrickNodes a + n] =
+   * ComputeBrick(bricks[a])[n] (a covered brick's distances are left unset).
+   */
+  virtual void Compute(const std::int64_t* bricks, std::int64_t count, double coverRadius, double* distance,
+    std::uint8_t* covered) = 0;
+
+  /// Whether the source also picks the band's nodes (CollectNodes), so that
+  /// only they, not every distance, come back (the band uses it where no
+  /// visitor wants the distances).
+  virtual bool PicksNodes() const { return false; }
+  /**
+   * Step 1 for the `count` bricks `bricks`, as CollectBandNodes does it from
+   * Compute's distances: `red[a]`, `black[a]`: batch brick a's band nodes
+   * of each colour; `offset` and `distance` (resized): the band nodes, brick
+   * after brick, each brick's red ones then its black ones in ascending
+   * place in the brick; `inside`: 8 words a brick, NarrowBand::Inside's.
+   * lower, upper: the band's bounds l -/+ eta/2; whole: every node of the
+   * grid is a band node (Domain::WholeDomain).
+   */
+  virtual void CollectNodes(const std::int64_t* bricks, std::int64_t count, double coverRadius, double lower,
+    double upper, bool whole, std::int32_t* red, std::int32_t* black, std::uint64_t* inside,
+    UninitializedVector<std::uint16_t>& offset, UninitializedVector<double>& distance);
+};
+
+/**
  * Finds the band nodes: in Domain::NarrowBand mode the nodes with
  * l - eta/2 < d < l + eta/2 (|phi0| < 1 - delta), in Domain::WholeDomain mode
  * every node of the grid. Returns an empty band if the monitor asks to stop.
@@ -108,10 +148,12 @@ using BrickVisitor = std::function<void(std::int64_t brick, const double distanc
  * with the distances of every reached brick (none is skipped then). times:
  * if set, gets the seconds of steps 1 ("band: collect", the distances), 2
  * ("band: store"), and 3 ("band: index bricks", "band: neighbours").
+ * source: if set, step 1 takes the distances from it, batch by batch,
+ * instead of computing them on the host (the same band, bit for bit).
  */
 NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& parameters,
   Monitor* monitor = nullptr, const Subdomain* part = nullptr, const BrickVisitor& visitor = nullptr,
-  StageTimes* times = nullptr);
+  StageTimes* times = nullptr, BrickDistanceSource* source = nullptr);
 
 } // namespace nv
 

@@ -72,6 +72,13 @@ public:
    */
   bool BrickWithin(std::int64_t brick, double radius) const;
 
+  /// The points as ComputeBrick reads them, for the device back end
+  /// (nvDeviceDistance.h): xyz triples relative to the grid's origin, in
+  /// cells ((x - origin) / h), sorted by brick; the points of brick b are
+  /// [GetBucketStart()[b], GetBucketStart()[b + 1]).
+  const std::vector<double>& GetSortedPoints() const { return this->Points; }
+  const std::vector<std::int64_t>& GetBucketStart() const { return this->BucketStart; }
+
 private:
   std::int64_t BrickOfPoint(const double p[3], int axis) const;
 

@@ -29,7 +29,7 @@ enum class EdgeStopping
   Eq4 = 4  ///< g = (1 - |phi0|) |phi0|, the paper's choice for narrow band runs
 };
 
-/// Where the evolution runs (the property Device): Automatic is the CPU
+/// Where the distance and the evolution run (the property Device): Automatic is the CPU
 /// until the GPU back end has passed its tests on a GPU (nvReconstruction.cxx).
 enum class ComputeDevice
 {

@@ -3,7 +3,10 @@
 // The CUDA launcher: the kernels of nvDeviceKernels.h on the GPU. This file
 // only allocates, copies and launches; what a node computes is in the
 // kernels, which the host launcher runs too, and the loops around them are
-// in nvDeviceEvolution.cxx.
+// in nvDeviceEvolution.cxx (the evolution) and nvDeviceDistance.cxx (the
+// truncated distance and the band's nodes, batch by batch of bricks: only
+// each batch's band nodes come back to the host, or all its distances where
+// the dense volume wants them).
 //
 // Compiled where CMake finds a CUDA compiler (NARROWVOLUME_CUDA): the suite
 // compiles and links it on machines without a GPU (scripts/test.sh, nvcc
@@ -85,13 +88,26 @@ __global__ void Reduce(std::int64_t begin, std::int64_t end, Kernel kernel, doub
 }
 
 template <typename T>
-T* Allocate(std::int64_t count, double& bytes, const char* what)
+T* Allocate(std::int64_t count, double& bytes, double& peak, const char* what)
 {
   void* memory = nullptr;
   const std::size_t size = static_cast<std::size_t>(std::max<std::int64_t>(count, 1)) * sizeof(T);
   Check(cudaMalloc(&memory, size), what);
   bytes += static_cast<double>(size);
+  peak = std::max(peak, bytes);
   return static_cast<T*>(memory);
+}
+
+/// Frees what Allocate<T>(count) gave (null: nothing) and sets it null.
+template <typename T>
+void Release(T*& memory, std::int64_t count, double& bytes)
+{
+  if (memory)
+  {
+    cudaFree(memory);
+    bytes -= static_cast<double>(static_cast<std::size_t>(std::max<std::int64_t>(count, 1)) * sizeof(T));
+    memory = nullptr;
+  }
 }
 
 class CudaLauncher : public EvolutionLauncher
@@ -103,7 +119,7 @@ public:
     cudaDeviceProp properties;
     Check(cudaGetDeviceProperties(&properties, device), "cudaGetDeviceProperties");
     this->DeviceName = properties.name;
-    this->Partial = Allocate<double>(MaximumBlocks, this->Bytes, "the reductions' partials");
+    this->Partial = Allocate<double>(MaximumBlocks, this->Bytes, this->Peak, "the reductions' partials");
     this->HostPartial.resize(MaximumBlocks);
   }
   ~CudaLauncher() override
@@ -111,25 +127,30 @@ public:
     // Errors are ignored here: the destructor may run while a DeviceError unwinds.
     for (void* memory : { static_cast<void*>(this->Partial), static_cast<void*>(this->Neighbor),
            static_cast<void*>(this->Distance), static_cast<void*>(this->A.Phi), static_cast<void*>(this->A.Previous),
-           static_cast<void*>(this->A.Coupling), static_cast<void*>(this->A.Decay) })
+           static_cast<void*>(this->A.Coupling), static_cast<void*>(this->A.Decay), static_cast<void*>(this->Points),
+           static_cast<void*>(this->BucketStart), static_cast<void*>(this->Bricks),
+           static_cast<void*>(this->BrickDistance), static_cast<void*>(this->Covered),
+           static_cast<void*>(this->RedCount), static_cast<void*>(this->BlackCount), static_cast<void*>(this->First),
+           static_cast<void*>(this->Inside), static_cast<void*>(this->NodeOffset),
+           static_cast<void*>(this->NodeDistance) })
     {
       cudaFree(memory);
     }
   }
 
   std::string Name() const override { return "CUDA (" + this->DeviceName + ")"; }
-  double DeviceBytes() const override { return this->Bytes; }
+  double DeviceBytes() const override { return this->Peak; }
 
   void Upload(std::int64_t size, const std::uint32_t* neighbor, const double* distance, double inside,
     double outside) override
   {
     this->A.Size = size;
-    this->Neighbor = Allocate<std::uint32_t>(6 * size, this->Bytes, "the neighbour table");
-    this->Distance = Allocate<double>(size, this->Bytes, "the distances");
-    this->A.Phi = Allocate<double>(size + 2, this->Bytes, "phi");
-    this->A.Previous = Allocate<double>(size, this->Bytes, "phi^n");
-    this->A.Coupling = Allocate<double>(size, this->Bytes, "the coupling");
-    this->A.Decay = Allocate<float>(size, this->Bytes, "the decay");
+    this->Neighbor = Allocate<std::uint32_t>(6 * size, this->Bytes, this->Peak, "the neighbour table");
+    this->Distance = Allocate<double>(size, this->Bytes, this->Peak, "the distances");
+    this->A.Phi = Allocate<double>(size + 2, this->Bytes, this->Peak, "phi");
+    this->A.Previous = Allocate<double>(size, this->Bytes, this->Peak, "phi^n");
+    this->A.Coupling = Allocate<double>(size, this->Bytes, this->Peak, "the coupling");
+    this->A.Decay = Allocate<float>(size, this->Bytes, this->Peak, "the decay");
     this->A.Neighbor = this->Neighbor;
     this->A.Distance = this->Distance;
     Check(cudaMemcpy(this->Neighbor, neighbor, sizeof(std::uint32_t) * 6 * size, cudaMemcpyHostToDevice),
@@ -173,7 +194,138 @@ public:
       "copying phi back");
   }
 
+  void UploadPoints(const double* points, std::int64_t numberOfPoints, const std::int64_t* bucketStart,
+    std::int64_t numberOfBricks) override
+  {
+    this->NumberOfPoints = numberOfPoints;
+    this->NumberOfBricks = numberOfBricks;
+    this->Points = Allocate<double>(3 * numberOfPoints, this->Bytes, this->Peak, "the points");
+    this->BucketStart = Allocate<std::int64_t>(numberOfBricks + 1, this->Bytes, this->Peak, "the points' bricks");
+    Check(cudaMemcpy(this->Points, points, sizeof(double) * 3 * numberOfPoints, cudaMemcpyHostToDevice),
+      "copying the points");
+    Check(cudaMemcpy(this->BucketStart, bucketStart, sizeof(std::int64_t) * (numberOfBricks + 1),
+            cudaMemcpyHostToDevice),
+      "copying the points' bricks");
+  }
+  void DistanceBricks(const std::int64_t* bricks, std::int64_t count, const DistanceConstants& constants,
+    double* distance, std::uint8_t* covered) override
+  {
+    if (count <= 0)
+    {
+      return;
+    }
+    if (count > this->BatchCapacity) // the batch's buffers, kept from batch to batch
+    {
+      this->ReleaseBatch();
+      this->Bricks = Allocate<std::int64_t>(count, this->Bytes, this->Peak, "the bricks of a batch");
+      this->BrickDistance = Allocate<double>(count * 512, this->Bytes, this->Peak, "the distances of a batch");
+      this->Covered = Allocate<std::uint8_t>(count, this->Bytes, this->Peak, "the covered bricks of a batch");
+      this->BatchCapacity = count;
+    }
+    Check(cudaMemcpy(this->Bricks, bricks, sizeof(std::int64_t) * count, cudaMemcpyHostToDevice),
+      "copying the bricks of a batch");
+    DistanceArrays arrays;
+    arrays.Points = this->Points;
+    arrays.BucketStart = this->BucketStart;
+    arrays.Bricks = this->Bricks;
+    arrays.Distance = this->BrickDistance;
+    arrays.Covered = this->Covered;
+    this->For(0, count, CoveredKernel{ arrays, constants });
+    // One thread a node: a block of 256 threads is half a brick.
+    this->For(0, count * 512, DistanceKernel{ arrays, constants });
+    if (covered)
+    {
+      Check(cudaMemcpy(covered, this->Covered, count, cudaMemcpyDeviceToHost), "copying the covered bricks back");
+    }
+    if (distance)
+    {
+      Check(cudaMemcpy(distance, this->BrickDistance, sizeof(double) * 512 * count, cudaMemcpyDeviceToHost),
+        "copying the distances back");
+    }
+  }
+  void BandNodes(std::int64_t count, const BandNodeConstants& constants, std::int32_t* red, std::int32_t* black,
+    std::uint64_t* inside, UninitializedVector<std::uint16_t>& offset, UninitializedVector<double>& distance) override
+  {
+    if (count <= 0)
+    {
+      offset.clear();
+      distance.clear();
+      return;
+    }
+    if (count > this->NodeCapacity) // the band nodes' buffers, kept from batch to batch
+    {
+      this->ReleaseNodes();
+      this->RedCount = Allocate<std::int32_t>(count, this->Bytes, this->Peak, "the red counts of a batch");
+      this->BlackCount = Allocate<std::int32_t>(count, this->Bytes, this->Peak, "the black counts of a batch");
+      this->First = Allocate<std::int64_t>(count, this->Bytes, this->Peak, "the band nodes' places in a batch");
+      this->Inside = Allocate<std::uint64_t>(8 * count, this->Bytes, this->Peak, "the inside bits of a batch");
+      this->NodeOffset = Allocate<std::uint16_t>(512 * count, this->Bytes, this->Peak, "the band nodes of a batch");
+      this->NodeDistance = Allocate<double>(512 * count, this->Bytes, this->Peak, "the band nodes' distances");
+      this->NodeCapacity = count;
+    }
+    BandNodeArrays arrays;
+    arrays.Bricks = this->Bricks;
+    arrays.Distance = this->BrickDistance;
+    arrays.Covered = this->Covered;
+    arrays.RedCount = this->RedCount;
+    arrays.BlackCount = this->BlackCount;
+    arrays.First = this->First;
+    arrays.NodeOffset = this->NodeOffset;
+    arrays.NodeDistance = this->NodeDistance;
+    arrays.Inside = this->Inside;
+    this->For(0, count, BandCountKernel{ arrays, constants });
+    Check(cudaMemcpy(red, this->RedCount, sizeof(std::int32_t) * count, cudaMemcpyDeviceToHost),
+      "copying the red counts back");
+    Check(cudaMemcpy(black, this->BlackCount, sizeof(std::int32_t) * count, cudaMemcpyDeviceToHost),
+      "copying the black counts back");
+    std::vector<std::int64_t> first(static_cast<std::size_t>(count));
+    std::int64_t total = 0;
+    for (std::int64_t c = 0; c < count; ++c)
+    {
+      first[c] = total;
+      total += red[c] + black[c];
+    }
+    Check(cudaMemcpy(this->First, first.data(), sizeof(std::int64_t) * count, cudaMemcpyHostToDevice),
+      "copying the band nodes' places");
+    this->For(0, count, BandCompactKernel{ arrays, constants });
+    offset.resize(static_cast<std::size_t>(total));
+    distance.resize(static_cast<std::size_t>(total));
+    Check(cudaMemcpy(inside, this->Inside, sizeof(std::uint64_t) * 8 * count, cudaMemcpyDeviceToHost),
+      "copying the inside bits back");
+    if (total > 0)
+    {
+      Check(cudaMemcpy(offset.data(), this->NodeOffset, sizeof(std::uint16_t) * total, cudaMemcpyDeviceToHost),
+        "copying the band nodes back");
+      Check(cudaMemcpy(distance.data(), this->NodeDistance, sizeof(double) * total, cudaMemcpyDeviceToHost),
+        "copying the band nodes' distances back");
+    }
+  }
+  void FreePoints() override
+  {
+    Release(this->Points, 3 * this->NumberOfPoints, this->Bytes);
+    Release(this->BucketStart, this->NumberOfBricks + 1, this->Bytes);
+    this->ReleaseBatch();
+    this->ReleaseNodes();
+  }
+
 private:
+  void ReleaseBatch()
+  {
+    Release(this->Bricks, this->BatchCapacity, this->Bytes);
+    Release(this->BrickDistance, 512 * this->BatchCapacity, this->Bytes);
+    Release(this->Covered, this->BatchCapacity, this->Bytes);
+    this->BatchCapacity = 0;
+  }
+  void ReleaseNodes()
+  {
+    Release(this->RedCount, this->NodeCapacity, this->Bytes);
+    Release(this->BlackCount, this->NodeCapacity, this->Bytes);
+    Release(this->First, this->NodeCapacity, this->Bytes);
+    Release(this->Inside, 8 * this->NodeCapacity, this->Bytes);
+    Release(this->NodeOffset, 512 * this->NodeCapacity, this->Bytes);
+    Release(this->NodeDistance, 512 * this->NodeCapacity, this->Bytes);
+    this->NodeCapacity = 0;
+  }
   template <typename Kernel>
   void For(std::int64_t begin, std::int64_t end, const Kernel& kernel)
   {
@@ -204,7 +356,25 @@ private:
   }
 
   std::string DeviceName;
-  double Bytes = 0.0;
+  double Bytes = 0.0; ///< held now
+  double Peak = 0.0;  ///< the most held at once
+  // The truncated distance's arrays (DistanceArrays), until FreePoints.
+  std::int64_t NumberOfPoints = 0;
+  std::int64_t NumberOfBricks = 0;
+  std::int64_t BatchCapacity = 0;
+  double* Points = nullptr;
+  std::int64_t* BucketStart = nullptr;
+  std::int64_t* Bricks = nullptr;
+  double* BrickDistance = nullptr;
+  std::uint8_t* Covered = nullptr;
+  // The band nodes of a batch (BandNodeArrays).
+  std::int64_t NodeCapacity = 0;
+  std::int32_t* RedCount = nullptr;
+  std::int32_t* BlackCount = nullptr;
+  std::int64_t* First = nullptr;
+  std::uint64_t* Inside = nullptr;
+  std::uint16_t* NodeOffset = nullptr;
+  double* NodeDistance = nullptr;
   EvolutionArrays A;
   std::uint32_t* Neighbor = nullptr;
   double* Distance = nullptr;

@@ -19,6 +19,11 @@
 // nvcc contracts a * b + c into fused multiply-adds and the reductions sum
 // in another order: phi then differs in the last bits, not more.
 //
+// The truncated distance of eq. (6) (DistanceKernel, CoveredKernel) is here
+// too, written as the CPU core's (nvTruncatedDistance.cxx) so that both
+// launchers give its distances bit for bit (MulRn, AddRn keep nvcc from
+// fusing its products and sums).
+//
 // This header is plain C++ for the host compiler: it includes nothing of
 // CUDA, and no STL beyond <cmath> and <cstdint>, whose math functions
 // (::exp, ::sqrt, ::fabs, ::copysign, in double) CUDA provides on the device.
@@ -186,6 +191,366 @@ struct NormSquaredKernel
 {
   EvolutionArrays A;
   NV_HD double operator()(std::int64_t s) const { return A.Previous[s] * A.Previous[s]; }
+};
+
+// ---------------------------------------------------------------------------
+// The truncated distance of eq. (6), brick by brick (nvTruncatedDistance.h).
+
+/// a * b and a + b, each rounded once: nvcc would otherwise fuse
+/// a * b + c into one fused multiply-add, rounded once instead of twice, and
+/// the distances would differ from the CPU core's in the last bit. With
+/// them the GPU's distances should be ComputeBrick's bit for bit (CUDA's
+/// double square root is IEEE's correctly rounded one too), which
+/// TestCoreDevice cuda checks on a GPU: not yet run there.
+NV_HD inline double MulRn(double a, double b)
+{
+#if defined(__CUDA_ARCH__)
+  return __dmul_rn(a, b);
+#else
+  return a * b;
+#endif
+}
+NV_HD inline double AddRn(double a, double b)
+{
+#if defined(__CUDA_ARCH__)
+  return __dadd_rn(a, b);
+#else
+  return a + b;
+#endif
+}
+
+/**
+ * The points sorted into bricks and one batch of bricks, as both sides hold
+ * them. Precision, array by array:
+ *
+ * - Points: double, 3 a point, relative to the grid's origin in cells, sorted
+ *   by brick: TruncatedDistance's own array (GetSortedPoints), read in place
+ *   by the host launcher. Double as the CPU core's, so that the distances
+ *   are the same bits; in float a point 4096 cells from the origin would move
+ *   by up to 2.4e-4 cells (24 bits of 4096), and the band and phi0 with it.
+ * - BucketStart: int64, one a brick of the grid and one more: the points of
+ *   brick b are [BucketStart[b], BucketStart[b + 1]). 64 bits as the CPU
+ *   core's, for clouds of more than 4.29e9 points.
+ * - Bricks: int64, the batch's grid brick indices (NarrowBand::Bricks).
+ * - Distance: double, BrickNodes a brick of the batch, node n = i + 8 (j + 8
+ *   k) of batch brick a at BrickNodes a + n: d of eq. (6) in world units, as
+ *   ComputeBrick's (band.Distance holds double; phi0 reads it).
+ * - Covered: uint8, a brick of the batch: BrickWithin's answer (1: d <=
+ *   l - eta/2 on the whole brick, its distances not computed).
+ */
+struct DistanceArrays
+{
+  const double* Points = nullptr;
+  const std::int64_t* BucketStart = nullptr;
+  const std::int64_t* Bricks = nullptr;
+  double* Distance = nullptr;
+  std::uint8_t* Covered = nullptr;
+};
+
+/// The grid and the reach, computed once on the host by the expressions of
+/// ComputeBrick and BrickWithin (DistanceConstantsOf, nvDeviceDistance.h).
+struct DistanceConstants
+{
+  std::int64_t GridDims[3] = { 0, 0, 0 };
+  std::int64_t BrickDims[3] = { 0, 0, 0 };
+  double Spacing = 0.0;     ///< h
+  double Reach = 0.0;       ///< (l + eta/2) / h, in cells
+  double Reach2 = 0.0;      ///< Reach^2
+  std::int64_t Margin = 0;  ///< ceil(Reach) + 1: the bricks whose points may reach a brick
+  double Infinity = 0.0;    ///< +inf, made on the host
+  bool TestCover = false;   ///< whether CoveredKernel tests anything (radius > 0)
+  double Cover2 = 0.0;      ///< BrickWithin's r^2, r = radius / h (1 - 1e-9)
+  std::int64_t CoverMargin = 0; ///< ceil(r) + 1
+};
+
+/// The first node (i, j, k) and the last one within the grid of a brick, as
+/// TruncatedDistance::BrickFirstNode and ComputeBrick.
+NV_HD inline void BrickNodeRange(const DistanceConstants& c, std::int64_t brick, std::int64_t first[3], std::int64_t last[3])
+{
+  first[0] = (brick % c.BrickDims[0]) * 8;
+  brick /= c.BrickDims[0];
+  first[1] = (brick % c.BrickDims[1]) * 8;
+  first[2] = (brick / c.BrickDims[1]) * 8;
+  for (int a = 0; a < 3; ++a)
+  {
+    last[a] = (first[a] + 8 < c.GridDims[a] ? first[a] + 8 : c.GridDims[a]) - 1;
+  }
+}
+
+/// BrickWithin(Bricks[a], radius) for batch brick a: whether one point lies
+/// within r of every node of the brick. Any order of the points gives the
+/// same answer; the brick's own points first, as the CPU core, because they
+/// are the likeliest to cover it.
+struct CoveredKernel
+{
+  DistanceArrays A;
+  DistanceConstants C;
+  NV_HD bool CoversBrick(const double* x, const std::int64_t first[3], const std::int64_t last[3]) const
+  {
+    double far2 = 0.0;
+    for (int a = 0; a < 3; ++a)
+    {
+      const double below = ::fabs(x[a] - static_cast<double>(first[a]));
+      const double above = ::fabs(x[a] - static_cast<double>(last[a]));
+      const double far = below < above ? above : below; // std::max(below, above)
+      far2 = AddRn(far2, MulRn(far, far));
+    }
+    return far2 <= C.Cover2;
+  }
+  NV_HD bool ScanBucket(std::int64_t bucket, const std::int64_t first[3], const std::int64_t last[3]) const
+  {
+    for (std::int64_t p = A.BucketStart[bucket]; p < A.BucketStart[bucket + 1]; ++p)
+    {
+      if (CoversBrick(A.Points + 3 * p, first, last))
+      {
+        return true;
+      }
+    }
+    return false;
+  }
+  NV_HD void operator()(std::int64_t a) const
+  {
+    const std::int64_t brick = A.Bricks[a];
+    A.Covered[a] = 0;
+    if (!C.TestCover)
+    {
+      return;
+    }
+    std::int64_t first[3], last[3];
+    BrickNodeRange(C, brick, first, last);
+    if (ScanBucket(brick, first, last))
+    {
+      A.Covered[a] = 1;
+      return;
+    }
+    std::int64_t lo[3], hi[3];
+    for (int d = 0; d < 3; ++d)
+    {
+      lo[d] = (last[d] - C.CoverMargin > 0 ? last[d] - C.CoverMargin : 0) >> 3;
+      const std::int64_t h = (first[d] + C.CoverMargin) >> 3;
+      hi[d] = h < C.BrickDims[d] - 1 ? h : C.BrickDims[d] - 1;
+    }
+    for (std::int64_t bk = lo[2]; bk <= hi[2]; ++bk)
+    {
+      for (std::int64_t bj = lo[1]; bj <= hi[1]; ++bj)
+      {
+        for (std::int64_t bi = lo[0]; bi <= hi[0]; ++bi)
+        {
+          const std::int64_t bucket = bi + C.BrickDims[0] * (bj + C.BrickDims[1] * bk);
+          if (bucket != brick && ScanBucket(bucket, first, last))
+          {
+            A.Covered[a] = 1;
+            return;
+          }
+        }
+      }
+    }
+  }
+};
+
+/**
+ * d of eq. (6) at node t of the batch (brick a = t / 512, node n = t % 512
+ * in it): the least distance to the points of the bricks within Margin,
+ * truncated at the reach. A gather (each node reads the points) where
+ * ComputeBrick scatters (each point writes its box of nodes), with the
+ * same tests and the same arithmetic, so the same bits: a point counts for
+ * node (i, j, k) when the node lies in the point's box of eq. (7),
+ * x - reach <= i <= x + reach on each axis, and its squared
+ * distance is (dz^2 + dy^2) + dx^2 in that order; the minimum of the same
+ * values in any order is the same value. One thread a node: the threads of
+ * a block share one brick and read mostly the same points.
+ */
+struct DistanceKernel
+{
+  DistanceArrays A;
+  DistanceConstants C;
+  NV_HD void operator()(std::int64_t t) const
+  {
+    const std::int64_t a = t >> 9; // BrickNodes = 512
+    const int n = static_cast<int>(t & 511);
+    if (A.Covered[a])
+    {
+      return;
+    }
+    std::int64_t first[3], last[3];
+    BrickNodeRange(C, A.Bricks[a], first, last);
+    const std::int64_t node[3] = { first[0] + (n & 7), first[1] + ((n >> 3) & 7), first[2] + (n >> 6) };
+    const double at[3] = { static_cast<double>(node[0]), static_cast<double>(node[1]), static_cast<double>(node[2]) };
+    double best = C.Infinity;
+    if (node[0] <= last[0] && node[1] <= last[1] && node[2] <= last[2]) // else past the grid's end: +inf
+    {
+      // The bricks within Margin of this node (ComputeBrick takes those of
+      // the whole brick: the points of the others fail the box test below,
+      // those sorted into the grid's edge bricks included).
+      std::int64_t lo[3], hi[3];
+      for (int d = 0; d < 3; ++d)
+      {
+        lo[d] = (node[d] - C.Margin > 0 ? node[d] - C.Margin : 0) >> 3;
+        const std::int64_t h = (node[d] + C.Margin) >> 3;
+        hi[d] = h < C.BrickDims[d] - 1 ? h : C.BrickDims[d] - 1;
+      }
+      for (std::int64_t bk = lo[2]; bk <= hi[2]; ++bk)
+      {
+        for (std::int64_t bj = lo[1]; bj <= hi[1]; ++bj)
+        {
+          for (std::int64_t bi = lo[0]; bi <= hi[0]; ++bi)
+          {
+            const std::int64_t bucket = bi + C.BrickDims[0] * (bj + C.BrickDims[1] * bk);
+            for (std::int64_t p = A.BucketStart[bucket]; p < A.BucketStart[bucket + 1]; ++p)
+            {
+              const double* x = A.Points + 3 * p;
+              // ComputeBrick's box, ceil(x - reach) <= i <= floor(x + reach):
+              // for an integer i, ceil(y) <= i exactly when y <= i, and
+              // i <= floor(y) when i <= y, so the same test without the
+              // rounding functions (library calls on x86-64's baseline).
+              bool inBox = true;
+              for (int d = 0; d < 3; ++d)
+              {
+                inBox = inBox && x[d] - C.Reach <= at[d] && at[d] <= x[d] + C.Reach;
+              }
+              if (!inBox)
+              {
+                continue;
+              }
+              const double dx = at[0] - x[0];
+              const double dy = at[1] - x[1];
+              const double dz = at[2] - x[2];
+              const double dyz2 = AddRn(MulRn(dz, dz), MulRn(dy, dy));
+              if (dyz2 >= C.Reach2)
+              {
+                continue; // as ComputeBrick's row test; d2 >= Reach2 anyway
+              }
+              const double d2 = AddRn(dyz2, MulRn(dx, dx));
+              best = d2 < best ? d2 : best; // std::min(best, d2)
+            }
+          }
+        }
+      }
+    }
+    A.Distance[t] = best < C.Reach2 ? MulRn(::sqrt(best), C.Spacing) : C.Infinity;
+  }
+};
+
+// ---------------------------------------------------------------------------
+// The band's nodes of step 1 (eq. 7), picked from a batch's distances on the
+// device, so that only they come back to the host (nvNarrowBand.cxx's
+// ClassifyBrickNodes, written the same way).
+
+/**
+ * The band's nodes of one batch of bricks, as both sides hold them.
+ * Precision, array by array:
+ *
+ * - Distance, Covered, Bricks: DistanceArrays' (read here).
+ * - RedCount, BlackCount: int32, a brick: its band nodes of each colour
+ *   (at most 512).
+ * - First: int64, a brick: where its nodes go in NodeOffset and
+ *   NodeDistance, its red ones first, then its black ones (the host's sums
+ *   of the counts over the bricks before it in the batch).
+ * - NodeOffset: uint16, a band node: i + 8 (j + 8 k) in its brick, as
+ *   NarrowBand::Offset.
+ * - NodeDistance: double, a band node: its d, as NarrowBand::Distance.
+ * - Inside: uint64, 8 a brick: NarrowBand::Inside's bits (the nodes off the
+ *   band with d <= l - eta/2; all of a covered brick's).
+ */
+struct BandNodeArrays
+{
+  const std::int64_t* Bricks = nullptr;
+  const double* Distance = nullptr;
+  const std::uint8_t* Covered = nullptr;
+  std::int32_t* RedCount = nullptr;
+  std::int32_t* BlackCount = nullptr;
+  const std::int64_t* First = nullptr;
+  std::uint16_t* NodeOffset = nullptr;
+  double* NodeDistance = nullptr;
+  std::uint64_t* Inside = nullptr;
+};
+
+/// The band's bounds (nvNarrowBand.cxx's ClassifyBrickNodes).
+struct BandNodeConstants
+{
+  DistanceConstants Grid; ///< GridDims and BrickDims are read
+  double Lower = 0.0;     ///< l - eta/2
+  double Upper = 0.0;     ///< the reach l + eta/2, world units
+  bool Whole = false;     ///< Domain::WholeDomain: every node in the grid
+};
+
+/// Whether node n of a brick whose first node is `first` lies in the grid,
+/// and its colour (red: i + j + k even).
+NV_HD inline bool NodeInGrid(const DistanceConstants& c, const std::int64_t first[3], int n, bool& red)
+{
+  const std::int64_t i = first[0] + (n & 7), j = first[1] + ((n >> 3) & 7), k = first[2] + (n >> 6);
+  red = ((i + j + k) & 1) == 0;
+  return i < c.GridDims[0] && j < c.GridDims[1] && k < c.GridDims[2];
+}
+
+/// Counts batch brick c's band nodes of each colour and sets its Inside bits.
+struct BandCountKernel
+{
+  BandNodeArrays A;
+  BandNodeConstants C;
+  NV_HD void operator()(std::int64_t c) const
+  {
+    std::int32_t red = 0, black = 0;
+    std::uint64_t* inside = A.Inside + 8 * c;
+    for (int w = 0; w < 8; ++w)
+    {
+      inside[w] = A.Covered[c] ? ~std::uint64_t(0) : std::uint64_t(0);
+    }
+    if (!A.Covered[c])
+    {
+      std::int64_t first[3], last[3];
+      BrickNodeRange(C.Grid, A.Bricks[c], first, last);
+      const double* d = A.Distance + 512 * c;
+      for (int n = 0; n < 512; ++n)
+      {
+        bool isRed = false;
+        if (!NodeInGrid(C.Grid, first, n, isRed))
+        {
+          continue;
+        }
+        if (C.Whole || (C.Lower < d[n] && d[n] < C.Upper))
+        {
+          red += isRed ? 1 : 0;
+          black += isRed ? 0 : 1;
+        }
+        else if (d[n] <= C.Lower)
+        {
+          inside[n / 64] |= std::uint64_t(1) << (n % 64);
+        }
+      }
+    }
+    A.RedCount[c] = red;
+    A.BlackCount[c] = black;
+  }
+};
+
+/// Writes batch brick c's band nodes from First[c] on, red ones then black
+/// ones, each in ascending node order (as CollectBandNodes' lists).
+struct BandCompactKernel
+{
+  BandNodeArrays A;
+  BandNodeConstants C;
+  NV_HD void operator()(std::int64_t c) const
+  {
+    if (A.Covered[c])
+    {
+      return;
+    }
+    std::int64_t first[3], last[3];
+    BrickNodeRange(C.Grid, A.Bricks[c], first, last);
+    const double* d = A.Distance + 512 * c;
+    std::int64_t red = A.First[c], black = A.First[c] + A.RedCount[c];
+    for (int n = 0; n < 512; ++n)
+    {
+      bool isRed = false;
+      if (NodeInGrid(C.Grid, first, n, isRed) && (C.Whole || (C.Lower < d[n] && d[n] < C.Upper)))
+      {
+        const std::int64_t s = isRed ? red++ : black++;
+        A.NodeOffset[s] = static_cast<std::uint16_t>(n);
+        A.NodeDistance[s] = d[n];
+      }
+    }
+  }
 };
 
 } // namespace device

@@ -2,8 +2,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The two launchers of the device back end's kernels (nvDeviceKernels.h):
 // the host launcher runs them over the thread pool on any machine, the CUDA
-// launcher on a GPU. Each method is one kernel over a range of band nodes,
-// or a copy; the loops that call them are in nvDeviceEvolution.cxx.
+// launcher on a GPU. Each method is one kernel over a range of band nodes
+// or bricks, or a copy; the loops that call them are in nvDeviceEvolution.cxx
+// and nvDeviceDistance.cxx.
 //
 // The CUDA launcher is compiled only where CMake finds a CUDA compiler
 // (NARROWVOLUME_CUDA); without it, MakeCudaLauncher says the build has no
@@ -62,8 +63,36 @@ public:
   virtual double NormSquared(std::int64_t begin, std::int64_t end) = 0;
   /// phi's size + 2 values into `phi` (host memory), after the last kernel.
   virtual void Download(UninitializedVector<double>& phi) = 0;
-  /// Bytes the launcher holds on its device (0 for the host launcher).
+  /// The most bytes the launcher has held on its device at once (0 for the
+  /// host launcher).
   virtual double DeviceBytes() const { return 0.0; }
+
+  // The truncated distance of eq. (6) (DistanceKernel, CoveredKernel), used
+  // before the evolution: nvDeviceDistance.h calls these.
+
+  /// Holds the points sorted into bricks: `points` (3 per point, in cells
+  /// from the grid's origin) and `bucketStart` (numberOfBricks + 1), copied
+  /// to the device; the host launcher reads them in place, and they must
+  /// then outlive it (until FreePoints).
+  virtual void UploadPoints(
+    const double* points, std::int64_t numberOfPoints, const std::int64_t* bucketStart, std::int64_t numberOfBricks) = 0;
+  /// CoveredKernel on the `count` bricks `bricks` (host memory, kept until
+  /// the next batch), then DistanceKernel on their nodes; `distance`
+  /// (BrickNodes per brick) and `covered` (one per brick), host memory, get
+  /// them back, unless null (then they stay on the device for BandNodes).
+  virtual void DistanceBricks(const std::int64_t* bricks, std::int64_t count, const DistanceConstants& constants,
+    double* distance, std::uint8_t* covered) = 0;
+  /// After DistanceBricks on the same `count` bricks: BandCountKernel, the
+  /// sums of the counts (BandNodeArrays::First), BandCompactKernel; back
+  /// into host memory come the counts (`red`, `black`: count each), the
+  /// Inside bits (8 words a brick) and the band's nodes (`offset`,
+  /// `distance`: brick after brick, each brick's red nodes then its black
+  /// ones).
+  virtual void BandNodes(std::int64_t count, const BandNodeConstants& constants, std::int32_t* red,
+    std::int32_t* black, std::uint64_t* inside, UninitializedVector<std::uint16_t>& offset,
+    UninitializedVector<double>& distance) = 0;
+  /// Lets the points go (their device memory freed).
+  virtual void FreePoints() = 0;
 };
 
 /// The host launcher: the kernels over nv::ParallelFor and its reductions.

@@ -10,6 +10,7 @@
 #include "nvParallel.h"
 
 #include <algorithm>
+#include <vector>
 
 namespace nv
 {
@@ -22,9 +23,9 @@ namespace
 constexpr std::int64_t Grain = 4096;
 
 template <typename Kernel>
-void For(std::int64_t begin, std::int64_t end, const Kernel& kernel)
+void For(std::int64_t begin, std::int64_t end, const Kernel& kernel, std::int64_t grain = Grain)
 {
-  ParallelFor(begin, end, Grain, [&](std::int64_t first, std::int64_t last) {
+  ParallelFor(begin, end, grain, [&](std::int64_t first, std::int64_t last) {
     for (std::int64_t s = first; s < last; ++s)
     {
       kernel(s);
@@ -111,7 +112,68 @@ public:
     this->A = EvolutionArrays();
   }
 
+  void UploadPoints(const double* points, std::int64_t, const std::int64_t* bucketStart, std::int64_t) override
+  {
+    this->D.Points = points; // read in place
+    this->D.BucketStart = bucketStart;
+  }
+  void DistanceBricks(const std::int64_t* bricks, std::int64_t count, const DistanceConstants& constants,
+    double* distance, std::uint8_t* covered) override
+  {
+    if (!distance) // kept here for BandNodes
+    {
+      this->BatchDistance.resize(static_cast<std::size_t>(count * 512));
+      distance = this->BatchDistance.data();
+    }
+    if (!covered)
+    {
+      this->BatchCovered.resize(static_cast<std::size_t>(count));
+      covered = this->BatchCovered.data();
+    }
+    DistanceArrays& arrays = this->D;
+    arrays.Bricks = bricks;
+    arrays.Distance = distance;
+    arrays.Covered = covered;
+    For(0, count, CoveredKernel{ arrays, constants }, 8);
+    // 8 bricks of nodes a task: the nodes of a brick read the same points.
+    For(0, count * 512, DistanceKernel{ arrays, constants }, 8 * 512);
+  }
+  void BandNodes(std::int64_t count, const BandNodeConstants& constants, std::int32_t* red, std::int32_t* black,
+    std::uint64_t* inside, UninitializedVector<std::uint16_t>& offset, UninitializedVector<double>& distance) override
+  {
+    BandNodeArrays arrays;
+    arrays.Bricks = this->D.Bricks;
+    arrays.Distance = this->D.Distance;
+    arrays.Covered = this->D.Covered;
+    arrays.RedCount = red;
+    arrays.BlackCount = black;
+    arrays.Inside = inside;
+    For(0, count, BandCountKernel{ arrays, constants }, 8);
+    std::vector<std::int64_t> first(static_cast<std::size_t>(count));
+    std::int64_t total = 0;
+    for (std::int64_t c = 0; c < count; ++c)
+    {
+      first[c] = total;
+      total += red[c] + black[c];
+    }
+    offset.resize(static_cast<std::size_t>(total));
+    distance.resize(static_cast<std::size_t>(total));
+    arrays.First = first.data();
+    arrays.NodeOffset = offset.data();
+    arrays.NodeDistance = distance.data();
+    For(0, count, BandCompactKernel{ arrays, constants }, 8);
+  }
+  void FreePoints() override
+  {
+    this->D = DistanceArrays();
+    Free(this->BatchDistance);
+    std::vector<std::uint8_t>().swap(this->BatchCovered);
+  }
+
 private:
+  DistanceArrays D;
+  UninitializedVector<double> BatchDistance;
+  std::vector<std::uint8_t> BatchCovered;
   EvolutionArrays A;
   UninitializedVector<double> Phi;
   UninitializedVector<double> Previous;

@@ -3,6 +3,7 @@
 #include "nvReconstruction.h"
 
 #include "nvCommunicator.h"
+#include "nvDeviceDistance.h"
 #include "nvDeviceEvolution.h"
 #include "nvHoleProbe.h"
 #include "nvMemory.h"
@@ -540,8 +541,29 @@ bool Reconstruction::BuildBand(std::vector<double> xyz)
       grid, xyz.data(), static_cast<std::int64_t>(xyz.size() / 3), this->ThePlan.Scheme.Reach());
     std::vector<double>().swap(xyz);
     this->Stages.Add("distance", sorting);
-    this->Band =
-      BuildNarrowBand(distance, this->ThePlan.Scheme, this->TheMonitor, &this->Part, writeBrick, &this->Stages);
+    if (this->Launcher)
+    {
+      // Device GPU: the distances of eq. (6) and the band's nodes among
+      // them by the device's kernels, the CPU's bit for bit
+      // (nvDeviceDistance.h); the band's arrays and neighbours (steps 2
+      // and 3) on the host.
+      try
+      {
+        device::LauncherDistance onDevice(distance, *this->Launcher);
+        this->Band = BuildNarrowBand(
+          distance, this->ThePlan.Scheme, this->TheMonitor, &this->Part, writeBrick, &this->Stages, &onDevice);
+      }
+      catch (const device::DeviceError& error)
+      {
+        this->Launcher.reset();
+        return this->Fail(error.what());
+      }
+    }
+    else
+    {
+      this->Band =
+        BuildNarrowBand(distance, this->ThePlan.Scheme, this->TheMonitor, &this->Part, writeBrick, &this->Stages);
+    }
   }
   ReleaseFreedMemory();
   this->SetupTime = Seconds(start);

@@ -1,0 +1,73 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+// SPDX-License-Identifier: BSD-3-Clause
+#include "nvDeviceDistance.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace nv
+{
+namespace device
+{
+
+DistanceConstants DistanceConstantsOf(const TruncatedDistance& distance, double coverRadius)
+{
+  const Grid& grid = distance.GetGrid();
+  DistanceConstants c;
+  for (int a = 0; a < 3; ++a)
+  {
+    c.GridDims[a] = grid.Dims[a];
+    c.BrickDims[a] = distance.GetBrickDims()[a];
+  }
+  // As ComputeBrick: everything in cells.
+  c.Spacing = grid.Spacing;
+  c.Reach = distance.GetReach() / grid.Spacing;
+  c.Reach2 = c.Reach * c.Reach;
+  c.Margin = static_cast<std::int64_t>(std::ceil(c.Reach)) + 1;
+  c.Infinity = std::numeric_limits<double>::infinity();
+  // As BrickWithin: the radius in cells with its relative margin.
+  const double r = coverRadius / grid.Spacing * (1.0 - 1e-9);
+  c.TestCover = r > 0.0;
+  c.Cover2 = c.TestCover ? r * r : 0.0;
+  c.CoverMargin = c.TestCover ? static_cast<std::int64_t>(std::ceil(r)) + 1 : 0;
+  return c;
+}
+
+LauncherDistance::LauncherDistance(
+  const TruncatedDistance& distance, EvolutionLauncher& launcher, std::int64_t batch)
+  : Distance(distance)
+  , Launcher(launcher)
+  , Batch(std::max<std::int64_t>(1, batch))
+{
+  launcher.UploadPoints(distance.GetSortedPoints().data(), distance.GetNumberOfPoints(),
+    distance.GetBucketStart().data(), distance.GetNumberOfBricks());
+}
+
+LauncherDistance::~LauncherDistance()
+{
+  this->Launcher.FreePoints();
+}
+
+void LauncherDistance::Compute(
+  const std::int64_t* bricks, std::int64_t count, double coverRadius, double* distance, std::uint8_t* covered)
+{
+  this->Launcher.DistanceBricks(
+    bricks, count, DistanceConstantsOf(this->Distance, coverRadius), distance, covered);
+}
+
+void LauncherDistance::CollectNodes(const std::int64_t* bricks, std::int64_t count, double coverRadius,
+  double lower, double upper, bool whole, std::int32_t* red, std::int32_t* black, std::uint64_t* inside,
+  UninitializedVector<std::uint16_t>& offset, UninitializedVector<double>& distance)
+{
+  BandNodeConstants constants;
+  constants.Grid = DistanceConstantsOf(this->Distance, coverRadius);
+  constants.Lower = lower;
+  constants.Upper = upper;
+  constants.Whole = whole;
+  this->Launcher.DistanceBricks(bricks, count, constants.Grid, nullptr, nullptr); // kept on the device
+  this->Launcher.BandNodes(count, constants, red, black, inside, offset, distance);
+}
+
+} // namespace device
+} // namespace nv
