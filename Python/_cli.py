@@ -394,8 +394,9 @@ def main(argv: Optional[List[str]] = None) -> int:
             print("narrowvolume: warning: %s" % in_option_words(str(warning.message)), file=sys.stderr)
         if not args.quiet:
             print("narrowvolume: %s" % chosen(volume), file=_stdout(), flush=True)
-            if part(volume):
-                print("narrowvolume: %s" % part(volume), file=_stdout(), flush=True)
+            printed = part(volume)
+            if printed:
+                print("narrowvolume: %s" % printed, file=_stdout(), flush=True)
         if args.timings:
             print(timings(volume), file=_stdout(), flush=True)
         empty = [p for p in outputs if WRITERS[os.path.splitext(p)[1].lower()][2] == "surface"

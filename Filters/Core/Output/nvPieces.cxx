@@ -420,8 +420,17 @@ RemovedPieces RemoveSmallPieces(SurfaceArrays& surface, const PieceLimits& limit
 RemovedPieces RemoveSmallPieces(SurfaceSink& sink, double offset, const Grid& grid, float* phi,
   std::int64_t kBegin, std::int64_t layers)
 {
+  PieceLimits limits;
+  limits.Piece = SmallPieceVolume(offset);
+  limits.Void = SmallVoidVolume(offset);
+  return RemoveSmallPieces(sink, limits, grid, phi, kBegin, layers);
+}
+
+RemovedPieces RemoveSmallPieces(SurfaceSink& sink, const PieceLimits& limits, const Grid& grid, float* phi,
+  std::int64_t kBegin, std::int64_t layers)
+{
   SurfaceArrays arrays = sink.View();
-  const RemovedPieces removed = RemoveSmallPieces(arrays, offset, grid, phi, kBegin, layers);
+  const RemovedPieces removed = RemoveSmallPieces(arrays, limits, grid, phi, kBegin, layers);
   sink.Truncate(arrays);
   return removed;
 }

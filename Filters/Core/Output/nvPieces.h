@@ -89,6 +89,8 @@ RemovedPieces RemoveSmallPieces(SurfaceSink& sink, double offset, const Grid& gr
 /// The same with other limits (the printing part's cavities, nvPrintPart.h).
 RemovedPieces RemoveSmallPieces(SurfaceArrays& surface, const PieceLimits& limits, const Grid& grid, float* phi,
   std::int64_t kBegin, std::int64_t layers);
+RemovedPieces RemoveSmallPieces(SurfaceSink& sink, const PieceLimits& limits, const Grid& grid, float* phi,
+  std::int64_t kBegin, std::int64_t layers);
 
 } // namespace nv
 

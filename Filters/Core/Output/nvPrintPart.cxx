@@ -12,7 +12,6 @@
 #include <limits>
 #include <mutex>
 #include <numeric>
-#include <queue>
 #include <vector>
 
 namespace nv
@@ -571,10 +570,8 @@ bool MakePart(const Grid& grid, const Parameters& parameters, const float* outer
   limits.Void = minimumCavity > 0.0 ? minimumCavity : 0.0;
   limits.VoidShare = minimumCavity > 0.0 ? 0.0 : AutomaticCavityShare;
   limits.SpareLargest = false; // slivers of an open scan's closing are no part
+  const RemovedPieces removed = RemoveSmallPieces(sink, limits, grid, nullptr, 0, 0);
   SurfaceArrays arrays = sink.View();
-  const RemovedPieces removed = RemoveSmallPieces(arrays, limits, grid, nullptr, 0, 0);
-  sink.Truncate(arrays);
-  arrays = sink.View();
   report.MaterialVolume = removed.Volume;
   report.CavityVolume = removed.CavityVolume;
   report.MinimumCavityVolume = removed.VoidLimit;
@@ -600,9 +597,7 @@ bool MakePart(const Grid& grid, const Parameters& parameters, const float* outer
     PieceLimits again = limits;
     again.Void = report.MinimumCavityVolume;
     again.VoidShare = 0.0;
-    arrays = sink.View();
-    const RemovedPieces opened = RemoveSmallPieces(arrays, again, grid, nullptr, 0, 0);
-    sink.Truncate(arrays);
+    const RemovedPieces opened = RemoveSmallPieces(sink, again, grid, nullptr, 0, 0);
     arrays = sink.View();
     report.MaterialVolume = opened.Volume;
     report.DrainHoles = static_cast<std::int64_t>(drills.size());
