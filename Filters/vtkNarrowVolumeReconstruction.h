@@ -135,6 +135,16 @@ public:
     OUTER_SHEET = 1,
     INNER_SHEETS = 2
   };
+  /// The way down for the drain holes (SetDrainHoleAxis).
+  enum DrainHoleAxisType
+  {
+    DRAIN_MINUS_X = 0,
+    DRAIN_PLUS_X = 1,
+    DRAIN_MINUS_Y = 2,
+    DRAIN_PLUS_Y = 3,
+    DRAIN_MINUS_Z = 4,
+    DRAIN_PLUS_Z = 5
+  };
 
   ///@{
   /**
@@ -178,13 +188,14 @@ public:
   vtkNarrowVolumeSettingMacro(WallThickness, double);
   vtkNarrowVolumeSettingMacro(MinimumCavityVolume, double);
   vtkNarrowVolumeClampMacro(NumberOfDrainHoles, int, 0, 64);
+  vtkNarrowVolumeClampMacro(DrainHoleAxis, int, DRAIN_MINUS_X, DRAIN_PLUS_Z);
   vtkNarrowVolumeSettingMacro(DrainHoleDiameter, double);
   ///@}
 
   ///@{
   /**
    * The enumerated properties by their values' names (EdgeStoppingFunction,
-   * Domain, Device, Sheets: see the parameter reference).
+   * Domain, Device, Sheets, DrainHoleAxis: see the parameter reference).
    */
   void SetEdgeStoppingFunctionToEquation3() { this->SetEdgeStoppingFunction(EQUATION_3); }
   void SetEdgeStoppingFunctionToEquation4() { this->SetEdgeStoppingFunction(EQUATION_4); }
@@ -196,6 +207,12 @@ public:
   void SetSheetsToBoth() { this->SetSheets(BOTH_SHEETS); }
   void SetSheetsToOuter() { this->SetSheets(OUTER_SHEET); }
   void SetSheetsToInner() { this->SetSheets(INNER_SHEETS); }
+  void SetDrainHoleAxisToMinusX() { this->SetDrainHoleAxis(DRAIN_MINUS_X); }
+  void SetDrainHoleAxisToPlusX() { this->SetDrainHoleAxis(DRAIN_PLUS_X); }
+  void SetDrainHoleAxisToMinusY() { this->SetDrainHoleAxis(DRAIN_MINUS_Y); }
+  void SetDrainHoleAxisToPlusY() { this->SetDrainHoleAxis(DRAIN_PLUS_Y); }
+  void SetDrainHoleAxisToMinusZ() { this->SetDrainHoleAxis(DRAIN_MINUS_Z); }
+  void SetDrainHoleAxisToPlusZ() { this->SetDrainHoleAxis(DRAIN_PLUS_Z); }
   ///@}
 
   ///@{

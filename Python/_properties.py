@@ -233,9 +233,23 @@ PROPERTIES = (
     Property(
         "NumberOfDrainHoles", "Number Of Drain Holes", int, 0, 0, 64, (), None, "Printing", False, None,
         "With {WallThickness} above 0: drill this many holes through the wall from each cavity, at its lowest "
-        "points along z (at least three diameters apart), so that resin or powder drains out; orient the "
-        "cloud with the part's bottom towards -z first. The holes are made on the field, so the surface stays "
-        "closed and manifold. 0 (the default): none. Field data \"DrainHoles\" counts those made."),
+        "points along {DrainHoleAxis} (at least three diameters apart), so that resin or powder drains out. "
+        "The holes are made on the field, so the surface stays closed and manifold. 0 (the default): none. "
+        "Field data \"DrainHoles\" counts those made."),
+    Property(
+        "DrainHoleAxis", "Drain Hole Axis", int, 4, 0, 5,
+        (Choice("DRAIN_MINUS_X", "MinusX", 0, "-X"),
+         Choice("DRAIN_PLUS_X", "PlusX", 1, "+X"),
+         Choice("DRAIN_MINUS_Y", "MinusY", 2, "-Y"),
+         Choice("DRAIN_PLUS_Y", "PlusY", 3, "+Y"),
+         Choice("DRAIN_MINUS_Z", "MinusZ", 4, "-Z"),
+         Choice("DRAIN_PLUS_Z", "PlusZ", 5, "+Z")),
+        "DrainAxis", "Printing", True, None,
+        "The way down for the drain holes: each cavity's holes start at its lowest points along this "
+        "direction and run along it out through the wall. DRAIN_MINUS_Z (4, the default): down is -z, as a "
+        "part stands on its base; DRAIN_PLUS_Z (5) for a part that hangs from a resin printer's build plate; "
+        "DRAIN_MINUS_X (0), DRAIN_PLUS_X (1), DRAIN_MINUS_Y (2) and DRAIN_PLUS_Y (3) for a cloud whose up "
+        "is another axis."),
     Property(
         "DrainHoleDiameter", "Drain Hole Diameter", float, 0.0, None, None, (), None, "Printing", True, None,
         "The drain holes' diameter in world units. 0 (the default): twice {WallThickness}, at least four grid "

@@ -347,6 +347,13 @@ NB_MODULE(_core, m)
     .value("Both", nv::Sheets::Both)
     .value("Outer", nv::Sheets::Outer)
     .value("Inner", nv::Sheets::Inner);
+  nb::enum_<nv::DrainAxis>(m, "DrainAxis", nb::is_arithmetic(), "The way down for the drain holes.")
+    .value("MinusX", nv::DrainAxis::MinusX)
+    .value("PlusX", nv::DrainAxis::PlusX)
+    .value("MinusY", nv::DrainAxis::MinusY)
+    .value("PlusY", nv::DrainAxis::PlusY)
+    .value("MinusZ", nv::DrainAxis::MinusZ)
+    .value("PlusZ", nv::DrainAxis::PlusZ);
 
   // Every field of nv::Settings (the property table's, NV_SETTINGS); a
   // default-constructed one holds the defaults.

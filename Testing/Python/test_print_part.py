@@ -265,6 +265,28 @@ def test_drain_holes():
         assert off_axis.min() > 0.9 * radius, "no material across the hole at the bottom"
 
 
+@pytest.mark.parametrize("axis,down", [(1, (1, 0, 0)), (2, (0, -1, 0)), (5, (0, 0, 1))])
+def test_drain_hole_axis(axis, down):
+    # DrainHoleAxis: the hole goes where that axis points (+X, -Y, +Z),
+    # and the sphere's -z pole, the default's place, keeps its material.
+    h, l, w = 0.01, 0.1, 0.05
+    surface, figures, warnings = part_of(nvshapes.sphere_points(h), OffsetDistance=l, SampleSpacing=h,
+                                         WallThickness=w, NumberOfDrainHoles=1, DrainHoleAxis=axis)
+    assert warnings == []
+    check_closed(surface)
+    ids, points, _ = regions_of(surface)
+    assert len(np.unique(ids)) == 1, "the cavity opens to the outside"
+    assert figures["DrainHoles"] == [1]
+    down = np.array(down, float)
+    offset = points - 0.5
+    along = offset @ down
+    off_axis = np.linalg.norm(offset - np.outer(along, down), axis=1)
+    pole = along > 0.5 * math.sqrt(3) / 2  # within 30 degrees of the pole the axis points to
+    assert off_axis[pole].min() > 0.9 * w, "no material across the hole at the chosen pole"
+    bottom = offset[:, 2] < -0.5 * math.sqrt(3) / 2
+    assert np.hypot(offset[bottom, 0], offset[bottom, 1]).min() < 0.5 * w, "the -z pole keeps its material"
+
+
 def test_open_scan_warns():
     h, l, w = 0.01, 0.04, 0.03
     xyz = nvshapes.sphere_points(0.006)

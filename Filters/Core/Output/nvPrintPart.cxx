@@ -444,13 +444,16 @@ double MinimumWall(const Grid& grid, const SurfaceArrays& part, const std::vecto
 /// The drain holes: the cavities are the regions of nodes inside S deeper
 /// than l + w (6-connected) whose volume is at least `minimumVolume` (the
 /// cavities kept); in each, the nodes above its surface's lowest points
-/// along z, `count` of them at least three diameters apart, each the top of
-/// a hole straight down through the wall to 2 h past the outside.
+/// along `down`, `count` of them at least three diameters apart, each the
+/// top of a hole straight down through the wall to 2 h past the outside.
 std::vector<Drill> DrainHoles(const Grid& grid, const float* outer, const std::vector<float>& distance, double offset,
-  double wall, double minimumVolume, int count, double radius)
+  double wall, double minimumVolume, int count, double radius, DrainAxis down)
 {
   const std::int64_t nodes = grid.NumberOfNodes();
   const double h = grid.Spacing, deep = offset + wall;
+  const int axis = static_cast<int>(down) / 2;               // the axis down is along,
+  const int sign = static_cast<int>(down) % 2 == 0 ? -1 : 1; // which way along it,
+  const int across[2] = { (axis + 1) % 3, (axis + 2) % 3 };  // and the plane across it
   auto cavity = [&](std::int64_t n) { return outer[n] > 0.0f && distance[n] >= deep; };
   std::vector<std::int32_t> label(static_cast<std::size_t>(nodes), -1);
   std::vector<Drill> drills;
@@ -497,7 +500,9 @@ std::vector<Drill> DrainHoles(const Grid& grid, const float* outer, const std::v
     // D - (l + w) under it (the surface is D = l + w); the region sorted by
     // that height (then its node order).
     const auto height = [&](std::int64_t n) {
-      return grid.Origin[2] + static_cast<double>(n / (grid.Dims[0] * grid.Dims[1])) * h - (distance[n] - deep);
+      std::int64_t ijk[3];
+      grid.Ijk(n, ijk);
+      return -sign * (grid.Origin[axis] + static_cast<double>(ijk[axis]) * h) - (distance[n] - deep);
     };
     std::stable_sort(region.begin(), region.end(), [&](std::int64_t u, std::int64_t v) { return height(u) < height(v); });
     std::vector<std::array<double, 3>> tops;
@@ -517,8 +522,8 @@ std::vector<Drill> DrainHoles(const Grid& grid, const float* outer, const std::v
       bool apart = true;
       for (const auto& t : tops)
       {
-        const double dx = t[0] - x[0], dy = t[1] - x[1];
-        apart = apart && dx * dx + dy * dy >= 36.0 * radius * radius;
+        const double du = t[across[0]] - x[across[0]], dv = t[across[1]] - x[across[1]];
+        apart = apart && du * du + dv * dv >= 36.0 * radius * radius;
       }
       if (!apart)
       {
@@ -526,18 +531,19 @@ std::vector<Drill> DrainHoles(const Grid& grid, const float* outer, const std::v
       }
       tops.push_back(x);
       // Down through the wall until outside S, then 2 h and a radius more.
-      std::int64_t k = ijk[2];
-      while (k > 0 && outer[grid.Index(ijk[0], ijk[1], k)] > 0.0f)
+      std::int64_t at[3] = { ijk[0], ijk[1], ijk[2] };
+      while (at[axis] + sign >= 0 && at[axis] + sign < grid.Dims[axis] &&
+        outer[grid.Index(at[0], at[1], at[2])] > 0.0f)
       {
-        --k;
+        at[axis] += sign;
       }
       Drill drill;
       for (int a = 0; a < 3; ++a)
       {
         drill.A[a] = drill.B[a] = x[a];
       }
-      drill.A[2] += radius;
-      drill.B[2] = grid.Origin[2] + static_cast<double>(k) * h - 2.0 * h - radius;
+      drill.A[axis] -= sign * radius;
+      drill.B[axis] = grid.Origin[axis] + static_cast<double>(at[axis]) * h + sign * (2.0 * h + radius);
       drill.Radius = radius;
       drills.push_back(drill);
     }
@@ -547,7 +553,7 @@ std::vector<Drill> DrainHoles(const Grid& grid, const float* outer, const std::v
 } // namespace
 
 bool MakePart(const Grid& grid, const Parameters& parameters, const float* outer, double wall, double minimumCavity,
-  int drainHoles, double drainDiameter, SurfaceSink& sink, Monitor* monitor, PrintReport& report)
+  int drainHoles, double drainDiameter, DrainAxis down, SurfaceSink& sink, Monitor* monitor, PrintReport& report)
 {
   const double l = parameters.OffsetDistance;
   // The outer sheet: phi = 0 with the cavities filled.
@@ -585,7 +591,7 @@ bool MakePart(const Grid& grid, const Parameters& parameters, const float* outer
     // merged ones go as before (by the same volume).
     const double radius = 0.5 * (drainDiameter > 0.0 ? drainDiameter : std::max(2.0 * wall, 4.0 * grid.Spacing));
     const std::vector<Drill> drills =
-      DrainHoles(grid, outer, distance, l, wall, report.MinimumCavityVolume, drainHoles, radius);
+      DrainHoles(grid, outer, distance, l, wall, report.MinimumCavityVolume, drainHoles, radius, down);
     const PartField drilled(grid, outer, distance, l, wall, drills);
     SurfaceArrays none = sink.View();
     none.NumberOfPoints = none.NumberOfTriangles = 0;

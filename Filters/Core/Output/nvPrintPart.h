@@ -28,8 +28,9 @@
 // brick wholly beyond that is one value.
 //
 // Drain holes (NumberOfDrainHoles): from the lowest points of each cavity
-// kept, straight down (-z) through the wall, f = min(f, distance to the
-// hole's surface), so the surface stays closed and manifold.
+// kept, straight down through the wall (down: DrainHoleAxis, -z by
+// default), f = min(f, distance to the hole's surface), so the surface
+// stays closed and manifold.
 //
 // Cavities: a closed part of the surface around a region outside it is a
 // cavity; those smaller than MinimumCavityVolume (0: 1 % of the largest)
@@ -48,6 +49,18 @@
 namespace nv
 {
 class Monitor;
+
+/// The way down for the drain holes (DrainHoleAxis): axis value / 2, towards
+/// its low end for even values.
+enum class DrainAxis
+{
+  MinusX = 0,
+  PlusX = 1,
+  MinusY = 2,
+  PlusY = 3,
+  MinusZ = 4,
+  PlusZ = 5
+};
 
 /// What the part is: its figures for the print.
 struct PrintReport
@@ -68,13 +81,13 @@ struct PrintReport
  * KeepSheets(Outer) filled the cavities (phi > 0: inside the outer sheet).
  * wall: w; minimumCavity: cavities below it are merged into the wall (0:
  * below 1 % of the largest). drainHoles: holes drilled from each cavity
- * kept, at its lowest points along z, of diameter drainDiameter (0: 2 w, at
- * least 4 h): f is made again with them (f = min(f, the distance to the
- * hole's surface)) and contoured again, so the part stays closed. Returns
- * false if the monitor stopped it.
+ * kept, at its lowest points along `down`, of diameter drainDiameter (0:
+ * 2 w, at least 4 h): f is made again with them (f = min(f, the distance
+ * to the hole's surface)) and contoured again, so the part stays closed.
+ * Returns false if the monitor stopped it.
  */
 bool MakePart(const Grid& grid, const Parameters& parameters, const float* outer, double wall, double minimumCavity,
-  int drainHoles, double drainDiameter, SurfaceSink& sink, Monitor* monitor, PrintReport& report);
+  int drainHoles, double drainDiameter, DrainAxis down, SurfaceSink& sink, Monitor* monitor, PrintReport& report);
 
 } // namespace nv
 

@@ -329,7 +329,8 @@ bool MakeSurface(Reconstruction& run, SurfaceSink& sink, const VolumeArrays& den
       WithThreads(settings.NumberOfThreads, [&]() {
         KeepSheets(grid, outer.data(), Sheets::Outer);
         made = MakePart(grid, run.GetParameters(), outer.data(), settings.WallThickness,
-          settings.MinimumCavityVolume, settings.NumberOfDrainHoles, settings.DrainHoleDiameter, sink, monitor,
+          settings.MinimumCavityVolume, settings.NumberOfDrainHoles, settings.DrainHoleDiameter, settings.DrainHoleAxis,
+          sink, monitor,
           outcome.Print);
       });
       return made;

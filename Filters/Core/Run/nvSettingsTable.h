@@ -38,6 +38,7 @@
   X(double, WallThickness, 0.0) \
   X(double, MinimumCavityVolume, 0.0) \
   X(int, NumberOfDrainHoles, 0) \
+  X(nv::DrainAxis, DrainHoleAxis, nv::DrainAxis(4)) \
   X(double, DrainHoleDiameter, 0.0)
 
 // NV_SETTINGS_RANGES(X) calls X(Name, Low, High) for each property whose
@@ -53,7 +54,8 @@
   X(MemoryLimit, 0.0, 1000000000000.0) \
   X(Device, 0, 2) \
   X(Sheets, 0, 2) \
-  X(NumberOfDrainHoles, 0, 64)
+  X(NumberOfDrainHoles, 0, 64) \
+  X(DrainHoleAxis, 0, 5)
 
 // NV_PANEL_LABELS(X) calls X(Name, "Label") for each property: the VTK
 // filter's messages name the properties by their panel labels in ParaView.
@@ -84,6 +86,7 @@
   X(WallThickness, "Wall Thickness") \
   X(MinimumCavityVolume, "Minimum Cavity Volume") \
   X(NumberOfDrainHoles, "Number Of Drain Holes") \
+  X(DrainHoleAxis, "Drain Hole Axis") \
   X(DrainHoleDiameter, "Drain Hole Diameter")
 
 #endif
