@@ -302,12 +302,13 @@ def part(volume: vtkImageData) -> str:
         return field.GetArray(name).GetComponent(0, component)
 
     bounds = [value("PartBounds", c) for c in range(6)]
-    kept, removed = int(value("KeptCavities")), int(value("RemovedCavities"))
+    kept, removed, holes = int(value("KeptCavities")), int(value("RemovedCavities")), int(value("DrainHoles"))
     return ("part to print: %.6g x %.6g x %.6g, wall %.6g (at least %.6g measured), material %.6g, "
-            "%d %s kept (%.6g), %d smaller than %.6g merged into the wall" % (
+            "%d %s kept (%.6g), %d smaller than %.6g merged into the wall%s" % (
                 bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4], value("WallThickness"),
                 value("MinimumWallThickness"), value("MaterialVolume"), kept, "cavity" if kept == 1 else "cavities",
-                value("CavityVolume"), removed, value("MinimumCavityVolume")))
+                value("CavityVolume"), removed, value("MinimumCavityVolume"),
+                ", %d drain %s" % (holes, "hole" if holes == 1 else "holes") if holes else ""))
 
 
 def timings(volume: vtkImageData) -> str:

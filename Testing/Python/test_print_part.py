@@ -315,10 +315,12 @@ def test_command_line(tmp_path):
     out = tmp_path / "part.stl"
     run = subprocess.run(nvtesting.python_command() + ["-m", "narrowvolume", str(cloud), "-o", str(out),
                                                        "--offset-distance", "0.1", "--sample-spacing", "0.01",
-                                                       "--wall-thickness", "0.05"],
+                                                       "--wall-thickness", "0.05", "--number-of-drain-holes", "1",
+                                                       "--drain-hole-axis", "plus-x"],
                          capture_output=True, text=True)
     assert run.returncode == 0, run.stderr
     line = [s for s in run.stdout.splitlines() if "part to print" in s]
     assert len(line) == 1, run.stdout
     assert "wall 0.05 " in line[0] and "1 cavity kept" in line[0], line[0]
+    assert line[0].endswith(", 1 drain hole"), line[0]
     assert out.stat().st_size > 0
