@@ -241,6 +241,19 @@ def test_small_cavity_merged():
     assert 0.85 * small_cavity < merged < small_cavity
 
 
+def test_same_part_on_any_number_of_threads():
+    # The distance to the outer sheet is swept in parallel (atomic least
+    # keys, in rounds): the part must not depend on the threads' order.
+    h, l, w = 0.01, 0.1, 0.05
+    xyz = nvshapes.sphere_points(h)
+    parts = [part_of(xyz, OffsetDistance=l, SampleSpacing=h, WallThickness=w, NumberOfDrainHoles=2,
+                     NumberOfThreads=threads)[0] for threads in (1, 2, 3)]
+    arrays = [(vtk_to_numpy(p.GetPoints().GetData()), vtk_to_numpy(p.GetPolys().GetConnectivityArray()))
+              for p in parts]
+    for points, triangles in arrays[1:]:
+        assert np.array_equal(points, arrays[0][0]) and np.array_equal(triangles, arrays[0][1])
+
+
 def test_drain_holes():
     # One hole from the sphere's cavity, at its lowest point: the cavity
     # opens (one surface), the part stays closed and manifold, the hole is
