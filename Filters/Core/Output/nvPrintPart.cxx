@@ -8,12 +8,12 @@
 #include "nvTruncatedDistance.h"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <cstring>
 #include <limits>
 #include <mutex>
-#include <numeric>
 #include <vector>
 
 namespace nv
@@ -25,14 +25,19 @@ namespace
 constexpr double AutomaticCavityShare = 0.01;
 
 /// Points in a k-d tree (each range of the array split at its middle point
-/// along its widest axis), for the distance from a place to the nearest.
+/// along its widest axis, in place), for the distance from a place to the
+/// nearest.
 class NearestPoints
 {
 public:
   NearestPoints(const double* points, std::int64_t n)
-    : Points(points, points + 3 * n)
+    : Points(static_cast<std::size_t>(n))
     , Axis(static_cast<std::size_t>(n), 0)
   {
+    for (std::int64_t p = 0; p < n; ++p)
+    {
+      std::copy(points + 3 * p, points + 3 * p + 3, this->Points[p].begin());
+    }
     this->Build(0, n);
   }
 
@@ -40,7 +45,7 @@ public:
   double Distance(const double x[3], double cap) const
   {
     double best = cap * cap;
-    this->Search(x, 0, static_cast<std::int64_t>(this->Axis.size()), best);
+    this->Search(x, 0, static_cast<std::int64_t>(this->Points.size()), best);
     return std::sqrt(best);
   }
 
@@ -53,17 +58,13 @@ private:
     {
       return;
     }
-    double low[3], high[3];
-    for (int a = 0; a < 3; ++a)
-    {
-      low[a] = high[a] = this->Points[3 * begin + a];
-    }
+    std::array<double, 3> low = this->Points[begin], high = this->Points[begin];
     for (std::int64_t p = begin; p < end; ++p)
     {
       for (int a = 0; a < 3; ++a)
       {
-        low[a] = std::min(low[a], this->Points[3 * p + a]);
-        high[a] = std::max(high[a], this->Points[3 * p + a]);
+        low[a] = std::min(low[a], this->Points[p][a]);
+        high[a] = std::max(high[a], this->Points[p][a]);
       }
     }
     int axis = 0;
@@ -73,16 +74,8 @@ private:
     }
     // The middle point along the axis, the lower ones before it.
     const std::int64_t middle = begin + (end - begin) / 2;
-    std::vector<std::int64_t> order(static_cast<std::size_t>(end - begin));
-    std::iota(order.begin(), order.end(), begin);
-    std::nth_element(order.begin(), order.begin() + (middle - begin), order.end(),
-      [&](std::int64_t u, std::int64_t v) { return this->Points[3 * u + axis] < this->Points[3 * v + axis]; });
-    std::vector<double> moved(3 * order.size());
-    for (std::size_t i = 0; i < order.size(); ++i)
-    {
-      std::copy(&this->Points[3 * order[i]], &this->Points[3 * order[i]] + 3, &moved[3 * i]);
-    }
-    std::copy(moved.begin(), moved.end(), this->Points.begin() + 3 * begin);
+    std::nth_element(this->Points.begin() + begin, this->Points.begin() + middle, this->Points.begin() + end,
+      [axis](const std::array<double, 3>& u, const std::array<double, 3>& v) { return u[axis] < v[axis]; });
     this->Axis[middle] = static_cast<char>(axis);
     this->Build(begin, middle);
     this->Build(middle + 1, end);
@@ -101,7 +94,7 @@ private:
     const std::int64_t middle = begin + (end - begin) / 2;
     const int axis = this->Axis[middle];
     best = std::min(best, this->Squared(x, middle));
-    const double side = x[axis] - this->Points[3 * middle + axis];
+    const double side = x[axis] - this->Points[middle][axis];
     if (side < 0.0)
     {
       this->Search(x, begin, middle, best);
@@ -122,12 +115,12 @@ private:
 
   double Squared(const double x[3], std::int64_t p) const
   {
-    const double dx = this->Points[3 * p] - x[0], dy = this->Points[3 * p + 1] - x[1],
-                 dz = this->Points[3 * p + 2] - x[2];
+    const std::array<double, 3>& y = this->Points[p];
+    const double dx = y[0] - x[0], dy = y[1] - x[1], dz = y[2] - x[2];
     return dx * dx + dy * dy + dz * dz;
   }
 
-  std::vector<double> Points;
+  std::vector<std::array<double, 3>> Points;
   std::vector<char> Axis; ///< the split axis of the range whose middle is this point
 };
 
