@@ -170,7 +170,45 @@ public:
     std::vector<std::uint8_t>().swap(this->BatchCovered);
   }
 
+  void ContourCounts(const ContourArrays& band, std::int64_t, const ContourConstants& constants,
+    std::int32_t* vertices, std::int32_t* triangles) override
+  {
+    // The band's arrays read in place; 8 bricks a task, as the CPU core's surface.
+    this->K = band;
+    this->KC = constants;
+    this->Psi.resize(static_cast<std::size_t>(512 * band.NumberOfBricks));
+    this->Cut.resize(static_cast<std::size_t>(CutWords * band.NumberOfCutBricks));
+    this->Above.resize(static_cast<std::size_t>(AboveRows * band.NumberOfCutBricks));
+    this->K.Psi = this->Psi.data();
+    this->K.Cut = this->Cut.data();
+    this->K.Above = this->Above.data();
+    this->K.VertexCount = vertices;
+    this->K.TriangleCount = triangles;
+    For(0, band.NumberOfBricks, PsiKernel{ this->K, this->KC }, 8);
+    For(0, band.NumberOfCutBricks, CutCellsKernel{ this->K, this->KC }, 8);
+  }
+  void ContourGeometry(const std::int64_t* firstVertex, const std::int64_t* firstTriangle, std::int64_t,
+    std::int64_t, double* points, float* normals, long long* triangles) override
+  {
+    this->K.FirstVertex = firstVertex;
+    this->K.FirstTriangle = firstTriangle;
+    this->K.Points = points; // the sink's arrays, written in place
+    this->K.Normals = normals;
+    this->K.Triangles = triangles;
+    For(0, this->K.NumberOfCutBricks, VerticesKernel{ this->K, this->KC }, 8);
+    For(0, this->K.NumberOfCutBricks, TrianglesKernel{ this->K, this->KC }, 8);
+    this->K = ContourArrays();
+    Free(this->Psi);
+    Free(this->Cut);
+    Free(this->Above);
+  }
+
 private:
+  ContourArrays K;
+  ContourConstants KC;
+  UninitializedVector<float> Psi;
+  UninitializedVector<std::uint64_t> Cut;
+  UninitializedVector<std::uint16_t> Above;
   DistanceArrays D;
   UninitializedVector<double> BatchDistance;
   std::vector<std::uint8_t> BatchCovered;

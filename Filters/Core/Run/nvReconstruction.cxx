@@ -5,6 +5,7 @@
 #include "nvCommunicator.h"
 #include "nvDeviceDistance.h"
 #include "nvDeviceEvolution.h"
+#include "nvDeviceSurface.h"
 #include "nvHoleProbe.h"
 #include "nvMemory.h"
 #include "nvParallel.h"
@@ -750,11 +751,58 @@ bool Reconstruction::ExtractSurface(SurfaceSink& sink) const
   }
   bool done = false;
   WithThreads(this->TheSettings.NumberOfThreads, [&]() {
+    if (this->SurfaceOnDevice(sink))
+    {
+      done = !(this->TheMonitor && this->TheMonitor->Aborted());
+      return;
+    }
     const BandField field(this->Band, this->GetPhi(), this->ThePlan.Scheme);
     done = ContourBricks(
       this->ThePlan.TheGrid, field, sink, this->Part.Owned.Begin, this->Part.Owned.End, this->TheMonitor);
   });
   return done;
+}
+
+bool Reconstruction::SurfaceOnDevice(SurfaceSink& sink) const
+{
+  // 7, with Device GPU: the surface by the device back end's kernels
+  // (nvDeviceSurface.h), the CPU's through the host launcher. The band and
+  // phi go to the device, the vertices and triangles come back. Should the
+  // device fail here, the part of the surface it gave is dropped and the CPU
+  // makes it (false; the error in SurfaceDeviceError).
+  this->SurfaceError.clear();
+  if (this->Used.empty() || this->Used == "CPU" || this->Comm)
+  {
+    return false;
+  }
+  const SurfaceArrays before = sink.View();
+  try
+  {
+    std::string why;
+    std::unique_ptr<device::EvolutionLauncher> launcher =
+      this->TheSettings.DeviceOnHost ? device::MakeHostLauncher() : device::MakeCudaLauncher(why);
+    if (!launcher)
+    {
+      this->SurfaceError = why;
+      return false;
+    }
+    if (this->TheMonitor)
+    {
+      this->TheMonitor->Progress(0.0);
+    }
+    ContourOnDevice(this->ThePlan.TheGrid, this->Band, this->GetPhi(), this->ThePlan.Scheme, *launcher, sink);
+    if (this->TheMonitor)
+    {
+      this->TheMonitor->Progress(1.0);
+    }
+  }
+  catch (const device::DeviceError& error)
+  {
+    this->SurfaceError = error.what();
+    sink.Truncate(before);
+    return false;
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------
