@@ -18,7 +18,8 @@
 //                           and the whole run with Device GPU (the property)
 //                           against Device CPU: the surfaces the same bit
 //                           for bit (within 0.05 h on a GPU), both sheets
-//                           closed;
+//                           closed, and with the Volume output its dense
+//                           arrays (filled on the device) the CPU's;
 //   TestCoreDevice cuda     the same through the CUDA launcher, on a GPU
 //                           (scripts/test-gpu.sh): phi within 1e-9 of the
 //                           CPU core's (fused multiply-adds and the
@@ -43,6 +44,7 @@
 #include "nvSurfaceField.h"
 #include "nvTestUtilities.h"
 #include "nvTruncatedDistance.h"
+#include "nvVolume.h"
 
 #include <algorithm>
 #include <cmath>
@@ -444,11 +446,60 @@ void TestDistance()
   CompareDistance("torus, whole domain", TorusPoints(8000, 0.6, 0.25), p, false);
 }
 
-/// The whole run (nv::Reconstruction) with Device GPU against Device CPU.
-void CompareRuns(const char* what, const std::vector<double>& xyz, nv::Settings settings)
+/// The dense arrays of a run (Reconstruction::RequestVolume).
+struct Dense
+{
+  std::vector<float> Phi, InitialPhi, Distance;
+  std::vector<unsigned char> Band;
+  /// Asks `run` to fill them on the whole grid.
+  void Request(nv::Reconstruction& run)
+  {
+    run.RequestVolume(0, [this, &run](std::int64_t kBegin, std::int64_t kEnd) {
+      const std::size_t n =
+        static_cast<std::size_t>(run.GetGrid().Dims[0] * run.GetGrid().Dims[1] * (kEnd - kBegin));
+      // Set to NaN first: a node the run leaves unset then differs.
+      this->Phi.assign(n, std::nanf(""));
+      this->InitialPhi.assign(n, std::nanf(""));
+      this->Distance.assign(n, std::nanf(""));
+      this->Band.assign(n, 7);
+      nv::VolumeArrays arrays;
+      arrays.Phi = this->Phi.data();
+      arrays.InitialPhi = this->InitialPhi.data();
+      arrays.Distance = this->Distance.data();
+      arrays.Band = this->Band.data();
+      return arrays;
+    });
+  }
+};
+
+/// The largest difference of two float arrays (+inf where their sizes differ or a value is NaN).
+double LargestDifference(const std::vector<float>& a, const std::vector<float>& b)
+{
+  if (a.size() != b.size() || a.empty())
+  {
+    return 1e300;
+  }
+  double largest = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i)
+  {
+    const double d = std::fabs(static_cast<double>(a[i]) - b[i]);
+    largest = std::isnan(d) ? 1e300 : std::max(largest, d);
+  }
+  return largest;
+}
+
+/// The whole run (nv::Reconstruction) with Device GPU against Device CPU;
+/// with `volume`, the dense arrays too (the device's DenseBrickKernel and
+/// DenseBandKernel against VolumeWriter).
+void CompareRuns(const char* what, const std::vector<double>& xyz, nv::Settings settings, bool volume = false)
 {
   settings.Device = nv::ComputeDevice::CPU;
   nv::Reconstruction cpu(settings, nullptr, nullptr);
+  Dense cpuDense, gpuDense;
+  if (volume)
+  {
+    cpuDense.Request(cpu);
+  }
   NV_CHECK(cpu.Run(xyz));
   nv::SurfaceMesh cpuMesh;
   NV_CHECK(cpu.ExtractSurface(cpuMesh));
@@ -457,6 +508,10 @@ void CompareRuns(const char* what, const std::vector<double>& xyz, nv::Settings 
   settings.Device = nv::ComputeDevice::GPU;
   settings.DeviceOnHost = !OnGpu;
   nv::Reconstruction gpu(settings, nullptr, nullptr);
+  if (volume)
+  {
+    gpuDense.Request(gpu);
+  }
   const bool ran = gpu.Run(xyz);
   if (!ran)
   {
@@ -491,6 +546,22 @@ void CompareRuns(const char* what, const std::vector<double>& xyz, nv::Settings 
   NV_CHECK(apart <= 0.05 * h);
   NV_CHECK(gpuClosed && cpuClosed);
   NV_CHECK(gpuPieces == 2 && cpuPieces == 2); // the outer and the inner sheet
+  if (volume)
+  {
+    // Through the host launcher the CPU's values bit for bit; on a GPU phi
+    // within float's rounding of the last bits of the evolution's phi.
+    const double phi = LargestDifference(gpuDense.Phi, cpuDense.Phi);
+    const double phi0 = LargestDifference(gpuDense.InitialPhi, cpuDense.InitialPhi);
+    const double d = LargestDifference(gpuDense.Distance, cpuDense.Distance);
+    const bool band = !cpuDense.Band.empty() && SameValues(gpuDense.Band, cpuDense.Band);
+    std::printf("%s, the dense volume filled on the device: %zu nodes; the largest difference from the CPU's: "
+                "phi %.3g, phi0 %.3g, d %.3g; band flags the same: %s\n",
+      what, gpuDense.Phi.size(), phi, phi0, d, band ? "yes" : "no");
+    NV_CHECK(phi <= (OnGpu ? 1e-6 : 0.0));
+    NV_CHECK(phi0 <= (OnGpu ? 1e-6 : 0.0));
+    NV_CHECK(d == 0.0);
+    NV_CHECK(band);
+  }
 }
 
 void TestRuns()
@@ -504,6 +575,8 @@ void TestRuns()
   settings.OffsetDistance = 0.08;
   settings.SampleSpacing = 0.02;
   CompareRuns("torus", TorusPoints(20000, 0.6, 0.25), settings);
+  settings.OutputVolume = true;
+  CompareRuns("torus, the Volume output", TorusPoints(20000, 0.6, 0.25), settings, true);
 }
 
 /// Device GPU where the GPU is missing: an error that says what is missing.

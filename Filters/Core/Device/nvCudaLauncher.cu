@@ -128,6 +128,7 @@ public:
   {
     // Errors are ignored here: the destructor may run while a DeviceError unwinds.
     this->ReleaseContour();
+    this->ReleaseDense();
     for (void* memory : { static_cast<void*>(this->Partial), static_cast<void*>(this->Neighbor),
            static_cast<void*>(this->Distance), static_cast<void*>(this->A.Phi), static_cast<void*>(this->A.Previous),
            static_cast<void*>(this->A.Coupling), static_cast<void*>(this->A.Decay), static_cast<void*>(this->Points),
@@ -374,7 +375,72 @@ public:
     this->ReleaseContour();
   }
 
+  void DenseBegin(const DenseArrays& arrays, const DenseConstants& constants) override
+  {
+    this->ReleaseDense();
+    this->HostDense = arrays;
+    this->VC = constants;
+    const std::int64_t nodes = constants.Nodes();
+    if (arrays.Phi)
+      this->V.Phi = Allocate<float>(nodes, this->Bytes, this->Peak, "the dense phi");
+    if (arrays.InitialPhi)
+      this->V.InitialPhi = Allocate<float>(nodes, this->Bytes, this->Peak, "the dense phi0");
+    if (arrays.Distance)
+      this->V.Distance = Allocate<float>(nodes, this->Bytes, this->Peak, "the dense distances");
+    if (arrays.Band)
+      this->V.Band = Allocate<std::uint8_t>(nodes, this->Bytes, this->Peak, "the dense band flags");
+    this->For(0, nodes, DenseClearKernel{ this->V, constants });
+  }
+  void DenseBricks(std::int64_t count) override
+  {
+    DistanceArrays batch;
+    batch.Bricks = this->Bricks;
+    batch.Distance = this->BrickDistance;
+    batch.Covered = this->Covered;
+    this->For(0, count * 512, DenseBrickKernel{ batch, this->V, this->VC });
+  }
+  void DenseBand(const DenseBandArrays& band, std::int64_t numberOfBricks, std::int64_t numberOfNodes) override
+  {
+    DenseBandArrays onDevice;
+    onDevice.Bricks = this->ToDevice(band.Bricks, numberOfBricks, "the band's bricks");
+    onDevice.RedStart = this->ToDevice(band.RedStart, numberOfBricks + 1, "the band's red starts");
+    onDevice.BlackStart = this->ToDevice(band.BlackStart, numberOfBricks + 1, "the band's black starts");
+    onDevice.Offset = this->ToDevice(band.Offset, numberOfNodes, "the band's node places");
+    // The evolution's phi, still here (Download copied it, kept it).
+    onDevice.Phi = this->A.Phi && this->A.Size == numberOfNodes ? this->A.Phi
+                                                                : this->ToDevice(band.Phi, numberOfNodes, "phi");
+    this->For(0, numberOfBricks, DenseBandKernel{ onDevice, this->V, this->VC });
+    Check(cudaDeviceSynchronize(), "the dense volume's band");
+    this->ReleaseContour(); // the band's copies
+  }
+  void DenseDownload() override
+  {
+    const std::int64_t nodes = this->VC.Nodes();
+    const std::size_t floats = sizeof(float) * static_cast<std::size_t>(nodes);
+    if (this->V.Phi)
+      Check(cudaMemcpy(this->HostDense.Phi, this->V.Phi, floats, cudaMemcpyDeviceToHost), "copying the dense phi back");
+    if (this->V.InitialPhi)
+      Check(cudaMemcpy(this->HostDense.InitialPhi, this->V.InitialPhi, floats, cudaMemcpyDeviceToHost),
+        "copying the dense phi0 back");
+    if (this->V.Distance)
+      Check(cudaMemcpy(this->HostDense.Distance, this->V.Distance, floats, cudaMemcpyDeviceToHost),
+        "copying the dense distances back");
+    if (this->V.Band)
+      Check(cudaMemcpy(this->HostDense.Band, this->V.Band, static_cast<std::size_t>(nodes), cudaMemcpyDeviceToHost),
+        "copying the dense band flags back");
+    this->ReleaseDense();
+  }
+
 private:
+  void ReleaseDense()
+  {
+    const std::int64_t nodes = this->VC.Nodes();
+    Release(this->V.Phi, nodes, this->Bytes);
+    Release(this->V.InitialPhi, nodes, this->Bytes);
+    Release(this->V.Distance, nodes, this->Bytes);
+    Release(this->V.Band, nodes, this->Bytes);
+    this->HostDense = DenseArrays();
+  }
   /// A device copy of `count` values of host memory (freed by ReleaseContour).
   template <typename T>
   T* ToDevice(const T* host, std::int64_t count, const char* what)
@@ -472,6 +538,11 @@ private:
   std::uint64_t* Inside = nullptr;
   std::uint16_t* NodeOffset = nullptr;
   double* NodeDistance = nullptr;
+  // The dense volume (DenseArrays): on the device in V, the host's in
+  // HostDense, until DenseDownload.
+  DenseArrays V;
+  DenseArrays HostDense;
+  DenseConstants VC;
   // The surface's arrays (ContourArrays): the uploaded ones in
   // ContourMemory, the others in K, until ContourGeometry ends.
   ContourArrays K;

@@ -16,6 +16,7 @@
 
 #include "nvDeviceKernels.h"
 #include "nvSurfaceKernels.h"
+#include "nvVolumeKernels.h"
 #include "nvMemory.h"
 
 #include <cstdint>
@@ -115,6 +116,26 @@ public:
   virtual void ContourGeometry(const std::int64_t* firstVertex, const std::int64_t* firstTriangle,
     std::int64_t numberOfVertices, std::int64_t numberOfTriangles, double* points, float* normals,
     long long* triangles) = 0;
+
+  // The dense volume (nvVolumeKernels.h), when the run fills one with
+  // Device GPU (nvReconstruction.cxx): DenseBegin before the band's
+  // construction, DenseBricks after each batch of its distances
+  // (nvDeviceDistance.h), DenseBand and DenseDownload after the evolution.
+
+  /// Holds the dense arrays `arrays` (host memory, constants.Nodes() values
+  /// each; a null one is not filled) and clears them (DenseClearKernel):
+  /// the host launcher fills them in place, the CUDA launcher on the device
+  /// until DenseDownload.
+  virtual void DenseBegin(const DenseArrays& arrays, const DenseConstants& constants) = 0;
+  /// DenseBrickKernel on the nodes of the `count` bricks of the last
+  /// DistanceBricks.
+  virtual void DenseBricks(std::int64_t count) = 0;
+  /// DenseBandKernel on the band's `numberOfBricks` bricks (`band`: host
+  /// memory; its Phi, `numberOfNodes` values, is read by the host launcher,
+  /// while the CUDA launcher takes the evolution's phi, still on the device).
+  virtual void DenseBand(const DenseBandArrays& band, std::int64_t numberOfBricks, std::int64_t numberOfNodes) = 0;
+  /// The dense arrays into the host memory given to DenseBegin; then freed.
+  virtual void DenseDownload() = 0;
 };
 
 /// The host launcher: the kernels over nv::ParallelFor and its reductions.

@@ -203,7 +203,25 @@ public:
     Free(this->Above);
   }
 
+  void DenseBegin(const DenseArrays& arrays, const DenseConstants& constants) override
+  {
+    this->V = arrays; // the host's arrays, filled in place
+    this->VC = constants;
+    For(0, constants.Nodes(), DenseClearKernel{ arrays, constants }, 1 << 16);
+  }
+  void DenseBricks(std::int64_t count) override
+  {
+    For(0, count * 512, DenseBrickKernel{ this->D, this->V, this->VC }, 8 * 512);
+  }
+  void DenseBand(const DenseBandArrays& band, std::int64_t numberOfBricks, std::int64_t) override
+  {
+    For(0, numberOfBricks, DenseBandKernel{ band, this->V, this->VC }, 32);
+  }
+  void DenseDownload() override { this->V = DenseArrays(); } // already in host memory
+
 private:
+  DenseArrays V;
+  DenseConstants VC;
   ContourArrays K;
   ContourConstants KC;
   UninitializedVector<float> Psi;

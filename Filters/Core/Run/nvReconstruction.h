@@ -216,6 +216,7 @@ private:
   std::int64_t VolumeGhosts = 0;
   VolumeAllocator AllocateVolume;
   std::unique_ptr<VolumeWriter> Writer; ///< fills the dense arrays (steps 5 and 6)
+  bool DenseOnDevice = false;           ///< or the device does (Device GPU)
   double BytesBeforeBand = 0.0;
   NarrowBand Band;
   std::unique_ptr<Halo> TheHalo;
