@@ -864,6 +864,7 @@ bool Reconstruction::SurfaceOnDevice(SurfaceSink& sink) const
       this->TheMonitor->Progress(0.0);
     }
     ContourOnDevice(this->ThePlan.TheGrid, this->Band, this->GetPhi(), this->ThePlan.Scheme, *launcher, sink);
+    this->DevicePeakBytes = std::max(this->DevicePeakBytes, launcher->DeviceBytes());
     if (this->TheMonitor)
     {
       this->TheMonitor->Progress(1.0);

@@ -174,7 +174,9 @@ public:
   /// host" (the GPU's kernels through the host launcher, Settings::DeviceOnHost);
   /// empty before the run has chosen.
   const std::string& DeviceUsed() const { return this->Used; }
-  /// The most bytes the GPU held during the evolution (0 on the CPU).
+  /// The most bytes the GPU held at once (0 on the CPU): from the distance
+  /// to the evolution's end (the dense volume's included), or while it made
+  /// the surface (ExtractSurface), whichever held more.
   double DeviceBytes() const { return this->DevicePeakBytes; }
 
   /// Frees the band and phi once the outputs no longer need them (after the
@@ -225,7 +227,7 @@ private:
   BandValues DevicePhi; ///< phi from the device back end (no Solver then)
   std::string Used;
   mutable std::string SurfaceError; ///< SurfaceDeviceError
-  double DevicePeakBytes = 0.0;
+  mutable double DevicePeakBytes = 0.0;
   std::int64_t BandNodes = 0;
   std::vector<double> Changes;
   double SetupTime = 0.0;
