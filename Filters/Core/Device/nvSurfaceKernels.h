@@ -35,6 +35,12 @@
 // them, sorted) before the kernels run. Both are compactions of a few bytes
 // a brick; the per-node and per-cell work is in the kernels.
 //
+// The CUDA launcher runs them a brick a thread (the kernels' call operators
+// take a brick); CutCellsKernel and VerticesKernel each hold the brick's
+// window of psi (11^3 floats, 5.3 KB) in the thread's local memory. Simple,
+// and not tuned: a block a brick with the window in shared memory is the
+// next step once the GPU's timings are measured.
+//
 // Vertex ids and the triangles' order are those of the CPU core: bricks in
 // ascending index, which is its layer by layer order. On a GPU, nvcc
 // contracts a * b + c into fused multiply-adds: the vertices then differ in
