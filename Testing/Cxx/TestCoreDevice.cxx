@@ -575,8 +575,12 @@ void TestRuns()
   settings.OffsetDistance = 0.08;
   settings.SampleSpacing = 0.02;
   CompareRuns("torus", TorusPoints(20000, 0.6, 0.25), settings);
+  // The Volume output: a sphere whose shell is thick enough for bricks
+  // inside it to be covered (BrickWithin), which the dense arrays must not
+  // skip.
   settings.OutputVolume = true;
-  CompareRuns("torus, the Volume output", TorusPoints(20000, 0.6, 0.25), settings, true);
+  settings.OffsetDistance = 0.3;
+  CompareRuns("sphere (l = 0.3, h = 0.02), the Volume output", nvtest::SpherePoints(8000, 0.5, center), settings, true);
 }
 
 /// Device GPU where the GPU is missing: an error that says what is missing.
