@@ -174,7 +174,8 @@ PROPERTIES = (
          Choice("DEVICE_CPU", "CPU", 1, "CPU"),
          Choice("DEVICE_GPU", "GPU", 2, "GPU")),
         "ComputeDevice", "Threads and Memory", True, None,
-        "Where the truncated distance and the evolution (phi0, g and the time steps) run: DEVICE_AUTOMATIC "
+        "Where the truncated distance, the evolution (phi0, g and the time steps), the surface and the "
+        "dense volume run: DEVICE_AUTOMATIC "
         "(0, the default), for now the CPU; DEVICE_CPU (1), the CPU's threads; DEVICE_GPU (2), an NVIDIA GPU "
         "through CUDA, with the CPU's distances and the same scheme and stopping rule (the sheets within 0.05 "
         "of a cell of the CPU's). The GPU needs a build "

@@ -514,7 +514,9 @@ NB_MODULE(_core, m)
     .def("DeviceUsed", [](const PythonRun& r) { return r.Run.DeviceUsed(); },
       "\"CPU\", \"GPU\", or \"GPU on the host\" (Settings.DeviceOnHost): where the evolution ran.")
     .def("DeviceBytes", [](const PythonRun& r) { return r.Run.DeviceBytes(); },
-      "The most bytes the GPU held during the evolution (0 on the CPU).");
+      "The most bytes the GPU held at once (0 on the CPU).")
+    .def("SurfaceDeviceError", [](const PythonRun& r) { return r.Run.SurfaceDeviceError(); },
+      "With Device GPU: empty when the device made the surface, else why the CPU made it.");
 
   m.attr("SamplingStage") = nv::SamplingStage;
 }

@@ -13,9 +13,13 @@ nodes (the truncated distance on the device is the CPU's bit for bit), both
 surfaces have the same vertices
 and triangles, every vertex within 0.05 h of the CPU's, both surfaces closed
 (each edge in two triangles) with the Euler characteristic of two sheets
-(4 for the sphere's two spheres, 0 for the torus's two tori); and, for the
-sphere, the inner sheet's error against the radius 0.4 at or below the
-paper's Table 1 (max 1.307e-3 and 3.723e-4, average 9.938e-4 and 2.173e-4).
+(4 for the sphere's two spheres, 0 for the torus's two tori), the surface
+made on the device (SurfaceDeviceError empty); for the sphere, the inner
+sheet's error against the radius 0.4 at or below the paper's Table 1 (max
+1.307e-3 and 3.723e-4, average 9.938e-4 and 2.173e-4); and, for the torus,
+with the Volume output, the dense phi (filled on the device) within 1e-6 of
+the CPU's. Each line gives the stages' seconds, device and CPU: the
+distance and band nodes, the evolution, the surface (and the volume).
 One line per case, then PASSED or FAILED; exit 1 on a failure.
 gpu-host runs the GPU back end's kernels through the host launcher: the
 same check on any machine (the host launcher gives the CPU's surface
@@ -46,11 +50,11 @@ def torus_points(n, big, small):
     return np.ascontiguousarray(np.stack([x.ravel(), y.ravel(), z.ravel()], axis=1))
 
 
-def run(core, xyz, offset, spacing, device):
+def run(core, xyz, offset, spacing, device, volume=False):
     settings = core.Settings()
     settings.OffsetDistance = offset
     settings.SampleSpacing = spacing
-    settings.OutputVolume = False
+    settings.OutputVolume = volume
     settings.Device = core.ComputeDevice.CPU if device == "cpu" else core.ComputeDevice.GPU
     settings.DeviceOnHost = device == "gpu-host"
     reconstruction = core.Reconstruction(settings)
@@ -65,6 +69,7 @@ def run(core, xyz, offset, spacing, device):
     for name, kind, components, values, names in outcome.Summary:
         if name == "StageSeconds":
             stages = dict(zip(names, values))
+    stages["dense phi"] = np.asarray(reconstruction.TakeVolume().get("phi", [])) if volume else None
     return reconstruction, np.asarray(points), np.asarray(triangles), seconds, stages
 
 
@@ -75,21 +80,35 @@ def euler(points, triangles):
     return bool(len(counts) and np.all(counts == 2)), len(points) - len(unique) + len(triangles)
 
 
-def check(core, name, xyz, offset, spacing, device, chi, radius=None):
+def check(core, name, xyz, offset, spacing, device, chi, radius=None, volume=False):
     try:
-        return compare(core, name, xyz, offset, spacing, device, chi, radius)
+        return compare(core, name, xyz, offset, spacing, device, chi, radius, volume)
     except RuntimeError as error:
         print("%s: FAILED: %s" % (name, error), flush=True)
         return False
 
 
-def compare(core, name, xyz, offset, spacing, device, chi, radius):
+def compare(core, name, xyz, offset, spacing, device, chi, radius, volume):
     failures = []
-    cpu_run, cpu_points, cpu_triangles, cpu_seconds, cpu_stages = run(core, xyz, offset, spacing, "cpu")
-    gpu_run, gpu_points, gpu_triangles, gpu_seconds, gpu_stages = run(core, xyz, offset, spacing, device)
+    cpu_run, cpu_points, cpu_triangles, cpu_seconds, cpu_stages = run(core, xyz, offset, spacing, "cpu", volume)
+    gpu_run, gpu_points, gpu_triangles, gpu_seconds, gpu_stages = run(core, xyz, offset, spacing, device, volume)
     expected = {"gpu": "GPU", "gpu-host": "GPU on the host"}[device]
     if gpu_run.DeviceUsed() != expected:
         failures.append("DeviceUsed %r, not %r" % (gpu_run.DeviceUsed(), expected))
+    if gpu_run.SurfaceDeviceError():
+        failures.append("the surface was made on the CPU: %s" % gpu_run.SurfaceDeviceError())
+    dense = ""
+    if volume:
+        cpu_phi, gpu_phi = cpu_stages.pop("dense phi"), gpu_stages.pop("dense phi")
+        if cpu_phi.shape != gpu_phi.shape or not cpu_phi.size:
+            failures.append("dense phi of %s values, the CPU's %s" % (gpu_phi.shape, cpu_phi.shape))
+        else:
+            largest = float(np.max(np.abs(gpu_phi.astype(np.float64) - cpu_phi)))
+            dense = ", dense phi within %.3g of the CPU's" % largest
+            if not largest <= 1e-6:
+                failures.append("the dense phi %.3g from the CPU's" % largest)
+    else:
+        cpu_stages.pop("dense phi"), gpu_stages.pop("dense phi")
     # The truncated distance on the device is the CPU's bit for bit, and so
     # is the band: the same number of nodes.
     if gpu_run.NumberOfBandNodes() != cpu_run.NumberOfBandNodes():
@@ -119,13 +138,17 @@ def compare(core, name, xyz, offset, spacing, device, chi, radius):
             errors += " (Table 1: %.3e, %.3e)" % table
             failures.append("the inner sheet's error exceeds Table 1's")
     collect = "band: collect"  # the distances (eq. 6) and the band's nodes, step 1
-    print("%s: %d band nodes, %d vertices, the farthest %.3g h from the CPU's%s; whole run %.3f s (%s), "
+    nan = float("nan")
+    print("%s: %d band nodes, %d vertices, the farthest %.3g h from the CPU's%s%s; whole run %.3f s (%s), "
           "%.3f s (CPU); distance and band nodes %.3f s and %.3f s; evolution %.3f s and %.3f s; "
-          "GPU memory %.0f MB: %s" % (
-              name, gpu_run.NumberOfBandNodes(), len(gpu_points), apart, errors, gpu_seconds, expected,
-              cpu_seconds, gpu_stages.get(collect, float("nan")), cpu_stages.get(collect, float("nan")),
-              gpu_run.EvolutionSeconds(), cpu_run.EvolutionSeconds(), gpu_run.DeviceBytes() / 2 ** 20,
-              "; ".join(failures) or "ok"), flush=True)
+          "surface %.3f s and %.3f s%s; GPU memory %.0f MB: %s" % (
+              name, gpu_run.NumberOfBandNodes(), len(gpu_points), apart, errors, dense, gpu_seconds, expected,
+              cpu_seconds, gpu_stages.get(collect, nan), cpu_stages.get(collect, nan),
+              gpu_run.EvolutionSeconds(), cpu_run.EvolutionSeconds(),
+              gpu_stages.get("surface", nan), cpu_stages.get("surface", nan),
+              "; volume %.3f s and %.3f s" % (gpu_stages.get("volume", nan), cpu_stages.get("volume", nan))
+              if volume else "",
+              gpu_run.DeviceBytes() / 2 ** 20, "; ".join(failures) or "ok"), flush=True)
     return not failures
 
 
@@ -141,6 +164,8 @@ def main():
         sphere = np.ascontiguousarray(clouds.nvclouds.sphere_points(n, 0.5, center))
         ok &= check(core, "sphere (Table 1), h = %g" % h, sphere, 0.1, h, args.device, chi=4, radius=0.5)
     ok &= check(core, "torus", torus_points(40000, 0.6, 0.25), 0.08, 0.01, args.device, chi=0)
+    ok &= check(core, "torus, the Volume output", torus_points(40000, 0.6, 0.25), 0.08, 0.01, args.device,
+                chi=0, volume=True)
     print("gpu_check.py: %s" % ("PASSED" if ok else "FAILED"), flush=True)
     sys.exit(0 if ok else 1)
 

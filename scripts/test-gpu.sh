@@ -6,8 +6,11 @@
 # surfaces against the CPU core's (benchmarks/gpu_check.py: the Table 1
 # sphere at h = 0.01 and 0.005 and a torus, the band's nodes as many as the
 # CPU's (the distance on the GPU is written to be the CPU's bit for bit),
-# every vertex within 0.05 h of the CPU's, both sheets closed, Table 1's
-# errors), and times the stages on
+# the surface made on the GPU, every vertex within 0.05 h of the CPU's, both
+# sheets closed, Table 1's errors, and the torus's dense phi with the Volume
+# output, filled on the GPU, within 1e-6 of the CPU's; the distance, band,
+# evolution, surface and volume stages' seconds beside the CPU's), and
+# times the stages on
 # the benchmarks' sphere, the GPU beside the machine's CPU threads in the
 # same run (benchmarks/core_stages.py --device cpu gpu), one table.
 #

@@ -11,17 +11,23 @@
 //                           every reached brick of a sphere and a torus, and
 //                           the band built from it (its nodes picked on the
 //                           device, or on the host from the distances) the
-//                           CPU's array for array;
+//                           CPU's array for array; the surface made by the
+//                           surface kernels (nvDeviceSurface.h) from the
+//                           device's phi the CPU core's (ContourBricks)
+//                           bit for bit, both sheets closed;
 //                           and the whole run with Device GPU (the property)
-//                           against Device CPU: the surfaces' vertices
-//                           within 0.05 h of each other, both sheets closed;
+//                           against Device CPU: the surfaces the same bit
+//                           for bit (within 0.05 h on a GPU), both sheets
+//                           closed, and with the Volume output its dense
+//                           arrays (filled on the device) the CPU's;
 //   TestCoreDevice cuda     the same through the CUDA launcher, on a GPU
 //                           (scripts/test-gpu.sh): phi within 1e-9 of the
 //                           CPU core's (fused multiply-adds and the
 //                           reductions' order change the last bits); the
 //                           distances and the band bit for bit, as on the
 //                           host (nvDeviceKernels.h keeps nvcc from fusing
-//                           the distance's products and sums).
+//                           the distance's products and sums); the surfaces'
+//                           vertices within 0.05 h of the CPU's, closed.
 //
 // Device GPU where there is no GPU stops with an error that says why: the
 // build has no CUDA, or the machine no CUDA device.
@@ -29,13 +35,16 @@
 #include "nvDeviceDistance.h"
 #include "nvDeviceEvolution.h"
 #include "nvDeviceLauncher.h"
+#include "nvDeviceSurface.h"
 #include "nvGrid.h"
 #include "nvNarrowBand.h"
 #include "nvParameters.h"
 #include "nvReconstruction.h"
 #include "nvSurface.h"
+#include "nvSurfaceField.h"
 #include "nvTestUtilities.h"
 #include "nvTruncatedDistance.h"
+#include "nvVolume.h"
 
 #include <algorithm>
 #include <cmath>
@@ -112,7 +121,11 @@ nv::NarrowBand BandOf(const std::vector<double>& xyz, const nv::Parameters& para
   return nv::BuildNarrowBand(distance, parameters);
 }
 
-/// The device back end's phi against the CPU core's solver on one band.
+void CompareSurface(const char* what, const nv::NarrowBand& band, const nv::BandValues& cpuPhi,
+  const nv::BandValues& devicePhi, const nv::Parameters& parameters, nv::device::EvolutionLauncher& launcher);
+
+/// The device back end's phi against the CPU core's solver on one band,
+/// then its surface against the CPU core's.
 void Compare(const char* what, const std::vector<double>& xyz, const nv::Parameters& parameters)
 {
   const nv::NarrowBand band = BandOf(xyz, parameters);
@@ -155,6 +168,7 @@ void Compare(const char* what, const std::vector<double>& xyz, const nv::Paramet
   std::printf("%s on %s: %lld band nodes, %zu steps, sweeps %d (CPU %d), max |phi - phi_CPU| %.3g\n", what,
     launcher->Name().c_str(), static_cast<long long>(band.Size()), device.size(), sweepsDevice, sweepsCpu, largest);
   NV_CHECK(largest <= (OnGpu ? 1e-9 : 0.0));
+  CompareSurface(what, band, solver.GetPhi(), phi, parameters, *launcher);
 }
 
 void TestSphere()
@@ -182,6 +196,12 @@ void TestTorus()
   p.ConvergenceTolerance = 0.02; // stops before the cap
   p.Relaxation = 1.0;            // plain Gauss-Seidel
   Compare("torus, tolerance 0.02, plain Gauss-Seidel", TorusPoints(8000, 0.6, 0.25), p);
+}
+
+template <typename T, typename A, typename B>
+bool SameValues(const std::vector<T, A>& a, const std::vector<T, B>& b)
+{
+  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin());
 }
 
 /// The largest distance from a vertex of `a` to the nearest vertex of `b`
@@ -259,6 +279,36 @@ bool Closed(const nv::SurfaceMesh& mesh, int& pieces)
   return !edges.empty();
 }
 
+/// The device back end's surface (nvDeviceSurface.h: the surface kernels of
+/// nvSurfaceKernels.h) from the device's phi against the CPU core's
+/// (ContourBricks on BandField) from the CPU's: through the host launcher
+/// the same vertices, normals and triangles bit for bit; on a GPU, the
+/// vertices within 0.05 h of the CPU's; both sheets closed either way.
+void CompareSurface(const char* what, const nv::NarrowBand& band, const nv::BandValues& cpuPhi,
+  const nv::BandValues& devicePhi, const nv::Parameters& parameters, nv::device::EvolutionLauncher& launcher)
+{
+  nv::SurfaceMesh cpu, device;
+  NV_CHECK(nv::ContourBricks(band.GridNodes, nv::BandField(band, cpuPhi, parameters), cpu));
+  nv::ContourOnDevice(band.GridNodes, band, devicePhi, parameters, launcher, device);
+  const bool same = SameValues(device.Points, cpu.Points) && SameValues(device.Normals, cpu.Normals) &&
+    SameValues(device.Triangles, cpu.Triangles);
+  const double h = band.GridNodes.Spacing;
+  const double apart =
+    std::max(LargestVertexDistance(device, cpu, h), LargestVertexDistance(cpu, device, h));
+  int cpuPieces = 0, devicePieces = 0;
+  const bool cpuClosed = Closed(cpu, cpuPieces);
+  const bool deviceClosed = Closed(device, devicePieces);
+  std::printf("%s, the surface on %s: %zu vertices, %zu triangles (CPU %zu, %zu), the CPU's bit for bit: %s, "
+              "the farthest vertex %.3g h from the other's; closed %d and %d, pieces %d and %d\n",
+    what, launcher.Name().c_str(), device.Points.size() / 3, device.Triangles.size() / 3, cpu.Points.size() / 3,
+    cpu.Triangles.size() / 3, same ? "yes" : "no", apart / h, deviceClosed, cpuClosed, devicePieces, cpuPieces);
+  NV_CHECK(!device.Triangles.empty());
+  NV_CHECK(same || OnGpu);
+  NV_CHECK(apart <= 0.05 * h);
+  NV_CHECK(deviceClosed && cpuClosed);
+  NV_CHECK(devicePieces == cpuPieces);
+}
+
 /// The grid of BandOf for the points.
 nv::Grid GridOf(const std::vector<double>& xyz, const nv::Parameters& parameters)
 {
@@ -272,12 +322,6 @@ nv::Grid GridOf(const std::vector<double>& xyz, const nv::Parameters& parameters
     }
   }
   return nv::MakeGrid(bounds, parameters.Spacing, nv::GridPadding(parameters.Reach(), parameters.Spacing));
-}
-
-template <typename T, typename A, typename B>
-bool SameValues(const std::vector<T, A>& a, const std::vector<T, B>& b)
-{
-  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin());
 }
 
 /// The device back end's truncated distance (DistanceKernel, CoveredKernel)
@@ -402,11 +446,60 @@ void TestDistance()
   CompareDistance("torus, whole domain", TorusPoints(8000, 0.6, 0.25), p, false);
 }
 
-/// The whole run (nv::Reconstruction) with Device GPU against Device CPU.
-void CompareRuns(const char* what, const std::vector<double>& xyz, nv::Settings settings)
+/// The dense arrays of a run (Reconstruction::RequestVolume).
+struct Dense
+{
+  std::vector<float> Phi, InitialPhi, Distance;
+  std::vector<unsigned char> Band;
+  /// Asks `run` to fill them on the whole grid.
+  void Request(nv::Reconstruction& run)
+  {
+    run.RequestVolume(0, [this, &run](std::int64_t kBegin, std::int64_t kEnd) {
+      const std::size_t n =
+        static_cast<std::size_t>(run.GetGrid().Dims[0] * run.GetGrid().Dims[1] * (kEnd - kBegin));
+      // Set to NaN first: a node the run leaves unset then differs.
+      this->Phi.assign(n, std::nanf(""));
+      this->InitialPhi.assign(n, std::nanf(""));
+      this->Distance.assign(n, std::nanf(""));
+      this->Band.assign(n, 7);
+      nv::VolumeArrays arrays;
+      arrays.Phi = this->Phi.data();
+      arrays.InitialPhi = this->InitialPhi.data();
+      arrays.Distance = this->Distance.data();
+      arrays.Band = this->Band.data();
+      return arrays;
+    });
+  }
+};
+
+/// The largest difference of two float arrays (+inf where their sizes differ or a value is NaN).
+double LargestDifference(const std::vector<float>& a, const std::vector<float>& b)
+{
+  if (a.size() != b.size() || a.empty())
+  {
+    return 1e300;
+  }
+  double largest = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i)
+  {
+    const double d = std::fabs(static_cast<double>(a[i]) - b[i]);
+    largest = std::isnan(d) ? 1e300 : std::max(largest, d);
+  }
+  return largest;
+}
+
+/// The whole run (nv::Reconstruction) with Device GPU against Device CPU;
+/// with `volume`, the dense arrays too (the device's DenseBrickKernel and
+/// DenseBandKernel against VolumeWriter).
+void CompareRuns(const char* what, const std::vector<double>& xyz, nv::Settings settings, bool volume = false)
 {
   settings.Device = nv::ComputeDevice::CPU;
   nv::Reconstruction cpu(settings, nullptr, nullptr);
+  Dense cpuDense, gpuDense;
+  if (volume)
+  {
+    cpuDense.Request(cpu);
+  }
   NV_CHECK(cpu.Run(xyz));
   nv::SurfaceMesh cpuMesh;
   NV_CHECK(cpu.ExtractSurface(cpuMesh));
@@ -415,6 +508,10 @@ void CompareRuns(const char* what, const std::vector<double>& xyz, nv::Settings 
   settings.Device = nv::ComputeDevice::GPU;
   settings.DeviceOnHost = !OnGpu;
   nv::Reconstruction gpu(settings, nullptr, nullptr);
+  if (volume)
+  {
+    gpuDense.Request(gpu);
+  }
   const bool ran = gpu.Run(xyz);
   if (!ran)
   {
@@ -437,10 +534,34 @@ void CompareRuns(const char* what, const std::vector<double>& xyz, nv::Settings 
               "closed %d and %d, pieces %d and %d\n",
     what, gpu.DeviceUsed().c_str(), gpuMesh.Points.size() / 3, cpuMesh.Points.size() / 3, apart / h, gpuClosed,
     cpuClosed, gpuPieces, cpuPieces);
+  // Through the host launcher, phi and the surface are the CPU's bit for bit.
+  const bool same = SameValues(gpuMesh.Points, cpuMesh.Points) && SameValues(gpuMesh.Normals, cpuMesh.Normals) &&
+    SameValues(gpuMesh.Triangles, cpuMesh.Triangles);
+  const std::string onDevice = gpu.SurfaceDeviceError().empty() ? "yes" : "no (" + gpu.SurfaceDeviceError() + ")";
+  std::printf("%s, the surface made on the device: %s; the CPU's bit for bit: %s\n", what, onDevice.c_str(),
+    same ? "yes" : "no");
+  NV_CHECK(gpu.SurfaceDeviceError().empty());
+  NV_CHECK(same || OnGpu);
   NV_CHECK(!gpuMesh.Points.empty());
   NV_CHECK(apart <= 0.05 * h);
   NV_CHECK(gpuClosed && cpuClosed);
   NV_CHECK(gpuPieces == 2 && cpuPieces == 2); // the outer and the inner sheet
+  if (volume)
+  {
+    // Through the host launcher the CPU's values bit for bit; on a GPU phi
+    // within float's rounding of the last bits of the evolution's phi.
+    const double phi = LargestDifference(gpuDense.Phi, cpuDense.Phi);
+    const double phi0 = LargestDifference(gpuDense.InitialPhi, cpuDense.InitialPhi);
+    const double d = LargestDifference(gpuDense.Distance, cpuDense.Distance);
+    const bool band = !cpuDense.Band.empty() && SameValues(gpuDense.Band, cpuDense.Band);
+    std::printf("%s, the dense volume filled on the device: %zu nodes; the largest difference from the CPU's: "
+                "phi %.3g, phi0 %.3g, d %.3g; band flags the same: %s\n",
+      what, gpuDense.Phi.size(), phi, phi0, d, band ? "yes" : "no");
+    NV_CHECK(phi <= (OnGpu ? 1e-6 : 0.0));
+    NV_CHECK(phi0 <= (OnGpu ? 1e-6 : 0.0));
+    NV_CHECK(d == 0.0);
+    NV_CHECK(band);
+  }
 }
 
 void TestRuns()
@@ -454,6 +575,12 @@ void TestRuns()
   settings.OffsetDistance = 0.08;
   settings.SampleSpacing = 0.02;
   CompareRuns("torus", TorusPoints(20000, 0.6, 0.25), settings);
+  // The Volume output: a sphere whose shell is thick enough for bricks
+  // inside it to be covered (BrickWithin), which the dense arrays must not
+  // skip.
+  settings.OutputVolume = true;
+  settings.OffsetDistance = 0.3;
+  CompareRuns("sphere (l = 0.3, h = 0.02), the Volume output", nvtest::SpherePoints(8000, 0.5, center), settings, true);
 }
 
 /// Device GPU where the GPU is missing: an error that says what is missing.

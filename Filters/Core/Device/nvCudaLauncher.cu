@@ -6,7 +6,8 @@
 // in nvDeviceEvolution.cxx (the evolution) and nvDeviceDistance.cxx (the
 // truncated distance and the band's nodes, batch by batch of bricks: only
 // each batch's band nodes come back to the host, or all its distances where
-// the dense volume wants them).
+// the dense volume wants them) and Output/nvDeviceSurface.cxx (the surface:
+// the band and phi go up, the vertices and triangles come back).
 //
 // Compiled where CMake finds a CUDA compiler (NARROWVOLUME_CUDA): the suite
 // compiles and links it on machines without a GPU (scripts/test.sh, nvcc
@@ -24,6 +25,7 @@
 
 #include <algorithm>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace nv
@@ -125,6 +127,8 @@ public:
   ~CudaLauncher() override
   {
     // Errors are ignored here: the destructor may run while a DeviceError unwinds.
+    this->ReleaseContour();
+    this->ReleaseDense();
     for (void* memory : { static_cast<void*>(this->Partial), static_cast<void*>(this->Neighbor),
            static_cast<void*>(this->Distance), static_cast<void*>(this->A.Phi), static_cast<void*>(this->A.Previous),
            static_cast<void*>(this->A.Coupling), static_cast<void*>(this->A.Decay), static_cast<void*>(this->Points),
@@ -308,7 +312,166 @@ public:
     this->ReleaseNodes();
   }
 
+  void ContourCounts(const ContourArrays& band, std::int64_t numberOfNodes, const ContourConstants& constants,
+    std::int32_t* vertices, std::int32_t* triangles) override
+  {
+    this->ReleaseContour();
+    this->KC = constants;
+    ContourArrays& k = this->K;
+    k.NumberOfBricks = band.NumberOfBricks;
+    k.NumberOfCutBricks = band.NumberOfCutBricks;
+    this->ContourNodes = numberOfNodes;
+    const std::int64_t bricks = band.NumberOfBricks, cut = band.NumberOfCutBricks;
+    k.Bricks = this->ToDevice(band.Bricks, bricks, "the band's bricks");
+    k.RedStart = this->ToDevice(band.RedStart, bricks + 1, "the band's red starts");
+    k.BlackStart = this->ToDevice(band.BlackStart, bricks + 1, "the band's black starts");
+    k.Inside = this->ToDevice(band.Inside, 8 * bricks, "the band's inside bits");
+    k.Offset = this->ToDevice(band.Offset, numberOfNodes, "the band's node places");
+    k.Phi = this->ToDevice(band.Phi, numberOfNodes, "phi for the surface");
+    k.CutBricks = this->ToDevice(band.CutBricks, cut, "the cut bricks");
+    k.Cases = this->ToDevice(band.Cases, 1, "the case table");
+    k.Psi = Allocate<float>(512 * bricks, this->Bytes, this->Peak, "psi");
+    k.Cut = Allocate<std::uint64_t>(CutWords * cut, this->Bytes, this->Peak, "the cut edges");
+    k.Above = Allocate<std::uint16_t>(AboveRows * cut, this->Bytes, this->Peak, "the corners' signs");
+    k.VertexCount = Allocate<std::int32_t>(cut, this->Bytes, this->Peak, "the vertex counts");
+    k.TriangleCount = Allocate<std::int32_t>(cut, this->Bytes, this->Peak, "the triangle counts");
+    this->For(0, bricks, PsiKernel{ k, constants });
+    this->For(0, cut, CutCellsKernel{ k, constants });
+    if (cut > 0)
+    {
+      Check(cudaMemcpy(vertices, k.VertexCount, sizeof(std::int32_t) * cut, cudaMemcpyDeviceToHost),
+        "copying the vertex counts back");
+      Check(cudaMemcpy(triangles, k.TriangleCount, sizeof(std::int32_t) * cut, cudaMemcpyDeviceToHost),
+        "copying the triangle counts back");
+    }
+  }
+  void ContourGeometry(const std::int64_t* firstVertex, const std::int64_t* firstTriangle,
+    std::int64_t numberOfVertices, std::int64_t numberOfTriangles, double* points, float* normals,
+    long long* triangles) override
+  {
+    ContourArrays& k = this->K;
+    const std::int64_t cut = k.NumberOfCutBricks;
+    this->NumberOfVertices = numberOfVertices;
+    this->NumberOfTriangles = numberOfTriangles;
+    k.FirstVertex = this->ToDevice(firstVertex, cut, "the first vertices");
+    k.FirstTriangle = this->ToDevice(firstTriangle, cut, "the first triangles");
+    k.Points = Allocate<double>(3 * numberOfVertices, this->Bytes, this->Peak, "the vertices");
+    k.Normals = Allocate<float>(3 * numberOfVertices, this->Bytes, this->Peak, "the normals");
+    k.Triangles = Allocate<long long>(3 * numberOfTriangles, this->Bytes, this->Peak, "the triangles");
+    this->For(0, cut, VerticesKernel{ k, this->KC });
+    this->For(0, cut, TrianglesKernel{ k, this->KC });
+    if (numberOfVertices > 0)
+    {
+      Check(cudaMemcpy(points, k.Points, sizeof(double) * 3 * numberOfVertices, cudaMemcpyDeviceToHost),
+        "copying the vertices back");
+      Check(cudaMemcpy(normals, k.Normals, sizeof(float) * 3 * numberOfVertices, cudaMemcpyDeviceToHost),
+        "copying the normals back");
+    }
+    if (numberOfTriangles > 0)
+    {
+      Check(cudaMemcpy(triangles, k.Triangles, sizeof(long long) * 3 * numberOfTriangles, cudaMemcpyDeviceToHost),
+        "copying the triangles back");
+    }
+    this->ReleaseContour();
+  }
+
+  void DenseBegin(const DenseArrays& arrays, const DenseConstants& constants) override
+  {
+    this->ReleaseDense();
+    this->HostDense = arrays;
+    this->VC = constants;
+    const std::int64_t nodes = constants.Nodes();
+    if (arrays.Phi)
+      this->V.Phi = Allocate<float>(nodes, this->Bytes, this->Peak, "the dense phi");
+    if (arrays.InitialPhi)
+      this->V.InitialPhi = Allocate<float>(nodes, this->Bytes, this->Peak, "the dense phi0");
+    if (arrays.Distance)
+      this->V.Distance = Allocate<float>(nodes, this->Bytes, this->Peak, "the dense distances");
+    if (arrays.Band)
+      this->V.Band = Allocate<std::uint8_t>(nodes, this->Bytes, this->Peak, "the dense band flags");
+    this->For(0, nodes, DenseClearKernel{ this->V, constants });
+  }
+  void DenseBricks(std::int64_t count) override
+  {
+    DistanceArrays batch;
+    batch.Bricks = this->Bricks;
+    batch.Distance = this->BrickDistance;
+    batch.Covered = this->Covered;
+    this->For(0, count * 512, DenseBrickKernel{ batch, this->V, this->VC });
+  }
+  void DenseBand(const DenseBandArrays& band, std::int64_t numberOfBricks, std::int64_t numberOfNodes) override
+  {
+    DenseBandArrays onDevice;
+    onDevice.Bricks = this->ToDevice(band.Bricks, numberOfBricks, "the band's bricks");
+    onDevice.RedStart = this->ToDevice(band.RedStart, numberOfBricks + 1, "the band's red starts");
+    onDevice.BlackStart = this->ToDevice(band.BlackStart, numberOfBricks + 1, "the band's black starts");
+    onDevice.Offset = this->ToDevice(band.Offset, numberOfNodes, "the band's node places");
+    // The evolution's phi, still here (Download copied it, kept it).
+    onDevice.Phi = this->A.Phi && this->A.Size == numberOfNodes ? this->A.Phi
+                                                                : this->ToDevice(band.Phi, numberOfNodes, "phi");
+    this->For(0, numberOfBricks, DenseBandKernel{ onDevice, this->V, this->VC });
+    Check(cudaDeviceSynchronize(), "the dense volume's band");
+    this->ReleaseContour(); // the band's copies
+  }
+  void DenseDownload() override
+  {
+    const std::int64_t nodes = this->VC.Nodes();
+    const std::size_t floats = sizeof(float) * static_cast<std::size_t>(nodes);
+    if (this->V.Phi)
+      Check(cudaMemcpy(this->HostDense.Phi, this->V.Phi, floats, cudaMemcpyDeviceToHost), "copying the dense phi back");
+    if (this->V.InitialPhi)
+      Check(cudaMemcpy(this->HostDense.InitialPhi, this->V.InitialPhi, floats, cudaMemcpyDeviceToHost),
+        "copying the dense phi0 back");
+    if (this->V.Distance)
+      Check(cudaMemcpy(this->HostDense.Distance, this->V.Distance, floats, cudaMemcpyDeviceToHost),
+        "copying the dense distances back");
+    if (this->V.Band)
+      Check(cudaMemcpy(this->HostDense.Band, this->V.Band, static_cast<std::size_t>(nodes), cudaMemcpyDeviceToHost),
+        "copying the dense band flags back");
+    this->ReleaseDense();
+  }
+
 private:
+  void ReleaseDense()
+  {
+    const std::int64_t nodes = this->VC.Nodes();
+    Release(this->V.Phi, nodes, this->Bytes);
+    Release(this->V.InitialPhi, nodes, this->Bytes);
+    Release(this->V.Distance, nodes, this->Bytes);
+    Release(this->V.Band, nodes, this->Bytes);
+    this->HostDense = DenseArrays();
+  }
+  /// A device copy of `count` values of host memory (freed by ReleaseContour).
+  template <typename T>
+  T* ToDevice(const T* host, std::int64_t count, const char* what)
+  {
+    T* memory = Allocate<T>(count, this->Bytes, this->Peak, what);
+    this->ContourMemory.push_back({ memory, static_cast<std::size_t>(std::max<std::int64_t>(count, 1)) * sizeof(T) });
+    if (count > 0)
+    {
+      Check(cudaMemcpy(memory, host, sizeof(T) * count, cudaMemcpyHostToDevice), what);
+    }
+    return memory;
+  }
+  void ReleaseContour()
+  {
+    for (const auto& held : this->ContourMemory)
+    {
+      cudaFree(held.first);
+      this->Bytes -= static_cast<double>(held.second);
+    }
+    this->ContourMemory.clear();
+    const std::int64_t bricks = this->K.NumberOfBricks, cut = this->K.NumberOfCutBricks;
+    Release(this->K.Psi, 512 * bricks, this->Bytes);
+    Release(this->K.Cut, CutWords * cut, this->Bytes);
+    Release(this->K.Above, AboveRows * cut, this->Bytes);
+    Release(this->K.VertexCount, cut, this->Bytes);
+    Release(this->K.TriangleCount, cut, this->Bytes);
+    Release(this->K.Points, 3 * this->NumberOfVertices, this->Bytes);
+    Release(this->K.Normals, 3 * this->NumberOfVertices, this->Bytes);
+    Release(this->K.Triangles, 3 * this->NumberOfTriangles, this->Bytes);
+    this->K = ContourArrays();
+  }
   void ReleaseBatch()
   {
     Release(this->Bricks, this->BatchCapacity, this->Bytes);
@@ -375,6 +538,19 @@ private:
   std::uint64_t* Inside = nullptr;
   std::uint16_t* NodeOffset = nullptr;
   double* NodeDistance = nullptr;
+  // The dense volume (DenseArrays): on the device in V, the host's in
+  // HostDense, until DenseDownload.
+  DenseArrays V;
+  DenseArrays HostDense;
+  DenseConstants VC;
+  // The surface's arrays (ContourArrays): the uploaded ones in
+  // ContourMemory, the others in K, until ContourGeometry ends.
+  ContourArrays K;
+  ContourConstants KC;
+  std::int64_t ContourNodes = 0;
+  std::int64_t NumberOfVertices = 0;
+  std::int64_t NumberOfTriangles = 0;
+  std::vector<std::pair<void*, std::size_t>> ContourMemory;
   EvolutionArrays A;
   std::uint32_t* Neighbor = nullptr;
   double* Distance = nullptr;

@@ -53,7 +53,11 @@ void LauncherDistance::Compute(
   const std::int64_t* bricks, std::int64_t count, double coverRadius, double* distance, std::uint8_t* covered)
 {
   this->Launcher.DistanceBricks(
-    bricks, count, DistanceConstantsOf(this->Distance, coverRadius), distance, covered);
+    bricks, count, DistanceConstantsOf(this->Distance, this->Dense ? 0.0 : coverRadius), distance, covered);
+  if (this->Dense)
+  {
+    this->Launcher.DenseBricks(count);
+  }
 }
 
 void LauncherDistance::CollectNodes(const std::int64_t* bricks, std::int64_t count, double coverRadius,
@@ -61,11 +65,15 @@ void LauncherDistance::CollectNodes(const std::int64_t* bricks, std::int64_t cou
   UninitializedVector<std::uint16_t>& offset, UninitializedVector<double>& distance)
 {
   BandNodeConstants constants;
-  constants.Grid = DistanceConstantsOf(this->Distance, coverRadius);
+  constants.Grid = DistanceConstantsOf(this->Distance, this->Dense ? 0.0 : coverRadius);
   constants.Lower = lower;
   constants.Upper = upper;
   constants.Whole = whole;
   this->Launcher.DistanceBricks(bricks, count, constants.Grid, nullptr, nullptr); // kept on the device
+  if (this->Dense)
+  {
+    this->Launcher.DenseBricks(count); // phi0 and d of eq. (2), (6) into the dense arrays
+  }
   this->Launcher.BandNodes(count, constants, red, black, inside, offset, distance);
 }
 

@@ -10,8 +10,8 @@
 // CPU's.
 //
 // The band's nodes of each batch are picked on the device too (CollectNodes):
-// only they come back, unless the dense volume wants every distance (a
-// BrickVisitor: then each batch's distances come back). What stays on the
+// only they come back. The dense volume, when asked for, is filled from
+// each batch's distances on the device too (FillDense, nvVolumeKernels.h). What stays on the
 // host for now: the points' sort into bricks (TruncatedDistance's
 // constructor), the bricks to visit (ReachedBricks), the band's arrays
 // stored in order and its neighbours (nvNarrowBand.cxx, steps 2 and 3).
@@ -47,6 +47,12 @@ public:
   LauncherDistance(const LauncherDistance&) = delete;
   LauncherDistance& operator=(const LauncherDistance&) = delete;
 
+  /// After the launcher's DenseBegin: each batch's distances fill the dense
+  /// arrays on the device too (DenseBricks), and no brick is skipped as
+  /// covered (the dense arrays want every reached node's phi0, as the CPU's
+  /// BrickVisitor does).
+  void FillDense() { this->Dense = true; }
+
   std::int64_t BatchSize() const override { return this->Batch; }
   /// Throws DeviceError when the device fails.
   void Compute(const std::int64_t* bricks, std::int64_t count, double coverRadius, double* distance,
@@ -62,6 +68,7 @@ private:
   const TruncatedDistance& Distance;
   EvolutionLauncher& Launcher;
   std::int64_t Batch;
+  bool Dense = false;
 };
 
 } // namespace device

@@ -15,6 +15,8 @@
 #define nvDeviceLauncher_h
 
 #include "nvDeviceKernels.h"
+#include "nvSurfaceKernels.h"
+#include "nvVolumeKernels.h"
 #include "nvMemory.h"
 
 #include <cstdint>
@@ -93,6 +95,47 @@ public:
     UninitializedVector<double>& distance) = 0;
   /// Lets the points go (their device memory freed).
   virtual void FreePoints() = 0;
+
+  // The surface (nvSurfaceKernels.h), after the evolution:
+  // Output/nvDeviceSurface.h calls these.
+
+  /// Holds the band's arrays, phi and the cut bricks of `band` (host memory:
+  /// Bricks, RedStart, BlackStart, Inside of NumberOfBricks bricks, Offset
+  /// and Phi of `numberOfNodes` nodes, CutBricks, Cases; the host launcher
+  /// reads them in place, and they must then outlive it until
+  /// ContourGeometry), runs PsiKernel on the band's bricks and
+  /// CutCellsKernel on the cut bricks; `vertices` and `triangles` (host
+  /// memory, one a cut brick) get their counts back.
+  virtual void ContourCounts(const ContourArrays& band, std::int64_t numberOfNodes, const ContourConstants& constants,
+    std::int32_t* vertices, std::int32_t* triangles) = 0;
+  /// After ContourCounts: each cut brick's first vertex and first triangle
+  /// (host memory), VerticesKernel and TrianglesKernel; the
+  /// `numberOfVertices` vertices (3 coordinates and 3 normal components
+  /// each) and `numberOfTriangles` triangles (3 vertex ids each) into host
+  /// memory. Then the surface's arrays are freed.
+  virtual void ContourGeometry(const std::int64_t* firstVertex, const std::int64_t* firstTriangle,
+    std::int64_t numberOfVertices, std::int64_t numberOfTriangles, double* points, float* normals,
+    long long* triangles) = 0;
+
+  // The dense volume (nvVolumeKernels.h), when the run fills one with
+  // Device GPU (nvReconstruction.cxx): DenseBegin before the band's
+  // construction, DenseBricks after each batch of its distances
+  // (nvDeviceDistance.h), DenseBand and DenseDownload after the evolution.
+
+  /// Holds the dense arrays `arrays` (host memory, constants.Nodes() values
+  /// each; a null one is not filled) and clears them (DenseClearKernel):
+  /// the host launcher fills them in place, the CUDA launcher on the device
+  /// until DenseDownload.
+  virtual void DenseBegin(const DenseArrays& arrays, const DenseConstants& constants) = 0;
+  /// DenseBrickKernel on the nodes of the `count` bricks of the last
+  /// DistanceBricks.
+  virtual void DenseBricks(std::int64_t count) = 0;
+  /// DenseBandKernel on the band's `numberOfBricks` bricks (`band`: host
+  /// memory; its Phi, `numberOfNodes` values, is read by the host launcher,
+  /// while the CUDA launcher takes the evolution's phi, still on the device).
+  virtual void DenseBand(const DenseBandArrays& band, std::int64_t numberOfBricks, std::int64_t numberOfNodes) = 0;
+  /// The dense arrays into the host memory given to DenseBegin; then freed.
+  virtual void DenseDownload() = 0;
 };
 
 /// The host launcher: the kernels over nv::ParallelFor and its reductions.

@@ -170,7 +170,63 @@ public:
     std::vector<std::uint8_t>().swap(this->BatchCovered);
   }
 
+  void ContourCounts(const ContourArrays& band, std::int64_t, const ContourConstants& constants,
+    std::int32_t* vertices, std::int32_t* triangles) override
+  {
+    // The band's arrays read in place; 8 bricks a task, as the CPU core's surface.
+    this->K = band;
+    this->KC = constants;
+    this->Psi.resize(static_cast<std::size_t>(512 * band.NumberOfBricks));
+    this->Cut.resize(static_cast<std::size_t>(CutWords * band.NumberOfCutBricks));
+    this->Above.resize(static_cast<std::size_t>(AboveRows * band.NumberOfCutBricks));
+    this->K.Psi = this->Psi.data();
+    this->K.Cut = this->Cut.data();
+    this->K.Above = this->Above.data();
+    this->K.VertexCount = vertices;
+    this->K.TriangleCount = triangles;
+    For(0, band.NumberOfBricks, PsiKernel{ this->K, this->KC }, 8);
+    For(0, band.NumberOfCutBricks, CutCellsKernel{ this->K, this->KC }, 8);
+  }
+  void ContourGeometry(const std::int64_t* firstVertex, const std::int64_t* firstTriangle, std::int64_t,
+    std::int64_t, double* points, float* normals, long long* triangles) override
+  {
+    this->K.FirstVertex = firstVertex;
+    this->K.FirstTriangle = firstTriangle;
+    this->K.Points = points; // the sink's arrays, written in place
+    this->K.Normals = normals;
+    this->K.Triangles = triangles;
+    For(0, this->K.NumberOfCutBricks, VerticesKernel{ this->K, this->KC }, 8);
+    For(0, this->K.NumberOfCutBricks, TrianglesKernel{ this->K, this->KC }, 8);
+    this->K = ContourArrays();
+    Free(this->Psi);
+    Free(this->Cut);
+    Free(this->Above);
+  }
+
+  void DenseBegin(const DenseArrays& arrays, const DenseConstants& constants) override
+  {
+    this->V = arrays; // the host's arrays, filled in place
+    this->VC = constants;
+    For(0, constants.Nodes(), DenseClearKernel{ arrays, constants }, 1 << 16);
+  }
+  void DenseBricks(std::int64_t count) override
+  {
+    For(0, count * 512, DenseBrickKernel{ this->D, this->V, this->VC }, 8 * 512);
+  }
+  void DenseBand(const DenseBandArrays& band, std::int64_t numberOfBricks, std::int64_t) override
+  {
+    For(0, numberOfBricks, DenseBandKernel{ band, this->V, this->VC }, 32);
+  }
+  void DenseDownload() override { this->V = DenseArrays(); } // already in host memory
+
 private:
+  DenseArrays V;
+  DenseConstants VC;
+  ContourArrays K;
+  ContourConstants KC;
+  UninitializedVector<float> Psi;
+  UninitializedVector<std::uint64_t> Cut;
+  UninitializedVector<std::uint16_t> Above;
   DistanceArrays D;
   UninitializedVector<double> BatchDistance;
   std::vector<std::uint8_t> BatchCovered;

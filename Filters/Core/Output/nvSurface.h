@@ -22,6 +22,10 @@
 // without any search tree, and the output is the same for any number of
 // threads. Per brick layer: the vertices of layer z + 1, then the triangles
 // of layer z, which use them.
+//
+// The device back end repeats this work brick by brick, term for term
+// (Device/nvSurfaceKernels.h, Output/nvDeviceSurface.h): change both
+// together; TestCoreDevice checks that they give the same surface.
 #ifndef nvSurface_h
 #define nvSurface_h
 

@@ -31,7 +31,8 @@
 namespace nv
 {
 
-/// psi of phi, clamped to [-eta/2, eta/2]; its sign is phi's.
+/// psi of phi, clamped to [-eta/2, eta/2]; its sign is phi's. The device
+/// back end's copy: ImpliedDistanceOf (Device/nvSurfaceKernels.h).
 class ImpliedDistance
 {
 public:

@@ -10,6 +10,9 @@
 // three steps: every node as if no point reached it (Clear), the reached
 // bricks during the band's construction, and the band's phi after the
 // evolution (WriteBand).
+//
+// The device back end's copy, for Device GPU: Device/nvVolumeKernels.h
+// (change both together; TestCoreDevice checks that they agree).
 #ifndef nvVolume_h
 #define nvVolume_h
 

@@ -5,6 +5,7 @@
 #include "nvCommunicator.h"
 #include "nvDeviceDistance.h"
 #include "nvDeviceEvolution.h"
+#include "nvDeviceSurface.h"
 #include "nvHoleProbe.h"
 #include "nvMemory.h"
 #include "nvParallel.h"
@@ -13,6 +14,7 @@
 #include "nvTruncatedDistance.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -512,6 +514,41 @@ bool Reconstruction::GatherPoints(std::vector<double>& xyz)
   return this->Stages.Time("gap closing", [&]() { return this->CloseGaps(xyz, closing); });
 }
 
+namespace
+{
+/// The output's dense arrays as the device's kernels take them (nvVolumeKernels.h).
+device::DenseArrays DenseArraysOf(const VolumeArrays& arrays)
+{
+  device::DenseArrays dense;
+  dense.Phi = arrays.Phi;
+  dense.InitialPhi = arrays.InitialPhi;
+  dense.Distance = arrays.Distance;
+  dense.Band = arrays.Band;
+  return dense;
+}
+
+/// The constants of the dense kernels, by VolumeWriter's expressions, for
+/// the node layers [kBegin, kEnd).
+device::DenseConstants DenseConstantsOf(
+  const Grid& grid, const Parameters& scheme, std::int64_t kBegin, std::int64_t kEnd)
+{
+  device::DenseConstants constants;
+  const std::array<std::int64_t, 3> bricks = BrickDimensions(grid);
+  for (int a = 0; a < 3; ++a)
+  {
+    constants.GridDims[a] = grid.Dims[a];
+    constants.BrickDims[a] = bricks[a];
+  }
+  constants.Begin = kBegin;
+  constants.End = kEnd;
+  constants.Offset = scheme.OffsetDistance;
+  constants.Xi = scheme.Xi();
+  constants.Infinity = std::numeric_limits<double>::infinity();
+  constants.Far = static_cast<float>(grid.FarDistance());
+  return constants;
+}
+} // namespace
+
 bool Reconstruction::BuildBand(std::vector<double> xyz)
 {
   // 5. Distance (eq. 6, 7) and band (steps 1-3); the dense arrays, if
@@ -524,15 +561,21 @@ bool Reconstruction::BuildBand(std::vector<double> xyz)
     this->TheMonitor->Stage(0.0, 0.3);
   }
   BrickVisitor writeBrick;
+  VolumeArrays dense;
   if (this->AllocateVolume && !this->EmptyPiece())
   {
     this->Volume[0] = std::max(this->Computed[0], this->Piece[0] - this->VolumeGhosts);
     this->Volume[1] = std::min(this->Computed[1], this->Piece[1] + this->VolumeGhosts);
-    this->Writer.reset(new VolumeWriter(grid, this->ThePlan.Scheme,
-      this->AllocateVolume(this->Volume[0], this->Volume[1]), this->Volume[0], this->Volume[1]));
-    this->Writer->Clear();
-    VolumeWriter* writer = this->Writer.get();
-    writeBrick = [writer](std::int64_t brick, const double* d) { writer->WriteBrick(brick, d); };
+    dense = this->AllocateVolume(this->Volume[0], this->Volume[1]);
+    // With Device GPU the device fills them (below and EvolveOnDevice).
+    this->DenseOnDevice = this->Launcher != nullptr;
+    if (!this->DenseOnDevice)
+    {
+      this->Writer.reset(new VolumeWriter(grid, this->ThePlan.Scheme, dense, this->Volume[0], this->Volume[1]));
+      this->Writer->Clear();
+      VolumeWriter* writer = this->Writer.get();
+      writeBrick = [writer](std::int64_t brick, const double* d) { writer->WriteBrick(brick, d); };
+    }
   }
   {
     // The points sorted into bricks, for the band only: gone once it is built.
@@ -545,13 +588,20 @@ bool Reconstruction::BuildBand(std::vector<double> xyz)
     {
       // Device GPU: the distances of eq. (6) and the band's nodes among
       // them by the device's kernels, the CPU's bit for bit
-      // (nvDeviceDistance.h); the band's arrays and neighbours (steps 2
-      // and 3) on the host.
+      // (nvDeviceDistance.h), and the dense arrays, if asked for, from each
+      // batch's distances on the device (nvVolumeKernels.h); the band's
+      // arrays and neighbours (steps 2 and 3) on the host.
       try
       {
         device::LauncherDistance onDevice(distance, *this->Launcher);
+        if (this->DenseOnDevice)
+        {
+          this->Launcher->DenseBegin(DenseArraysOf(dense), DenseConstantsOf(grid, this->ThePlan.Scheme,
+                                                             this->Volume[0], this->Volume[1]));
+          onDevice.FillDense();
+        }
         this->Band = BuildNarrowBand(
-          distance, this->ThePlan.Scheme, this->TheMonitor, &this->Part, writeBrick, &this->Stages, &onDevice);
+          distance, this->ThePlan.Scheme, this->TheMonitor, &this->Part, nullptr, &this->Stages, &onDevice);
       }
       catch (const device::DeviceError& error)
       {
@@ -666,8 +716,6 @@ bool Reconstruction::EvolveOnDevice()
     this->Launcher.reset();
     return this->Fail(error.what());
   }
-  this->DevicePeakBytes = this->Launcher->DeviceBytes();
-  this->Launcher.reset(); // the device's memory freed
   for (const StepReport& step : reports)
   {
     this->Changes.push_back(step.RelativeChange);
@@ -676,9 +724,35 @@ bool Reconstruction::EvolveOnDevice()
   this->Stages.Add("evolution", this->EvolutionTime);
   if (this->TheMonitor && this->TheMonitor->Aborted())
   {
+    this->Launcher.reset();
     this->Stopped = true;
     return false;
   }
+  if (this->DenseOnDevice)
+  {
+    // The band's phi into the dense arrays on the device (DenseBandKernel,
+    // the evolution's phi still there), then the arrays to the host, once.
+    const auto writing = StageTimes::Clock::now();
+    try
+    {
+      device::DenseBandArrays band;
+      band.Bricks = this->Band.Bricks.data();
+      band.RedStart = this->Band.RedStart.data();
+      band.BlackStart = this->Band.BlackStart.data();
+      band.Offset = this->Band.Offset.data();
+      band.Phi = this->DevicePhi.data();
+      this->Launcher->DenseBand(band, static_cast<std::int64_t>(this->Band.Bricks.size()), this->Band.Size());
+      this->Launcher->DenseDownload();
+    }
+    catch (const device::DeviceError& error)
+    {
+      this->Launcher.reset();
+      return this->Fail(error.what());
+    }
+    this->Stages.Add("volume", writing);
+  }
+  this->DevicePeakBytes = this->Launcher->DeviceBytes();
+  this->Launcher.reset(); // the device's memory freed
   // The outputs need the band's nodes and phi only.
   Free(this->Band.Distance);
   Free(this->Band.Neighbor);
@@ -750,11 +824,59 @@ bool Reconstruction::ExtractSurface(SurfaceSink& sink) const
   }
   bool done = false;
   WithThreads(this->TheSettings.NumberOfThreads, [&]() {
+    if (this->SurfaceOnDevice(sink))
+    {
+      done = !(this->TheMonitor && this->TheMonitor->Aborted());
+      return;
+    }
     const BandField field(this->Band, this->GetPhi(), this->ThePlan.Scheme);
     done = ContourBricks(
       this->ThePlan.TheGrid, field, sink, this->Part.Owned.Begin, this->Part.Owned.End, this->TheMonitor);
   });
   return done;
+}
+
+bool Reconstruction::SurfaceOnDevice(SurfaceSink& sink) const
+{
+  // 7, with Device GPU: the surface by the device back end's kernels
+  // (nvDeviceSurface.h), the CPU's through the host launcher. The band and
+  // phi go to the device, the vertices and triangles come back. Should the
+  // device fail here, the part of the surface it gave is dropped and the CPU
+  // makes it (false; the error in SurfaceDeviceError).
+  this->SurfaceError.clear();
+  if (this->Used.empty() || this->Used == "CPU" || this->Comm)
+  {
+    return false;
+  }
+  const SurfaceArrays before = sink.View();
+  try
+  {
+    std::string why;
+    std::unique_ptr<device::EvolutionLauncher> launcher =
+      this->TheSettings.DeviceOnHost ? device::MakeHostLauncher() : device::MakeCudaLauncher(why);
+    if (!launcher)
+    {
+      this->SurfaceError = why;
+      return false;
+    }
+    if (this->TheMonitor)
+    {
+      this->TheMonitor->Progress(0.0);
+    }
+    ContourOnDevice(this->ThePlan.TheGrid, this->Band, this->GetPhi(), this->ThePlan.Scheme, *launcher, sink);
+    this->DevicePeakBytes = std::max(this->DevicePeakBytes, launcher->DeviceBytes());
+    if (this->TheMonitor)
+    {
+      this->TheMonitor->Progress(1.0);
+    }
+  }
+  catch (const device::DeviceError& error)
+  {
+    this->SurfaceError = error.what();
+    sink.Truncate(before);
+    return false;
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -23,7 +23,8 @@
 //      then the
 //      band's phi into the dense arrays, and whether each hole left open
 //      pierces the evolved shell (GapReport);
-//   7. the phi = 0 surface, from the band (ExtractSurface, nvSurface.h).
+//   7. the phi = 0 surface, from the band (ExtractSurface, nvSurface.h; with
+//      Device GPU by the device back end, nvDeviceSurface.h).
 //
 // The VTK filter (vtkNarrowVolumeReconstruction) only converts: the input's
 // points in, the image and the surface out.
@@ -161,6 +162,9 @@ public:
   /// Step 7: the phi = 0 surface of this process's piece, from the band
   /// (nvSurfaceField.h, nvSurface.h). Returns false if the monitor stopped it.
   bool ExtractSurface(SurfaceSink& sink) const;
+  /// With Device GPU, why the last ExtractSurface made the surface on the
+  /// CPU instead (the device failed); empty when the device made it.
+  const std::string& SurfaceDeviceError() const { return this->SurfaceError; }
 
   /// The band (after Run, its nodes only: the solver's other arrays are freed).
   const NarrowBand& GetBand() const { return this->Band; }
@@ -170,7 +174,9 @@ public:
   /// host" (the GPU's kernels through the host launcher, Settings::DeviceOnHost);
   /// empty before the run has chosen.
   const std::string& DeviceUsed() const { return this->Used; }
-  /// The most bytes the GPU held during the evolution (0 on the CPU).
+  /// The most bytes the GPU held at once (0 on the CPU): from the distance
+  /// to the evolution's end (the dense volume's included), or while it made
+  /// the surface (ExtractSurface), whichever held more.
   double DeviceBytes() const { return this->DevicePeakBytes; }
 
   /// Frees the band and phi once the outputs no longer need them (after the
@@ -190,6 +196,7 @@ private:
   bool ChooseDevice();
   bool Evolve();
   bool EvolveOnDevice();
+  bool SurfaceOnDevice(SurfaceSink& sink) const;
   bool ProbeHoles();
   bool Fail(const std::string& message);
   bool CheckMemory(double gridNodes, double points);
@@ -211,6 +218,7 @@ private:
   std::int64_t VolumeGhosts = 0;
   VolumeAllocator AllocateVolume;
   std::unique_ptr<VolumeWriter> Writer; ///< fills the dense arrays (steps 5 and 6)
+  bool DenseOnDevice = false;           ///< or the device does (Device GPU)
   double BytesBeforeBand = 0.0;
   NarrowBand Band;
   std::unique_ptr<Halo> TheHalo;
@@ -218,7 +226,8 @@ private:
   std::unique_ptr<device::EvolutionLauncher> Launcher; ///< with Device GPU, until the evolution ends
   BandValues DevicePhi; ///< phi from the device back end (no Solver then)
   std::string Used;
-  double DevicePeakBytes = 0.0;
+  mutable std::string SurfaceError; ///< SurfaceDeviceError
+  mutable double DevicePeakBytes = 0.0;
   std::int64_t BandNodes = 0;
   std::vector<double> Changes;
   double SetupTime = 0.0;

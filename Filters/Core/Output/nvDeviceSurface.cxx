@@ -1,0 +1,121 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+// SPDX-License-Identifier: BSD-3-Clause
+#include "nvDeviceSurface.h"
+
+#include "nvMarchingCubes.h"
+#include "nvSurfaceField.h"
+#include "nvTruncatedDistance.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace nv
+{
+
+const device::CellCases& DeviceCellCases()
+{
+  static const device::CellCases table = [] {
+    device::CellCases cases{};
+    const std::array<CellCase, 256>& source = MarchingCubesCases();
+    for (int signs = 0; signs < 256; ++signs)
+    {
+      cases.Count[signs] = static_cast<std::uint8_t>(source[signs].Count);
+      for (int t = 0; t < source[signs].Count; ++t)
+      {
+        for (int v = 0; v < 3; ++v)
+        {
+          cases.Edges[signs][3 * t + v] = source[signs].Triangles[t][v];
+        }
+      }
+    }
+    return cases;
+  }();
+  return table;
+}
+
+std::vector<std::int64_t> CutBricksOf(const NarrowBand& band)
+{
+  const std::array<std::int64_t, 3> dims = BrickDimensions(band.GridNodes);
+  std::vector<std::int64_t> cut;
+  for (std::size_t a = 0; a < band.Bricks.size(); ++a)
+  {
+    // As BandField::Layer: a brick without band nodes whose nodes all lie
+    // on one side of the shell has one value of psi.
+    const std::uint64_t* inside = &band.Inside[8 * a];
+    const bool allInside = std::all_of(inside, inside + 8, [](std::uint64_t w) { return w == ~std::uint64_t(0); });
+    const bool allOutside = std::all_of(inside, inside + 8, [](std::uint64_t w) { return w == 0; });
+    const bool banded = band.RedStart[a + 1] > band.RedStart[a] || band.BlackStart[a + 1] > band.BlackStart[a];
+    if (!banded && (allInside || allOutside))
+    {
+      continue;
+    }
+    const std::int64_t brick = band.Bricks[a];
+    const std::int64_t bx = brick % dims[0], by = (brick / dims[0]) % dims[1], bz = brick / (dims[0] * dims[1]);
+    for (int dz = 0; dz < 2 && bz - dz >= 0; ++dz)
+    {
+      for (int dy = 0; dy < 2 && by - dy >= 0; ++dy)
+      {
+        for (int dx = 0; dx < 2 && bx - dx >= 0; ++dx)
+        {
+          cut.push_back((bx - dx) + dims[0] * ((by - dy) + dims[1] * (bz - dz)));
+        }
+      }
+    }
+  }
+  std::sort(cut.begin(), cut.end());
+  cut.erase(std::unique(cut.begin(), cut.end()), cut.end());
+  return cut;
+}
+
+void ContourOnDevice(const Grid& grid, const NarrowBand& band, const BandValues& phi, const Parameters& parameters,
+  device::EvolutionLauncher& launcher, SurfaceSink& sink)
+{
+  device::ContourConstants constants;
+  const std::array<std::int64_t, 3> dims = BrickDimensions(grid);
+  for (int a = 0; a < 3; ++a)
+  {
+    constants.GridDims[a] = grid.Dims[a];
+    constants.BrickDims[a] = dims[a];
+    constants.Origin[a] = grid.Origin[a];
+  }
+  constants.Spacing = grid.Spacing;
+  // psi = sqrt(2) xi atanh(phi), clamped to eta/2: ImpliedDistance's constants.
+  constants.Scale = std::sqrt(2.0) * parameters.Xi();
+  constants.Cap = parameters.HalfBandWidth();
+
+  const std::vector<std::int64_t> cutBricks = CutBricksOf(band);
+  const std::int64_t cut = static_cast<std::int64_t>(cutBricks.size());
+  device::ContourArrays arrays;
+  arrays.NumberOfBricks = static_cast<std::int64_t>(band.Bricks.size());
+  arrays.Bricks = band.Bricks.data();
+  arrays.RedStart = band.RedStart.data();
+  arrays.BlackStart = band.BlackStart.data();
+  arrays.Offset = band.Offset.data();
+  arrays.Inside = band.Inside.data();
+  arrays.Phi = phi.data();
+  arrays.NumberOfCutBricks = cut;
+  arrays.CutBricks = cutBricks.data();
+  arrays.Cases = &DeviceCellCases();
+  std::vector<std::int32_t> vertices(static_cast<std::size_t>(cut)), triangles(static_cast<std::size_t>(cut));
+  launcher.ContourCounts(arrays, band.Size(), constants, vertices.data(), triangles.data());
+
+  // Each cut brick's first vertex and triangle, in brick order: the CPU
+  // core's numbering (nvSurface.h).
+  std::vector<std::int64_t> firstVertex(static_cast<std::size_t>(cut)), firstTriangle(static_cast<std::size_t>(cut));
+  std::int64_t numberOfVertices = 0, numberOfTriangles = 0;
+  for (std::int64_t r = 0; r < cut; ++r)
+  {
+    firstVertex[r] = numberOfVertices;
+    firstTriangle[r] = numberOfTriangles;
+    numberOfVertices += vertices[r];
+    numberOfTriangles += triangles[r];
+  }
+  double* xyz = nullptr;
+  float* normals = nullptr;
+  sink.AddPoints(numberOfVertices, xyz, normals);
+  VertexId* ids = sink.AddTriangles(numberOfTriangles);
+  launcher.ContourGeometry(firstVertex.data(), firstTriangle.data(), numberOfVertices, numberOfTriangles, xyz, normals,
+    ids);
+}
+
+} // namespace nv
