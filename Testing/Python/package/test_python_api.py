@@ -45,6 +45,8 @@ import nvflavours
 import nvtesting
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+TESTS = os.path.dirname(HERE)  # Testing/Python, the areas' folders
+SOURCE = os.path.normpath(os.path.join(TESTS, "..", ".."))
 TREFOIL = nvclouds.data_file("trefoil.vtp")
 REFERENCE = os.environ.get("NV_PIP_REFERENCE")
 WHEEL = narrowvolume.FLAVOUR == "wheel"
@@ -79,7 +81,7 @@ def test_flavour(flavour):
 
 def test_version():
     """__version__ is the project's version (CMakeLists.txt's project(), which the wheel's metadata reads too)."""
-    with open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "CMakeLists.txt")) as f:
+    with open(os.path.join(SOURCE, "CMakeLists.txt")) as f:
         project = re.search(r"project\(NarrowVolume VERSION ([0-9.]+)", f.read()).group(1)
     assert narrowvolume.__version__ == project
     if WHEEL:
@@ -794,7 +796,7 @@ def test_console_script():
 
 
 # --- The pip page of the documentation (doc/getting-started/python.md)
-PIP_PAGE = os.path.join(HERE, "..", "..", "doc", "getting-started", "python.md")
+PIP_PAGE = os.path.join(SOURCE, "doc", "getting-started", "python.md")
 
 
 def readme_pip_snippets():
@@ -848,13 +850,13 @@ def test_readme_pip_snippets(tmp_path):
 
 # --- The project's other Python tests, against the wheel (ctest runs them
 # against the CMake build's package, each on its own), each module with
-# pytest in a child process, as ctest runs it.
+# pytest in a child process, as ctest runs it. Paths in Testing/Python.
 SHARED_MODULES = {
-    "test_python_package.py": [],
-    "test_robustness.py": [],
-    "test_reference_scheme.py": [],
-    "test_volume_off.py": [],
-    "test_pipeline_vtk.py": ["--trefoil", TREFOIL],
+    "package/test_python_package.py": [],
+    "filter/test_robustness.py": [],
+    "fidelity/test_reference_scheme.py": [],
+    "filter/test_volume_off.py": [],
+    "filter/test_pipeline_vtk.py": ["--trefoil", TREFOIL],
 }
 
 
@@ -864,8 +866,8 @@ def test_shared_module(module):
     """A test module of the CMake build's package passes with the wheel."""
     start = time.perf_counter()
     result = subprocess.run([sys.executable, "-m", "pytest", "-p", "no:cacheprovider", "-v", "-r", "s", "-s",
-                             os.path.join(HERE, module)] + SHARED_MODULES[module],
-                            capture_output=True, text=True, cwd=HERE)
+                             os.path.join(TESTS, module)] + SHARED_MODULES[module],
+                            capture_output=True, text=True, cwd=TESTS)
     print(result.stdout[-3000:])
     print("%s: %.1f s" % (module, time.perf_counter() - start))
     assert result.returncode == 0 and "FAILED" not in result.stdout, nvtesting.explain(result)
