@@ -732,6 +732,51 @@ def test_cli_project_formats(tmp_path):
     assert _read(str(tmp_path / "c.stl")).GetNumberOfPolys() > 0
 
 
+# The LAS reader's arrays and their types (vtkLASPointCloudReader's; test_las_reader.py's TYPES).
+LAS_TYPES = {"Intensity": "unsigned short", "Classification": "unsigned char", "ReturnNumber": "unsigned char",
+             "NumberOfReturns": "unsigned char", "ClassificationFlags": "unsigned char",
+             "ScanDirectionFlag": "unsigned char", "EdgeOfFlightLine": "unsigned char", "UserData": "unsigned char",
+             "ScanAngle": "float", "PointSourceId": "unsigned short", "ScannerChannel": "unsigned char",
+             "GpsTime": "double", "Colors": "unsigned char", "NearInfrared": "unsigned short"}
+
+
+@pytest.mark.parametrize("point_format", range(11), ids=["format%d" % f for f in range(11)])
+def test_read_cloud_las(tmp_path, point_format):
+    """LAS 1.4 in every point format through the project's readers, without
+    laspy: the CMake build's C++ reader, the wheel's binding of its parser
+    (narrowvolume._core.read_las, nv::las::ReadFile). The coordinates in
+    double precision, every array of the C++ reader with its type and the
+    values written (nvpointfiles.py), the colours as the scalars."""
+    import nvpointfiles
+    from narrowvolume import _cli
+    path = str(tmp_path / ("format%d.las" % point_format))
+    expected = nvpointfiles.write_las(path, 4, point_format, SPHERE[:300], seed=point_format, extra_bytes=3,
+                                      with_vlr=True)
+    cloud = _cli.read_cloud(path)
+    n = len(expected["xyz"])
+    assert cloud.GetNumberOfPoints() == n and cloud.GetNumberOfVerts() == n
+    assert cloud.GetPoints().GetData().GetDataTypeAsString() == "double"
+    error = float(np.abs(vtk_to_numpy(cloud.GetPoints().GetData()) - expected["xyz"]).max())
+    assert error <= 1e-9, "coordinates = X * scale + offset in double (max error %g)" % error
+    data = cloud.GetPointData()
+    names = {data.GetArrayName(i) for i in range(data.GetNumberOfArrays())}
+    assert names == set(expected) - {"xyz"}
+    for name in names:
+        assert data.GetArray(name).GetDataTypeAsString() == LAS_TYPES[name], name
+        assert np.array_equal(vtk_to_numpy(data.GetArray(name)), expected[name]), name
+    assert ("Colors" in names) == (data.GetScalars() is not None and data.GetScalars().GetName() == "Colors")
+
+
+def test_read_cloud_las_damaged(tmp_path):
+    """A LAS file cut short: the parser's sentence, naming the file, on both routes."""
+    import nvpointfiles
+    path = tmp_path / "short.las"
+    nvpointfiles.write_las(str(path), 2, 1, SPHERE[:100])
+    path.write_bytes(path.read_bytes()[:-50])
+    result = cli(path, "-o", tmp_path / "a.stl")
+    assert result.returncode == 1 and "short.las" in result.stderr and "point" in result.stderr, result.stderr
+
+
 def test_cli_progress_on_a_terminal(tmp_path):
     """A progress bar on a terminal, none when standard error is a file."""
     import pty
