@@ -9,10 +9,10 @@
 The cloud: any file VTK reads as a point set (by extension: .vtp .vtu .vts
 .vtk .ply .stl .obj .pts, and their parallel .pvtp .pvtu; a .ply is checked
 before VTK reads it), plain-text clouds .xyz .txt .csv (x y z in the first
-three columns), LiDAR .las and .laz, PCL's .pcd, and .e57 scans (.laz and
-.e57, and .las and .pcd in the pip package, through the Python modules
-laspy with lazrs, and pye57: an error names the pip package a file needs
-when its module is missing). Each output is
+three columns), LiDAR .las and .laz, PCL's .pcd, and .e57 scans (.las and
+.pcd with the C++ readers' parsers; .laz and .e57 through the Python
+modules laspy with lazrs, and pye57: an error names the pip package a file
+needs when its module is missing). Each output is
 written by its extension: .stl, .vtp or .ply the surface, .vti the volume (VTK
 XML files in Binary mode). Every property of the filter is an option, with the
 filter's default. Exit status: 0 done, 1 the run or a file failed (the message
@@ -49,8 +49,9 @@ READERS = {
 }
 TEXT = (".xyz", ".txt", ".csv")
 # Clouds the project's readers read: the CMake build's C++ readers (.las,
-# .pcd), else the Python ones (.las and .laz through laspy, .e57 through
-# pye57: the ParaView plugin's Python readers' functions; .pcd in numpy).
+# .pcd), else the wheel's binding of their parsers (.las and .pcd:
+# narrowvolume._core), and the ParaView plugin's Python readers' functions
+# (.laz through laspy, .e57 through pye57).
 SCANS = (".las", ".laz", ".pcd", ".e57")
 CLOUDS = sorted(set(READERS) | set(TEXT) | set(SCANS))
 # Writers by extension: (module, class, which output, binary file).
@@ -104,15 +105,16 @@ def _named(path, message):
 
 
 def _read_scan(path, extension):
-    """.las, .laz and .e57 through laspy and pye57 (the ParaView plugin's
-    Python readers' functions), .pcd with the PCD parser of the C++ reader
-    (narrowvolume._core.read_pcd): what the pip package reads without C++
-    readers, and the CMake build's package for .laz and .e57."""
+    """.las and .pcd with the parsers of the C++ readers
+    (narrowvolume._core.read_las and read_pcd), .laz and .e57 through laspy
+    and pye57 (the ParaView plugin's Python readers' functions): what the
+    pip package reads without C++ readers, and the CMake build's package for
+    .laz and .e57."""
     from . import _scanreaders
-    if extension == ".pcd":
+    if extension in (".las", ".pcd"):
         from . import _core
         try:
-            return _scanreaders.point_cloud(*_core.read_pcd(path))
+            return _scanreaders.point_cloud(*(_core.read_las if extension == ".las" else _core.read_pcd)(path))
         except ValueError as error:  # the parser's sentence, naming the file
             raise Failure(_named(path, str(error)))
     try:

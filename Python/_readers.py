@@ -12,17 +12,19 @@ scripts read files the same way with either plugin:
   the compiled reader's parser (narrowvolume._core.read_pcd, which the pip
   package's command line reads with too): x y z, and the other fields as
   point arrays ("rgb" / "rgba" as the colours "Colors");
-- LASPointCloudReader: .las through laspy, with the arrays of the compiled
-  reader; and LAZ and E57 through laspy and pye57 (_scanreaders.py, the
-  compiled plugin's Python readers, NarrowVolumeScanReaders.py). Without
-  the module a file needs, reading it ends in an error with the pip command
-  that installs it.
+- LASPointCloudReader: .las, LAS 1.0-1.4 in point formats 0-10, with the
+  compiled reader's parser (narrowvolume._core.read_las, which the pip
+  package's command line reads with too) and its arrays;
+- LAZ and E57 through laspy and pye57 (_scanreaders.py, the compiled
+  plugin's Python readers, NarrowVolumeScanReaders.py). Without the module
+  a file needs, reading it ends in an error with the pip command that
+  installs it.
 """
 from paraview.util.vtkAlgorithm import smdomain, smhint, smproperty, smproxy
 
 from . import _core
 from ._scanreaders import (E57PointCloudReader, LAZPointCloudReader, ScanFileReader,  # noqa: F401 (proxies)
-                           point_cloud, read_laz)
+                           point_cloud)
 
 
 def read_text(filename):
@@ -35,6 +37,12 @@ def read_pcd(filename):
     """A .pcd file as a vtkPolyData: x y z, and the other fields as arrays;
     ValueError says why the file cannot be read."""
     return point_cloud(*_core.read_pcd(filename))
+
+
+def read_las(filename):
+    """A .las file as a vtkPolyData with the arrays of the compiled reader;
+    ValueError says why the file cannot be read."""
+    return point_cloud(*_core.read_las(filename))
 
 
 # The compiled plugin's text reader is ASCIIPointCloudReader, a name that
@@ -75,13 +83,13 @@ class PCDPointCloudReader(ScanFileReader):
 
 
 @smproxy.reader(name="LASPointCloudReader", label="LAS Point Cloud Reader",
-                extensions="las", file_description="LAS Point Clouds (LiDAR, via laspy)")
+                extensions="las", file_description="LAS Point Clouds (LiDAR)")
 class LASPointCloudReader(ScanFileReader):
-    """Reads .las files through laspy, with the arrays of the compiled reader."""
+    """Reads uncompressed LAS 1.0-1.4 files, point formats 0-10, with the arrays of the compiled reader."""
 
     @staticmethod
     def read(filename):
-        return read_laz(filename)
+        return read_las(filename)
 
     @smproperty.stringvector(name="FileName", panel_visibility="never")
     @smdomain.filelist()
@@ -91,4 +99,4 @@ class LASPointCloudReader(ScanFileReader):
 
 
 __all__ = ["PointCloudTextReader", "PCDPointCloudReader", "LASPointCloudReader", "LAZPointCloudReader",
-           "E57PointCloudReader", "read_pcd", "read_text"]
+           "E57PointCloudReader", "read_las", "read_pcd", "read_text"]

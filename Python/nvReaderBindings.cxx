@@ -2,10 +2,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The readers' plain-C++ parsers (Readers/Formats) in narrowvolume._core,
 // for the wheel, which has no VTK readers: the command line and the
-// ParaView Python plugin (_readers.py) read PCD and text clouds with them,
-// and turn the arrays into a vtkPolyData (_scanreaders.point_cloud).
+// ParaView Python plugin (_readers.py) read LAS, PCD and text clouds with
+// them, and turn the arrays into a vtkPolyData (_scanreaders.point_cloud).
 // Parsing and its messages are the parsers'; this file only hands their
 // results to numpy and their failures to Python as ValueError.
+#include "nvLAS.h"
 #include "nvPCD.h"
 #include "nvTextCloud.h"
 
@@ -36,6 +37,66 @@ nb::object NewArray(std::uint64_t n, std::size_t components, Fill fill)
   fill(values);
   const std::size_t shape[2] = { static_cast<std::size_t>(n), components };
   return nb::cast(nb::ndarray<nb::numpy, T>(values, components > 1 ? 2 : 1, shape, owner));
+}
+
+/// A numpy array that takes over a column of nv::las::Points (no copy; the
+/// capsule frees it with delete[], as the column would have).
+template <class T>
+nb::object Adopt(nv::las::Column<T>& column, std::uint64_t n, std::size_t components = 1)
+{
+  const std::size_t shape[2] = { static_cast<std::size_t>(n), components };
+  T* values = column.Release();
+  nb::capsule owner(values, [](void* p) noexcept { delete[] static_cast<T*>(p); });
+  return nb::cast(nb::ndarray<nb::numpy, T>(values, components > 1 ? 2 : 1, shape, owner));
+}
+
+/// read_las: the points, the fields as the VTK reader's arrays, and the name of the colours.
+nb::tuple ReadLAS(const std::string& path)
+{
+  nv::las::Header header;
+  nv::las::Points read;
+  std::string error;
+  nv::las::ReadResult result;
+  {
+    nb::gil_scoped_release release;
+    result = nv::las::ReadFile(path, header, read, error);
+  }
+  if (result != nv::las::ReadResult::Read)
+  {
+    throw nb::value_error(error.c_str());
+  }
+  const std::uint64_t n = header.NumberOfPoints;
+  const int format = header.PointFormat;
+  nb::dict arrays;
+  arrays["Intensity"] = Adopt(read.Intensity, n);
+  arrays["Classification"] = Adopt(read.Classification, n);
+  arrays["ReturnNumber"] = Adopt(read.ReturnNumber, n);
+  arrays["NumberOfReturns"] = Adopt(read.NumberOfReturns, n);
+  arrays["ClassificationFlags"] = Adopt(read.ClassificationFlags, n);
+  arrays["ScanDirectionFlag"] = Adopt(read.ScanDirectionFlag, n);
+  arrays["EdgeOfFlightLine"] = Adopt(read.EdgeOfFlightLine, n);
+  arrays["UserData"] = Adopt(read.UserData, n);
+  arrays["ScanAngle"] = Adopt(read.ScanAngle, n);
+  arrays["PointSourceId"] = Adopt(read.PointSourceId, n);
+  if (nv::las::IsExtendedFormat(format))
+  {
+    arrays["ScannerChannel"] = Adopt(read.ScannerChannel, n);
+  }
+  if (nv::las::HasGpsTime(format))
+  {
+    arrays["GpsTime"] = Adopt(read.GpsTime, n);
+  }
+  if (nv::las::HasNearInfrared(format))
+  {
+    arrays["NearInfrared"] = Adopt(read.NearInfrared, n);
+  }
+  nb::object scalars = nb::none();
+  if (nv::las::HasColor(format))
+  {
+    arrays["Colors"] = Adopt(read.Colors, n, 3);
+    scalars = nb::str("Colors");
+  }
+  return nb::make_tuple(Adopt(read.XYZ, n, 3), arrays, scalars);
 }
 
 /// Field f of every point as it is stored, in its own type.
@@ -173,6 +234,12 @@ nb::object ReadTextCloud(const std::string& path)
 
 void BindReaders(nb::module_& m)
 {
+  m.def("read_las", &ReadLAS, "path"_a,
+    "A LAS 1.0-1.4 file, point formats 0-10 (nv::las::ReadFile, as vtkLASPointCloudReader reads it) as "
+    "(xyz, arrays, scalars): the points (n x 3 doubles, X * scale + offset), the fields as the C++ "
+    "reader's arrays (Intensity, Classification, ..., GpsTime, NearInfrared where the format has them), "
+    "the colours as \"Colors\" (n x 3 bytes), and the name of the colours or None. ValueError says why a "
+    "file cannot be read.");
   m.def("read_pcd", &ReadPCD, "path"_a,
     "A PCL .pcd file (ascii, binary or binary_compressed; nv::pcd::ReadFile, as vtkPCDPointCloudReader "
     "reads it) as (xyz, arrays, scalars): the points (n x 3 doubles), the other fields by name in their "

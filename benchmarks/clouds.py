@@ -4,20 +4,20 @@
 child processes of table2.py and mpi_scaling.py (which put this folder on
 their PYTHONPATH).
 
-The clouds themselves are the tests' (Testing/Python/nvclouds.py: the
-synthetic shapes, Data/'s demo cloud, the scans of ../shared/data/scans by
-name): this module is the benchmarks' one way to them. It puts
-Testing/Python on sys.path and gives nvclouds and nvshapes, and nvtesting
-(the tests' surface measures) when first asked for, `from clouds import
-nvtesting`: it loads VTK's filters, which the children that measure their
-memory do without.
+The clouds themselves are those of Data/ (nvclouds.py: the synthetic
+shapes of nvshapes.py, Data/'s demo cloud, the scans of ../shared/data/scans
+by name), which the tests and the doc pictures use too: this module is the
+benchmarks' one way to them. It puts Data/ on sys.path and gives nvclouds
+and nvshapes, and nvmeasures (the surface measures) when first asked for,
+`from clouds import nvmeasures`: it loads VTK's filters, which the children
+that measure their memory do without.
 """
 import os
 import sys
 
-TESTING = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Testing", "Python"))
-if TESTING not in sys.path:
-    sys.path.insert(0, TESTING)
+DATA = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Data"))
+if DATA not in sys.path:
+    sys.path.insert(0, DATA)
 
 import nvclouds  # noqa: E402
 import nvshapes  # noqa: E402,F401  (given to the benchmarks)
@@ -26,9 +26,9 @@ SCANS_DIR = nvclouds.SCANS_DIR
 
 
 def __getattr__(name):
-    if name == "nvtesting":
-        import nvtesting
-        return nvtesting
+    if name == "nvmeasures":
+        import nvmeasures
+        return nvmeasures
     raise AttributeError("module %r has no attribute %r" % (__name__, name))
 
 

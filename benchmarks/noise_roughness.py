@@ -9,7 +9,7 @@ between neighbouring triangles' normals.
 """
 import argparse
 
-from clouds import nvclouds, nvtesting
+from clouds import nvclouds, nvmeasures
 from narrowvolume import vtkNarrowVolumeReconstruction
 
 parser = argparse.ArgumentParser()
@@ -29,7 +29,7 @@ def roughness(cloud, steps, preserve):
     f.SetMaximumNumberOfIterations(steps)
     f.SetPreserveOffset(preserve)
     f.Update()
-    return nvtesting.face_normal_roughness(f.GetOutput(1))
+    return nvmeasures.face_normal_roughness(f.GetOutput(1))
 
 
 print("Fig. 6 spheres, 5 % noise, xi = eps_4, eps = eps_12, h = 0.01: roughness (deg)")

@@ -11,7 +11,7 @@ import sys
 
 import numpy as np
 
-from clouds import nvclouds, nvshapes, nvtesting
+from clouds import nvclouds, nvmeasures, nvshapes
 from narrowvolume import vtkNarrowVolumeReconstruction
 
 parser = argparse.ArgumentParser()
@@ -36,7 +36,7 @@ for h in args.spacing:
         f.SetSampleSpacing(h)
         f.SetMaximumNumberOfIterations(n)
         f.Update()
-        x = nvtesting.points_of(f.GetOutput(1))
+        x = nvmeasures.points_of(f.GetOutput(1))
         r = np.linalg.norm(x - nvshapes.CENTER, axis=1)
         inner, outer = np.abs(r[r < 0.5] - 0.4), np.abs(r[r >= 0.5] - 0.6)
         change = f.GetRelativeChanges()[-1] if n else float("nan")

@@ -5,8 +5,11 @@
 #include "nvLittleEndian.h"
 #include "nvTextParts.h"
 
+#include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <sstream>
+#include <vector>
 
 namespace
 {
@@ -246,4 +249,125 @@ void nv::las::DecodePoint(const std::uint8_t* record, int format, Point& point)
     point.Blue = U16(record + colorAt + 4);
   }
   point.NearInfrared = HasNearInfrared(format) ? U16(record + 36) : 0;
+}
+
+nv::las::ReadResult nv::las::ReadFile(const std::string& fileName, Header& header, Points& points,
+  std::string& error, const std::function<bool(double)>& keepGoing)
+{
+  std::ifstream in(fileName, std::ios::binary);
+  if (fileName.empty() || !in)
+  {
+    error = "Cannot open the LAS file \"" + fileName + "\".";
+    return ReadResult::Failed;
+  }
+  in.seekg(0, std::ios::end);
+  const std::streamoff end = in.tellg();
+  const std::uint64_t fileSize = end > 0 ? static_cast<std::uint64_t>(end) : 0;
+  in.seekg(0);
+  std::vector<std::uint8_t> head(static_cast<std::size_t>(std::min<std::uint64_t>(fileSize, MaximumHeaderSize)));
+  in.read(reinterpret_cast<char*>(head.data()), static_cast<std::streamsize>(head.size()));
+  if (!in || !ParseHeader(head.data(), head.size(), fileSize, header, error))
+  {
+    error = fileName + ": " + (error.empty() ? "cannot read the header" : error) + ".";
+    return ReadResult::Failed;
+  }
+
+  // ParseHeader checked that the file holds every announced point, so these
+  // arrays are at most a small multiple of the file's size.
+  const std::size_t n = static_cast<std::size_t>(header.NumberOfPoints);
+  const int format = header.PointFormat;
+  const bool extended = IsExtendedFormat(format);
+  const bool hasTime = HasGpsTime(format);
+  const bool hasColor = HasColor(format);
+  const bool hasInfrared = HasNearInfrared(format);
+  points = Points();
+  points.XYZ.Allocate(3 * n);
+  points.Intensity.Allocate(n);
+  points.Classification.Allocate(n);
+  points.ReturnNumber.Allocate(n);
+  points.NumberOfReturns.Allocate(n);
+  points.ClassificationFlags.Allocate(n);
+  points.ScanDirectionFlag.Allocate(n);
+  points.EdgeOfFlightLine.Allocate(n);
+  points.UserData.Allocate(n);
+  points.ScanAngle.Allocate(n);
+  points.PointSourceId.Allocate(n);
+  points.ScannerChannel.Allocate(extended ? n : 0);
+  points.GpsTime.Allocate(hasTime ? n : 0);
+  points.NearInfrared.Allocate(hasInfrared ? n : 0);
+  std::vector<std::uint16_t> rgb(hasColor ? 3 * n : 0);
+
+  in.clear();
+  in.seekg(static_cast<std::streamoff>(header.PointDataOffset));
+  constexpr std::size_t PointsPerChunk = 1 << 16;
+  const std::size_t length = header.PointRecordLength;
+  std::vector<std::uint8_t> chunk(std::min(n, PointsPerChunk) * length);
+  double* xyz = points.XYZ.Values.get();
+  Point p;
+  for (std::size_t first = 0; first < n; first += PointsPerChunk)
+  {
+    const std::size_t count = std::min(PointsPerChunk, n - first);
+    in.read(reinterpret_cast<char*>(chunk.data()), static_cast<std::streamsize>(count * length));
+    if (!in)
+    {
+      error = fileName + ": the file ends in point " +
+        std::to_string(first + static_cast<std::size_t>(in.gcount()) / length) + " of " + std::to_string(n) +
+        " (it changed while being read?).";
+      points = Points();
+      return ReadResult::Failed;
+    }
+    for (std::size_t k = 0; k < count; ++k)
+    {
+      const std::size_t i = first + k;
+      DecodePoint(chunk.data() + k * length, format, p);
+      // The coordinate is the integer times the scale plus the offset, in double.
+      xyz[3 * i] = p.X * header.Scale[0] + header.Offset[0];
+      xyz[3 * i + 1] = p.Y * header.Scale[1] + header.Offset[1];
+      xyz[3 * i + 2] = p.Z * header.Scale[2] + header.Offset[2];
+      points.Intensity.Values[i] = p.Intensity;
+      points.Classification.Values[i] = p.Classification;
+      points.ReturnNumber.Values[i] = p.ReturnNumber;
+      points.NumberOfReturns.Values[i] = p.NumberOfReturns;
+      points.ClassificationFlags.Values[i] = p.ClassificationFlags;
+      points.ScanDirectionFlag.Values[i] = p.ScanDirectionFlag;
+      points.EdgeOfFlightLine.Values[i] = p.EdgeOfFlightLine;
+      points.UserData.Values[i] = p.UserData;
+      points.ScanAngle.Values[i] = p.ScanAngle;
+      points.PointSourceId.Values[i] = p.PointSourceId;
+      if (extended)
+      {
+        points.ScannerChannel.Values[i] = p.ScannerChannel;
+      }
+      if (hasTime)
+      {
+        points.GpsTime.Values[i] = p.GpsTime;
+      }
+      if (hasColor)
+      {
+        rgb[3 * i] = p.Red;
+        rgb[3 * i + 1] = p.Green;
+        rgb[3 * i + 2] = p.Blue;
+      }
+      if (hasInfrared)
+      {
+        points.NearInfrared.Values[i] = p.NearInfrared;
+      }
+    }
+    if (keepGoing && !keepGoing(static_cast<double>(first + count) / static_cast<double>(n)))
+    {
+      points = Points();
+      return ReadResult::Stopped;
+    }
+  }
+  if (hasColor)
+  {
+    // 16-bit colours to 8 bits, unless the file stores 8-bit values already.
+    const bool sixteenBit = std::any_of(rgb.begin(), rgb.end(), [](std::uint16_t c) { return c > 255; });
+    points.Colors.Allocate(rgb.size());
+    for (std::size_t k = 0; k < rgb.size(); ++k)
+    {
+      points.Colors.Values[k] = static_cast<std::uint8_t>(sixteenBit ? rgb[k] >> 8 : rgb[k]);
+    }
+  }
+  return ReadResult::Read;
 }

@@ -16,6 +16,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
+#include <memory>
 #include <string>
 
 namespace nv
@@ -89,6 +91,65 @@ struct Point
 /// Decodes one record of point format `format` (0-10; the record holds at
 /// least StandardRecordLength(format) bytes).
 void DecodePoint(const std::uint8_t* record, int format, Point& point);
+
+/// The values of one field for every point (points x components of them),
+/// in an array its user may take over (Release): it is freed with delete[],
+/// as VTK's arrays do with VTK_DATA_ARRAY_DELETE and the wheel's binding
+/// does with its numpy arrays, so neither copies it.
+template <class T>
+struct Column
+{
+  std::unique_ptr<T[]> Values;
+  std::size_t Size = 0; ///< values; 0: the file's point format lacks the field
+
+  void Allocate(std::size_t size)
+  {
+    this->Values.reset(new T[size > 0 ? size : 1]);
+    this->Size = size;
+  }
+  T* Release() { return this->Values.release(); }
+};
+
+/// Every point of a file: its coordinates and its fields as the readers'
+/// point arrays, the same in the VTK reader (vtkLASPointCloudReader) and
+/// the wheel's (narrowvolume._core.read_las). A field the point format
+/// lacks is empty.
+struct Points
+{
+  Column<double> XYZ; ///< x y z of each point: X * scale + offset, in double
+  Column<std::uint16_t> Intensity;
+  Column<std::uint8_t> Classification;
+  Column<std::uint8_t> ReturnNumber;
+  Column<std::uint8_t> NumberOfReturns;
+  Column<std::uint8_t> ClassificationFlags;
+  Column<std::uint8_t> ScanDirectionFlag;
+  Column<std::uint8_t> EdgeOfFlightLine;
+  Column<std::uint8_t> UserData;
+  Column<float> ScanAngle;
+  Column<std::uint16_t> PointSourceId;
+  Column<std::uint8_t> ScannerChannel; ///< formats 6-10
+  Column<double> GpsTime;              ///< HasGpsTime
+  Column<std::uint16_t> NearInfrared;  ///< HasNearInfrared
+  /// HasColor: r g b of each point in 8 bits (16-bit colours shifted down,
+  /// unless no value exceeds 255: the file stores 8-bit values already).
+  Column<std::uint8_t> Colors;
+};
+
+enum class ReadResult
+{
+  Read,
+  Failed,
+  Stopped
+};
+
+/// Reads a .las file: its header (ParseHeader, checked against the file),
+/// then every point record decoded into `points`, 65536 at a time. Every
+/// allocation is bounded by the file's size. On failure returns Failed with
+/// the sentence for the user, naming the file, in `error`. `keepGoing`, when
+/// given, is called after each 65536 points with the fraction read; when it
+/// returns false the reading stops (Stopped).
+ReadResult ReadFile(const std::string& fileName, Header& header, Points& points, std::string& error,
+  const std::function<bool(double)>& keepGoing = nullptr);
 } // namespace las
 } // namespace nv
 

@@ -3,21 +3,35 @@
 """The Python tests' harness: pytest, run by ctest one module at a time
 (Testing/CMakeLists.txt), e.g. in build/:
 
-    PYTHONPATH=lib/python3.11/dist-packages:../Testing/Python pvpython --force-offscreen-rendering \\
-        -m pytest -v -r s -s ../Testing/Python/test_las_reader.py
+    PYTHONPATH=lib/python3.11/dist-packages pvpython --force-offscreen-rendering \\
+        -m pytest -v -r s -s ../Testing/Python/readers/test_las_reader.py
 
 (`ctest -R '^LASReader$' -V` prints the command with the build's paths;
 pvpython takes -rs for its own --rs, hence -r s.)
+
+The tests are in folders by area: filter/ (the filter in Python: settings,
+messages, robustness, the printed part), fidelity/ (the paper's tables and
+figures, the scans), readers/ (the point cloud readers and files),
+paraview/ (the plugin in pvpython, the GUI, MPI, the Python plugin; with
+the scripts they run in child processes), package/ (the Python package,
+the pip wheel in virtual environments) and docs/ (the README's and the
+documentation's snippets). This folder holds what they share: this
+harness, pytest.ini, nvtesting.py (the filter run once, child processes,
+scratch folders) and nvpointfiles.py (LAS and PCD files written for the
+readers); pytest puts it on sys.path (it is the rootdir). The clouds and
+the surface measures, which the benchmarks and the doc pictures use too,
+are in Data/ (nvclouds.py, nvshapes.py, nvmeasures.py), which this file
+puts on sys.path.
 
 Options (what ctest passes), each a fixture of the same name without the
 dashes: --plugin (the ParaView plugin, NarrowVolume.so), --plugins-xml
 (narrowvolume.plugins.xml), --trefoil (the demo cloud, default
 Data/trefoil.vtp), --scans-dir (default ../shared/data/scans beside the
-source tree, or $NV_SCANS_DIR), --readme, --with-xvfb, --source-dir;
---spacing (test_table1.py's h, repeatable) and --steps
-(test_preserve_offset_scans.py).
+source tree, or $NV_SCANS_DIR), --with-xvfb, --source-dir. An area's own
+options are in its conftest.py: --spacing and --steps (fidelity/),
+--wheel-dir (paraview/), --readme (docs/).
 
-Fixtures for the shared clouds (nvclouds.py): `trefoil`, `scans_dir`,
+Fixtures for the shared clouds (Data/nvclouds.py): `trefoil`, `scans_dir`,
 `scan` and `scan_points` (a scan by name, the test skipped with a message
 saying where they were looked for when ../shared is absent); `pvs`:
 paraview.simple with the plugin loaded; `flavour`: the package's flavour
@@ -30,11 +44,17 @@ and every test skipped, or, with --exit-77-on-skip, when any test skipped.
 A failed test keeps the scratch folders of nvtesting.scratch_folder.
 """
 import os
+import sys
 
 import pytest
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 SKIP_RETURN_CODE = 77
+# Data/: nvclouds, nvshapes, nvmeasures (ctest puts it on PYTHONPATH too, for
+# the scripts that run outside pytest; the wheel's virtual environments do not).
+DATA_DIR = os.path.normpath(os.path.join(HERE, "..", "..", "Data"))
+if DATA_DIR not in sys.path:
+    sys.path.insert(0, DATA_DIR)
 
 
 def pytest_addoption(parser):
@@ -44,13 +64,8 @@ def pytest_addoption(parser):
     group.addoption("--trefoil", help="the demo cloud (default: Data/trefoil.vtp)")
     group.addoption("--scans-dir", help="the real scans (default: ../shared/data/scans beside the source tree, "
                                         "or $NV_SCANS_DIR)")
-    group.addoption("--readme", help="the README whose snippets run (default: the source tree's)")
     group.addoption("--with-xvfb", help="scripts/with-xvfb.sh (default: the source tree's)")
     group.addoption("--source-dir", help="the source tree (default: the one holding this file)")
-    group.addoption("--wheel-dir", help="where PipWheel put the wheel (test_python_plugin.py)")
-    group.addoption("--spacing", type=float, action="append",
-                    help="test_table1.py: a sample spacing h, repeatable (default: 0.01 and 0.005)")
-    group.addoption("--steps", type=int, default=10, help="test_preserve_offset_scans.py: the steps (default 10)")
     group.addoption("--exit-77-on-skip", action="store_true",
                     help="exit with 77 (ctest's SKIP_RETURN_CODE) when a test skipped and none failed "
                          "(without it: when every test skipped)")
@@ -81,21 +96,11 @@ def plugins_xml(request):
 
 
 @pytest.fixture(scope="session")
-def wheel_dir(request):
-    return _required(request, "wheel_dir", "the folder of the wheel PipWheel builds")
-
-
-@pytest.fixture(scope="session")
-def readme(request, source_dir):
-    return request.config.getoption("readme") or os.path.join(source_dir, "README.md")
-
-
-@pytest.fixture(scope="session")
 def with_xvfb(request, source_dir):
     return request.config.getoption("with_xvfb") or os.path.join(source_dir, "scripts", "with-xvfb.sh")
 
 
-# --- The shared clouds (nvclouds.py).
+# --- The shared clouds (Data/nvclouds.py).
 
 @pytest.fixture(scope="session")
 def trefoil(request):

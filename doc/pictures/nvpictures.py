@@ -20,7 +20,7 @@ SOURCE = os.path.normpath(os.path.join(HERE, "..", ".."))
 BUILD = os.environ.get("BUILD_DIR") or os.path.join(SOURCE, "build")
 PLUGIN = os.path.join(BUILD, "lib", "paraview-5.11", "plugins", "NarrowVolume", "NarrowVolume.so")
 IMAGES = os.path.join(SOURCE, "doc", "images")
-sys.path.insert(0, os.path.join(SOURCE, "Testing", "Python"))  # nvclouds, nvshapes
+sys.path.insert(0, os.path.join(SOURCE, "Data"))  # nvclouds, nvshapes: the clouds the tests and benchmarks share
 
 import nvclouds  # noqa: E402
 

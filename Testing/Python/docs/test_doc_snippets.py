@@ -227,7 +227,7 @@ def command_for(block, code, fixtures):
 
 def runnable_blocks():
     """The blocks to run, with the "continues" blocks joined to the one they follow (module level: parametrize)."""
-    source_dir = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+    source_dir = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", ".."))
     runs, last = [], {}
     for block in all_blocks(source_dir):
         if block.marker is None and block.language in RUNNABLE or (block.marker or "").startswith("given points"):

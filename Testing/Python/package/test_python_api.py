@@ -45,6 +45,8 @@ import nvflavours
 import nvtesting
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+TESTS = os.path.dirname(HERE)  # Testing/Python, the areas' folders
+SOURCE = os.path.normpath(os.path.join(TESTS, "..", ".."))
 TREFOIL = nvclouds.data_file("trefoil.vtp")
 REFERENCE = os.environ.get("NV_PIP_REFERENCE")
 WHEEL = narrowvolume.FLAVOUR == "wheel"
@@ -79,7 +81,7 @@ def test_flavour(flavour):
 
 def test_version():
     """__version__ is the project's version (CMakeLists.txt's project(), which the wheel's metadata reads too)."""
-    with open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "CMakeLists.txt")) as f:
+    with open(os.path.join(SOURCE, "CMakeLists.txt")) as f:
         project = re.search(r"project\(NarrowVolume VERSION ([0-9.]+)", f.read()).group(1)
     assert narrowvolume.__version__ == project
     if WHEEL:
@@ -730,6 +732,51 @@ def test_cli_project_formats(tmp_path):
     assert _read(str(tmp_path / "c.stl")).GetNumberOfPolys() > 0
 
 
+# The LAS reader's arrays and their types (vtkLASPointCloudReader's; test_las_reader.py's TYPES).
+LAS_TYPES = {"Intensity": "unsigned short", "Classification": "unsigned char", "ReturnNumber": "unsigned char",
+             "NumberOfReturns": "unsigned char", "ClassificationFlags": "unsigned char",
+             "ScanDirectionFlag": "unsigned char", "EdgeOfFlightLine": "unsigned char", "UserData": "unsigned char",
+             "ScanAngle": "float", "PointSourceId": "unsigned short", "ScannerChannel": "unsigned char",
+             "GpsTime": "double", "Colors": "unsigned char", "NearInfrared": "unsigned short"}
+
+
+@pytest.mark.parametrize("point_format", range(11), ids=["format%d" % f for f in range(11)])
+def test_read_cloud_las(tmp_path, point_format):
+    """LAS 1.4 in every point format through the project's readers, without
+    laspy: the CMake build's C++ reader, the wheel's binding of its parser
+    (narrowvolume._core.read_las, nv::las::ReadFile). The coordinates in
+    double precision, every array of the C++ reader with its type and the
+    values written (nvpointfiles.py), the colours as the scalars."""
+    import nvpointfiles
+    from narrowvolume import _cli
+    path = str(tmp_path / ("format%d.las" % point_format))
+    expected = nvpointfiles.write_las(path, 4, point_format, SPHERE[:300], seed=point_format, extra_bytes=3,
+                                      with_vlr=True)
+    cloud = _cli.read_cloud(path)
+    n = len(expected["xyz"])
+    assert cloud.GetNumberOfPoints() == n and cloud.GetNumberOfVerts() == n
+    assert cloud.GetPoints().GetData().GetDataTypeAsString() == "double"
+    error = float(np.abs(vtk_to_numpy(cloud.GetPoints().GetData()) - expected["xyz"]).max())
+    assert error <= 1e-9, "coordinates = X * scale + offset in double (max error %g)" % error
+    data = cloud.GetPointData()
+    names = {data.GetArrayName(i) for i in range(data.GetNumberOfArrays())}
+    assert names == set(expected) - {"xyz"}
+    for name in names:
+        assert data.GetArray(name).GetDataTypeAsString() == LAS_TYPES[name], name
+        assert np.array_equal(vtk_to_numpy(data.GetArray(name)), expected[name]), name
+    assert ("Colors" in names) == (data.GetScalars() is not None and data.GetScalars().GetName() == "Colors")
+
+
+def test_read_cloud_las_damaged(tmp_path):
+    """A LAS file cut short: the parser's sentence, naming the file, on both routes."""
+    import nvpointfiles
+    path = tmp_path / "short.las"
+    nvpointfiles.write_las(str(path), 2, 1, SPHERE[:100])
+    path.write_bytes(path.read_bytes()[:-50])
+    result = cli(path, "-o", tmp_path / "a.stl")
+    assert result.returncode == 1 and "short.las" in result.stderr and "point" in result.stderr, result.stderr
+
+
 def test_cli_progress_on_a_terminal(tmp_path):
     """A progress bar on a terminal, none when standard error is a file."""
     import pty
@@ -794,7 +841,7 @@ def test_console_script():
 
 
 # --- The pip page of the documentation (doc/getting-started/python.md)
-PIP_PAGE = os.path.join(HERE, "..", "..", "doc", "getting-started", "python.md")
+PIP_PAGE = os.path.join(SOURCE, "doc", "getting-started", "python.md")
 
 
 def readme_pip_snippets():
@@ -848,13 +895,13 @@ def test_readme_pip_snippets(tmp_path):
 
 # --- The project's other Python tests, against the wheel (ctest runs them
 # against the CMake build's package, each on its own), each module with
-# pytest in a child process, as ctest runs it.
+# pytest in a child process, as ctest runs it. Paths in Testing/Python.
 SHARED_MODULES = {
-    "test_python_package.py": [],
-    "test_robustness.py": [],
-    "test_reference_scheme.py": [],
-    "test_volume_off.py": [],
-    "test_pipeline_vtk.py": ["--trefoil", TREFOIL],
+    "package/test_python_package.py": [],
+    "filter/test_robustness.py": [],
+    "fidelity/test_reference_scheme.py": [],
+    "filter/test_volume_off.py": [],
+    "filter/test_pipeline_vtk.py": ["--trefoil", TREFOIL],
 }
 
 
@@ -864,8 +911,8 @@ def test_shared_module(module):
     """A test module of the CMake build's package passes with the wheel."""
     start = time.perf_counter()
     result = subprocess.run([sys.executable, "-m", "pytest", "-p", "no:cacheprovider", "-v", "-r", "s", "-s",
-                             os.path.join(HERE, module)] + SHARED_MODULES[module],
-                            capture_output=True, text=True, cwd=HERE)
+                             os.path.join(TESTS, module)] + SHARED_MODULES[module],
+                            capture_output=True, text=True, cwd=TESTS)
     print(result.stdout[-3000:])
     print("%s: %.1f s" % (module, time.perf_counter() - start))
     assert result.returncode == 0 and "FAILED" not in result.stdout, nvtesting.explain(result)

@@ -315,7 +315,7 @@ def test_holey_sphere_under_mpi(holey, pvbatch, ranks):
 def test_example_script_under_mpi(plugin_path, trefoil):
     """The example script, as a user runs it: with 2 ranks it writes a .pvti
     that reads back as the serial .vti (the file as SaveData wrote it)."""
-    example = os.path.join(HERE, "..", "..", "examples", "reconstruct.py")
+    example = os.path.join(HERE, "..", "..", "..", "examples", "reconstruct.py")
     volumes = {}
     for ranks in (1, 2):
         out = nvtesting.scratch_folder(prefix="nv-mpi-")

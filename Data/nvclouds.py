@@ -1,13 +1,14 @@
 # SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
 # SPDX-License-Identifier: BSD-3-Clause
-"""The point clouds the tests and the benchmarks share, in one place.
+"""The point clouds the tests, the benchmarks and the doc pictures share,
+in one place (Data/, outside Testing: each puts this folder on sys.path).
 
 - Synthetic: `sphere_points(n)`, n points spread evenly on a sphere (a
   Fibonacci lattice); the paper's Table 1 shapes sampled h apart
   (`shape_points`, from nvshapes.py, which also holds their exact offset
   surfaces); the Fig. 6 noisy spheres (`fig6_spheres`); the demo cloud's
   trefoil tube with N points scattered at random (`trefoil_tube`, from
-  Data/make_demo_cloud.py).
+  make_demo_cloud.py beside this file).
 - The files in Data/ (`data_file`: the demo cloud Data/trefoil.vtp).
 - The real scans of ../shared/data/scans by name (`scan`, `scan_points`),
   read where they are, never copied; `ScansMissing` (a LookupError whose
@@ -15,11 +16,11 @@
   source tree. $NV_SCANS_DIR, or a `folder` argument, points elsewhere.
 
 `cloud(xyz)` makes a vtkPolyData of points. The tests reach this module
-through the fixtures of conftest.py, the benchmarks through
-benchmarks/clouds.py. It needs numpy and VTK's Python modules, not
+through the fixtures of Testing/Python/conftest.py, the benchmarks through
+benchmarks/clouds.py, the pictures through doc/pictures/nvpictures.py. It
+needs numpy, and VTK's Python modules to read files or make VTK data, not
 ParaView (the pip wheel's tests import it too).
 """
-import importlib.util
 import math
 import os
 
@@ -27,9 +28,8 @@ import numpy as np
 
 import nvshapes
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-SOURCE_DIR = os.path.normpath(os.path.join(HERE, "..", ".."))
-DATA_DIR = os.path.join(SOURCE_DIR, "Data")
+DATA_DIR = os.path.dirname(os.path.abspath(__file__))
+SOURCE_DIR = os.path.dirname(DATA_DIR)
 SCANS_DIR = os.environ.get("NV_SCANS_DIR") or os.path.normpath(
     os.path.join(SOURCE_DIR, "..", "shared", "data", "scans"))
 # The scans of ../shared/data/scans, each NAME.ply (and NAME.txt, its provenance).
@@ -82,18 +82,11 @@ def fig6_spheres(spacing=0.01, radius=0.5):
     return spheres
 
 
-def _make_demo_cloud():
-    """Data/make_demo_cloud.py as a module (imported by its path: Data/ is no package)."""
-    spec = importlib.util.spec_from_file_location("make_demo_cloud", os.path.join(DATA_DIR, "make_demo_cloud.py"))
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
 def trefoil_tube(n, **options):
     """n points scattered at random over the demo cloud's tube around a
     trefoil knot (Data/make_demo_cloud.py's trefoil_tube)."""
-    return _make_demo_cloud().trefoil_tube(n, **options)
+    import make_demo_cloud  # beside this file; imported when asked for (it loads VTK's writers)
+    return make_demo_cloud.trefoil_tube(n, **options)
 
 
 # --- Files.
