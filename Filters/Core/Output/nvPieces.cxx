@@ -231,18 +231,24 @@ RemovedPieces RemoveSmallPieces(SurfaceArrays& surface, double offset, const Gri
   return RemoveSmallPieces(surface, limits, grid, phi, kBegin, layers);
 }
 
-RemovedPieces RemoveSmallPieces(SurfaceArrays& surface, const PieceLimits& limits, const Grid& grid, float* phi,
-  std::int64_t kBegin, std::int64_t layers)
+namespace
 {
-  RemovedPieces removed;
+/// A connected part of a surface: its root point (its smallest point index),
+/// its signed volume (> 0 a piece, < 0 a void or cavity), and whether it goes.
+struct Part
+{
+  std::int64_t Root;
+  double Volume;
+  bool Drop;
+};
+
+/// Phase 1: the surface's connected parts (parts.Parent[p] is p's root once
+/// it returns) with their signed volumes, by ascending root.
+std::vector<Part> FindParts(const SurfaceArrays& surface, PointParts& parts)
+{
   const std::int64_t n = surface.NumberOfPoints, m = surface.NumberOfTriangles;
-  if (m == 0)
-  {
-    return removed;
-  }
   const VertexId* triangles = surface.Triangles;
   // Connected parts: the points that triangles share, joined on all threads.
-  PointParts parts(n);
   ParallelFor(0, m, Grain, [&](std::int64_t first, std::int64_t last) {
     for (std::int64_t t = first; t < last; ++t)
     {
@@ -288,12 +294,6 @@ RemovedPieces RemoveSmallPieces(SurfaceArrays& surface, const PieceLimits& limit
   decltype(runs)().swap(runs);
   std::stable_sort(all.begin(), all.end(),
     [](const std::pair<std::int64_t, double>& x, const std::pair<std::int64_t, double>& y) { return x.first < y.first; });
-  struct Part
-  {
-    std::int64_t Root;
-    double Volume;
-    bool Drop;
-  };
   std::vector<Part> found;
   for (const auto& run : all)
   {
@@ -303,7 +303,13 @@ RemovedPieces RemoveSmallPieces(SurfaceArrays& surface, const PieceLimits& limit
     }
     found.back().Volume += run.second;
   }
-  // Which parts go; when every piece is small, the largest stays.
+  return found;
+}
+
+/// Phase 2: which parts go (Drop), and the counts and volumes of `removed`;
+/// when every piece is small, the largest stays (limits.SpareLargest).
+void ChooseParts(std::vector<Part>& found, const PieceLimits& limits, RemovedPieces& removed)
+{
   const double smallPiece = limits.Piece;
   double smallVoid = limits.Void;
   const Part* spared = nullptr;
@@ -355,39 +361,40 @@ RemovedPieces RemoveSmallPieces(SurfaceArrays& surface, const PieceLimits& limit
       removed.CavityVolume += part.Volume < 0.0 ? -part.Volume : 0.0;
     }
   }
-  if (removed.Pieces + removed.Voids == 0)
+}
+
+/// Phase 3 (with phi): each dropped region of phi flipped from its
+/// vertices, before the points move.
+void FlipDroppedRegions(const std::vector<Part>& found, const std::vector<char>& drop, PointParts& parts,
+  const SurfaceArrays& surface, const PieceLimits& limits, const RemovedPieces& removed, const Grid& grid,
+  float* phi, std::int64_t kBegin, std::int64_t layers)
+{
+  std::unordered_map<std::int64_t, std::vector<std::int64_t>> vertices; // by root
+  for (std::int64_t p = 0; p < surface.NumberOfPoints; ++p)
   {
-    return removed;
+    const std::int64_t root = parts.Parent[p].load(std::memory_order_relaxed);
+    if (drop[root])
+    {
+      vertices[root].push_back(p);
+    }
   }
-  std::vector<char> drop(static_cast<std::size_t>(n), 0); // by root
   for (const Part& part : found)
   {
-    drop[part.Root] = part.Drop;
-  }
-  if (phi)
-  {
-    // phi follows: each dropped region flipped from its vertices, before the
-    // points move.
-    std::unordered_map<std::int64_t, std::vector<std::int64_t>> vertices; // by root
-    for (std::int64_t p = 0; p < n; ++p)
+    if (part.Drop)
     {
-      if (drop[root(p)])
-      {
-        vertices[root(p)].push_back(p);
-      }
-    }
-    for (const Part& part : found)
-    {
-      if (part.Drop)
-      {
-        const bool piece = part.Volume > 0.0;
-        FlipRegion(grid, phi, kBegin, layers, surface.Points, vertices[part.Root], piece,
-          2.0 * (piece ? smallPiece : smallVoid));
-      }
+      const bool piece = part.Volume > 0.0;
+      FlipRegion(grid, phi, kBegin, layers, surface.Points, vertices[part.Root], piece,
+        2.0 * (piece ? limits.Piece : removed.VoidLimit));
     }
   }
-  // The kept points to the front, in their order (new id <= old id), then
-  // the kept triangles, renumbered.
+}
+
+/// Phase 4: the kept points to the front, in their order (new id <= old
+/// id), then the kept triangles, renumbered.
+void KeepParts(SurfaceArrays& surface, const std::vector<char>& drop, PointParts& parts)
+{
+  const std::int64_t n = surface.NumberOfPoints, m = surface.NumberOfTriangles;
+  auto root = [&parts](std::int64_t p) { return parts.Parent[p].load(std::memory_order_relaxed); };
   std::vector<std::int64_t> newId(static_cast<std::size_t>(n), -1);
   std::int64_t kept = 0;
   for (std::int64_t p = 0; p < n; ++p)
@@ -403,7 +410,7 @@ RemovedPieces RemoveSmallPieces(SurfaceArrays& surface, const PieceLimits& limit
   std::int64_t keptTriangles = 0;
   for (std::int64_t t = 0; t < m; ++t)
   {
-    if (!drop[root(triangles[3 * t])])
+    if (!drop[root(surface.Triangles[3 * t])])
     {
       for (int c = 0; c < 3; ++c)
       {
@@ -414,6 +421,34 @@ RemovedPieces RemoveSmallPieces(SurfaceArrays& surface, const PieceLimits& limit
   }
   surface.NumberOfPoints = kept;
   surface.NumberOfTriangles = keptTriangles;
+}
+} // namespace
+
+RemovedPieces RemoveSmallPieces(SurfaceArrays& surface, const PieceLimits& limits, const Grid& grid, float* phi,
+  std::int64_t kBegin, std::int64_t layers)
+{
+  RemovedPieces removed;
+  if (surface.NumberOfTriangles == 0)
+  {
+    return removed;
+  }
+  PointParts parts(surface.NumberOfPoints);
+  std::vector<Part> found = FindParts(surface, parts);
+  ChooseParts(found, limits, removed);
+  if (removed.Pieces + removed.Voids == 0)
+  {
+    return removed;
+  }
+  std::vector<char> drop(static_cast<std::size_t>(surface.NumberOfPoints), 0); // by root
+  for (const Part& part : found)
+  {
+    drop[part.Root] = part.Drop;
+  }
+  if (phi)
+  {
+    FlipDroppedRegions(found, drop, parts, surface, limits, removed, grid, phi, kBegin, layers);
+  }
+  KeepParts(surface, drop, parts);
   return removed;
 }
 
