@@ -313,14 +313,59 @@ public:
   Finding Examine(std::int64_t p, double threshold, double limit, bool prefilter)
   {
     Finding finding;
-    const double l = this->Offset;
-    const double tiny = 1e-24 * l * l;
-    Neighbours(this->Cells, this->Rel, p, 2.0 * l, tiny, this->Near);
-    if (this->Near.size() < 3)
+    if (!this->FitPlane(p))
     {
       return finding; // a lone point or a pair: no surface to speak of
     }
-    // The tangent plane: the principal directions of p and its neighbours.
+    if (prefilter)
+    {
+      finding.Suspect = this->WiderThan(this->Near, threshold);
+      if (!finding.Suspect)
+      {
+        return finding;
+      }
+    }
+    finding.Suspect = true;
+    this->ProjectNeighbours(p, limit);
+    // The directions whose widest empty circle is a candidate, widest first.
+    double radius[Directions];
+    this->PlaneRadii(limit, radius);
+    int candidates[Directions];
+    int count = 0;
+    for (int k = 0; k < Directions; ++k)
+    {
+      if (radius[k] > threshold && radius[k] <= limit)
+      {
+        candidates[count++] = k;
+      }
+    }
+    std::sort(candidates, candidates + count,
+      [&](int a, int b) { return radius[a] > radius[b] || (radius[a] == radius[b] && a < b); });
+    for (int c = 0; c < count; ++c)
+    {
+      const int k = candidates[c];
+      const double t = radius[k];
+      const double center[2] = { t * this->Cos[k], t * this->Sin[k] };
+      double height = 0.0;
+      if (this->Enclosed(center, t, height) && this->IsHole(p, center, height, threshold, finding))
+      {
+        break;
+      }
+    }
+    return finding;
+  }
+
+private:
+  /// The tangent plane at p (Normal, Tangent): the principal directions of p
+  /// and its neighbours within 2 l (Near). False with fewer than three.
+  bool FitPlane(std::int64_t p)
+  {
+    const double l = this->Offset;
+    Neighbours(this->Cells, this->Rel, p, 2.0 * l, 1e-24 * l * l, this->Near);
+    if (this->Near.size() < 3)
+    {
+      return false;
+    }
     double mean[3] = { 0.0, 0.0, 0.0 };
     for (const auto& v : this->Near)
     {
@@ -366,21 +411,18 @@ public:
       this->Tangent[0][a] = axes[a][2];
       this->Tangent[1][a] = axes[a][1];
     }
+    return true;
+  }
 
-    if (prefilter)
-    {
-      finding.Suspect = this->WiderThan(this->Near, threshold);
-      if (!finding.Suspect)
-      {
-        return finding;
-      }
-    }
-    finding.Suspect = true;
-
-    // The neighbours that a circle up to `limit` and its ring can reach: not
-    // those far off the plane (the other side of a thin part), which would
-    // hide a hole on this side.
-    Neighbours(this->Cells, this->Rel, p, 2.0 * limit + l, tiny, this->Wide);
+  /// The neighbours that a circle up to `limit` and its ring can reach
+  /// (Wide), and those of them in the plane's reach (Plane: in-plane
+  /// distance, u, w, height; nearest first, so that the searches stop
+  /// early): not those far off the plane (the other side of a thin part),
+  /// which would hide a hole on this side.
+  void ProjectNeighbours(std::int64_t p, double limit)
+  {
+    const double l = this->Offset;
+    Neighbours(this->Cells, this->Rel, p, 2.0 * limit + l, 1e-24 * l * l, this->Wide);
     this->Plane.clear();
     for (const auto& v : this->Wide)
     {
@@ -393,80 +435,61 @@ public:
         this->Plane.push_back({ { along, u, w, h } });
       }
     }
-    // Nearest first (in the plane), so that the searches below stop early.
     std::sort(this->Plane.begin(), this->Plane.end());
-    double radius[Directions];
-    this->PlaneRadii(limit, radius);
-    int candidates[Directions];
-    int count = 0;
-    for (int k = 0; k < Directions; ++k)
-    {
-      if (radius[k] > threshold && radius[k] <= limit)
-      {
-        candidates[count++] = k;
-      }
-    }
-    std::sort(candidates, candidates + count,
-      [&](int a, int b) { return radius[a] > radius[b] || (radius[a] == radius[b] && a < b); });
-    for (int c = 0; c < count; ++c)
-    {
-      const int k = candidates[c];
-      const double t = radius[k];
-      const double center[2] = { t * this->Cos[k], t * this->Sin[k] };
-      double height = 0.0;
-      if (!this->Enclosed(center, t, height))
-      {
-        continue;
-      }
-      // The disc's centre in space, and its distance to the nearest point:
-      // the shell leaves a tunnel there only if that distance exceeds l (a
-      // circle in the plane may be covered by points off it, on a curved or
-      // thin part).
-      double offset[3];
-      for (int a = 0; a < 3; ++a)
-      {
-        offset[a] = center[0] * this->Tangent[0][a] + center[1] * this->Tangent[1][a] + height * this->Normal[a];
-      }
-      double empty = offset[0] * offset[0] + offset[1] * offset[1] + offset[2] * offset[2]; // to p
-      for (const auto& v : this->Wide)
-      {
-        const double dx = v[0] - offset[0], dy = v[1] - offset[1], dz = v[2] - offset[2];
-        empty = std::min(empty, dx * dx + dy * dy + dz * dz);
-      }
-      empty = std::sqrt(empty);
-      const double* x = &this->Rel[3 * p];
-      const double centre[3] = { x[0] + offset[0], x[1] + offset[1], x[2] + offset[2] };
-      if (empty > threshold)
-      {
-        if (!this->All)
-        {
-          finding.Deferred = true;
-          return finding;
-        }
-        // The points the thinning left out, within that ball.
-        double nearest = empty * empty;
-        this->All->ForEachWithin(centre, empty, [&](std::int64_t, const double* y) {
-          const double dx = y[0] - centre[0], dy = y[1] - centre[1], dz = y[2] - centre[2];
-          nearest = std::min(nearest, dx * dx + dy * dy + dz * dz);
-        });
-        empty = std::sqrt(nearest);
-      }
-      if (empty > threshold && this->Flat(offset, empty))
-      {
-        finding.Found = true;
-        for (int a = 0; a < 3; ++a)
-        {
-          finding.Disc.Center[a] = centre[a];
-        }
-        finding.Disc.Radius = empty;
-        finding.Disc.Normal = { { this->Normal[0], this->Normal[1], this->Normal[2] } };
-        break;
-      }
-    }
-    return finding;
   }
 
-private:
+  /// Whether the enclosed circle at `center` (in the plane, `height` off it)
+  /// ends the search: its disc's centre in space and the distance from there
+  /// to the nearest point, the empty ball. The shell leaves a tunnel only if
+  /// that exceeds the threshold (a circle in the plane may be covered by
+  /// points off it, on a curved or thin part) and the disc is flat: then
+  /// finding.Found and its Disc. Without every point (All) to check the
+  /// ball against, finding.Deferred instead.
+  bool IsHole(std::int64_t p, const double center[2], double height, double threshold, Finding& finding)
+  {
+    double offset[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      offset[a] = center[0] * this->Tangent[0][a] + center[1] * this->Tangent[1][a] + height * this->Normal[a];
+    }
+    double empty = offset[0] * offset[0] + offset[1] * offset[1] + offset[2] * offset[2]; // to p
+    for (const auto& v : this->Wide)
+    {
+      const double dx = v[0] - offset[0], dy = v[1] - offset[1], dz = v[2] - offset[2];
+      empty = std::min(empty, dx * dx + dy * dy + dz * dz);
+    }
+    empty = std::sqrt(empty);
+    const double* x = &this->Rel[3 * p];
+    const double centre[3] = { x[0] + offset[0], x[1] + offset[1], x[2] + offset[2] };
+    if (empty > threshold)
+    {
+      if (!this->All)
+      {
+        finding.Deferred = true;
+        return true;
+      }
+      // The points the thinning left out, within that ball.
+      double nearest = empty * empty;
+      this->All->ForEachWithin(centre, empty, [&](std::int64_t, const double* y) {
+        const double dx = y[0] - centre[0], dy = y[1] - centre[1], dz = y[2] - centre[2];
+        nearest = std::min(nearest, dx * dx + dy * dy + dz * dz);
+      });
+      empty = std::sqrt(nearest);
+    }
+    if (empty > threshold && this->Flat(offset, empty))
+    {
+      finding.Found = true;
+      for (int a = 0; a < 3; ++a)
+      {
+        finding.Disc.Center[a] = centre[a];
+      }
+      finding.Disc.Radius = empty;
+      finding.Disc.Normal = { { this->Normal[0], this->Normal[1], this->Normal[2] } };
+      return true;
+    }
+    return false;
+  }
+
   /// Per direction, the radius of the largest empty circle through p
   /// bounded by the neighbour at (u, w) in the plane: |v|^2 / (2 v.u).
   void Bound(double u, double w, double radius[Directions]) const
