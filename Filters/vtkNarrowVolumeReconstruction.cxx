@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkNarrowVolumeReconstruction.h"
 
-#include "nvOutputs.h"
+#include "nvReconstruct.h"
 #include "nvParallel.h"
 #include "nvReconstruction.h"
 #include "nvSampling.h"
@@ -30,6 +30,7 @@
 #include "vtkTable.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <array>
 #include <cctype>
 #include <chrono>
 #include <cstring>
@@ -115,6 +116,44 @@ bool Store(Field& field, T value)
   }
 NV_SETTINGS(NV_ACCESSORS)
 #undef NV_ACCESSORS
+
+//------------------------------------------------------------------------------
+// The results' Get methods (declared by NV_RESULTS in the header) over the
+// fields of the last run's nv::Results: a number as it is, a text as a C
+// string, three values as a pointer to them.
+namespace
+{
+double ResultValue(double value)
+{
+  return value;
+}
+int ResultValue(int value)
+{
+  return value;
+}
+const char* ResultValue(const std::string& text)
+{
+  return text.c_str();
+}
+template <class T>
+T* ResultValue(std::array<T, 3>& values)
+{
+  return values.data();
+}
+} // namespace
+
+#define NV_RESULT_GETTER(Type, Name, Size)                                                         \
+  decltype(std::declval<vtkNarrowVolumeReconstruction&>().Get##Name()) vtkNarrowVolumeReconstruction::Get##Name() \
+    NV_RESULT_CONST_##Size                                                                         \
+  {                                                                                                \
+    return ResultValue(this->Chosen->Name);                                                        \
+  }
+#define NV_RESULT_CONST_1 const
+#define NV_RESULT_CONST_3
+NV_RESULTS(NV_RESULT_GETTER)
+#undef NV_RESULT_GETTER
+#undef NV_RESULT_CONST_1
+#undef NV_RESULT_CONST_3
 
 namespace
 {
@@ -224,6 +263,7 @@ struct vtkNarrowVolumeReconstruction::DenseArrays
 //------------------------------------------------------------------------------
 vtkNarrowVolumeReconstruction::vtkNarrowVolumeReconstruction()
   : Settings(new nv::Settings()) // the property table's defaults
+  , Chosen(new nv::Results())
 {
   this->SetNumberOfInputPorts(1);
   this->SetNumberOfOutputPorts(2);
@@ -424,7 +464,7 @@ int vtkNarrowVolumeReconstruction::RequestData(
   std::unique_ptr<vtkNarrowVolumeCommunicator> communicator(
     distributed ? new vtkNarrowVolumeCommunicator(this->Controller) : nullptr);
 
-  // The run and its outputs (nvOutputs.h), into VTK's arrays.
+  // The run and its outputs (nvReconstruct.h), into VTK's arrays.
   FilterMonitor monitor(this);
   nv::Reconstruction run(this->GetSettings(), communicator.get(), &monitor);
   const std::shared_ptr<const nv::Sampling> sampling = this->MeasureSampling(input, communicator.get(), monitor);
@@ -489,14 +529,6 @@ std::string vtkNarrowVolumeReconstruction::InWordsOfReader(std::string message) 
 }
 
 //------------------------------------------------------------------------------
-const char* vtkNarrowVolumeReconstruction::GetGridUsed()
-{
-  const int* n = this->GridDimensionsUsed;
-  this->GridUsed = n[0] > 0 ? std::to_string(n[0]) + " x " + std::to_string(n[1]) + " x " + std::to_string(n[2]) : "";
-  return this->GridUsed.c_str();
-}
-
-//------------------------------------------------------------------------------
 void vtkNarrowVolumeReconstruction::KeepResults(const nv::Reconstruction* run, const nv::Outcome& outcome)
 {
   // The figures of the last run for the Get...() methods; none when it did
@@ -505,13 +537,7 @@ void vtkNarrowVolumeReconstruction::KeepResults(const nv::Reconstruction* run, c
   this->NumberOfGridNodes = ran ? static_cast<vtkIdType>(run->GetGrid().NumberOfNodes()) : 0;
   this->NumberOfBandNodes = ran ? static_cast<vtkIdType>(run->NumberOfBandNodes()) : 0;
   this->RelativeChanges = ran ? run->RelativeChanges() : std::vector<double>();
-  this->OffsetDistanceUsed = ran ? run->GetParameters().OffsetDistance : 0.0;
-  this->SampleSpacingUsed = ran ? run->GetGrid().Spacing : 0.0;
-  this->ClosingRadiusUsed = ran ? run->GetPlan().ClosingRadius : 0.0;
-  for (int axis = 0; axis < 3; ++axis)
-  {
-    this->GridDimensionsUsed[axis] = ran ? static_cast<int>(run->GetGrid().Dims[axis]) : 0;
-  }
+  *this->Chosen = outcome.Chosen; // all zero when it did not run
   this->SetupTime = ran ? run->SetupSeconds() : 0.0;
   this->EvolutionTime = ran ? run->EvolutionSeconds() : 0.0;
   this->OutputTime = ran ? outcome.OutputSeconds : 0.0;
@@ -566,7 +592,7 @@ void vtkNarrowVolumeReconstruction::MakeVolume(
 void vtkNarrowVolumeReconstruction::AddRunSummary(
   vtkImageData* volume, const std::vector<nv::SummaryArray>& summary)
 {
-  // The run's figures in the volume's field data (nvOutputs.h), for scripts
+  // The run's figures in the volume's field data (nvReconstruct.h), for scripts
   // and the GUI's Information panel.
   for (const nv::SummaryArray& values : summary)
   {

@@ -6,7 +6,7 @@ The run is the core's (narrowvolume._core, the same C++ as the C++ filter's,
 its loops on std::threads), and so are the surface (marching cubes in the
 band's bricks, as in the C++ filter), the small pieces' removal, the
 warnings and the field data: one call of the core's nv::Reconstruct
-(nvOutputs.h) makes them, and this file only converts, as
+(nvReconstruct.h) makes them, and this file only converts, as
 vtkNarrowVolumeReconstruction.cxx does. The arrays the core fills reach VTK
 without a copy.
 
@@ -83,8 +83,7 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
         self._band_nodes = 0
         self._grid_nodes = 0
         self._changes = ()
-        self._used = (0.0, 0.0, 0.0)
-        self._dimensions = (0, 0, 0)
+        self._chosen = _core.Results()  # the results (RESULTS): zero before a run
         self._times = (0.0, 0.0, 0.0)
         self._sampling_time = 0.0
 
@@ -110,7 +109,7 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
         """Output port 1, the surface (vtkPolyData)."""
         return self.GetOutputDataObject(1)
 
-    # --- Results of the last run.
+    # --- Figures of the last run (the results of the table's RESULTS are made below).
     def GetNumberOfIterations(self):
         """Time steps the last run took."""
         return len(self._changes)
@@ -126,27 +125,6 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
     def GetRelativeChanges(self):
         """The relative change ||phi^{n+1} - phi^n||_2 / ||phi^n||_2 of each time step of the last run."""
         return tuple(self._changes)
-
-    def GetOffsetDistanceUsed(self):
-        """The offset distance l of the last run (the automatic one, or the one set)."""
-        return self._used[0]
-
-    def GetSampleSpacingUsed(self):
-        """The grid spacing h of the last run (the automatic one, or the one set)."""
-        return self._used[1]
-
-    def GetClosingRadiusUsed(self):
-        """The closing radius of the last run (0 with CloseGaps off)."""
-        return self._used[2]
-
-    def GetGridDimensionsUsed(self):
-        """The grid's nodes along x, y and z in the last run."""
-        return self._dimensions
-
-    def GetGridUsed(self):
-        """GridDimensionsUsed as one text, "221 x 260 x 200" ("" before a run):
-        what ParaView's panel shows as Grid Used."""
-        return " x ".join(str(n) for n in self._dimensions) if self._dimensions[0] > 0 else ""
 
     def GetSamplingTime(self):
         """Wall-clock seconds spent measuring the points' spacing (nearest
@@ -341,8 +319,7 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
             self._grid_nodes = run.GetGrid().NumberOfNodes()
             self._band_nodes = run.NumberOfBandNodes()
             self._changes = tuple(run.RelativeChanges())
-            self._used = (run.GetParameters().OffsetDistance, run.GetGrid().Spacing, run.GetPlan().ClosingRadius)
-            self._dimensions = tuple(int(n) for n in run.GetGrid().Dims)
+            self._chosen = outcome.Chosen
             self._times = (run.SetupSeconds(), run.EvolutionSeconds(), outcome.OutputSeconds)
         if outcome.Error:
             self._error(outcome.Error)
@@ -508,4 +485,17 @@ def _install_properties(cls):
             setattr(cls, "Set%sTo%s" % (prop.name, suffix), choose)
 
 
+def _install_results(cls):
+    """Get<Name> for each result of the table (RESULTS), over the run's nv::Results."""
+    for result in _properties.RESULTS:
+        def getter(self, result=result):
+            value = getattr(self._chosen, result.name)
+            return tuple(result.kind(v) for v in value) if result.size > 1 else result.kind(value)
+
+        getter.__doc__ = "%s\n\n%s" % (result.name, _properties.describe(result))
+        getter.__name__ = "Get" + result.name
+        setattr(cls, getter.__name__, getter)
+
+
 _install_properties(vtkNarrowVolumeReconstruction)
+_install_results(vtkNarrowVolumeReconstruction)

@@ -3,7 +3,7 @@
 // narrowvolume._core: the numerical core for Python (nanobind), in the wheel
 // that pip builds without VTK. The Python filter (_filter.py) drives a run
 // through these names, which are the core's own (nvReconstruction.h,
-// nvOutputs.h, nvSampling.h): nothing of the method is decided here. It
+// nvReconstruct.h, nvSampling.h): nothing of the method is decided here. It
 // also holds the readers' PLY check (nvPLY.h), for the command line, and
 // their PCD and text parsers (nvReaderBindings.cxx).
 //
@@ -17,7 +17,7 @@
 // The arrays the core fills (the dense volume, the surface) are allocated
 // here and handed to numpy without a copy; the Python filter hands them to
 // VTK without a copy either.
-#include "nvOutputs.h"
+#include "nvReconstruct.h"
 #include "nvPLY.h"
 #include "nvParallel.h"
 #include "nvReconstruction.h"
@@ -464,6 +464,13 @@ NB_MODULE(_core, m)
       "(points (n, 3) float64, normals (n, 3) float32, triangles (m, 3) int64), without a copy; the sink is "
       "empty afterwards.");
 
+  // Every result of nv::Results (the property table's RESULTS, NV_RESULTS).
+  nb::class_<nv::Results> results(m, "Results", "What the run chose (nv::Results): the filter's Get<Name> results.");
+  results.def(nb::init<>());
+#define NV_BIND_RESULT(Type, Name, Size) results.def_ro(#Name, &nv::Results::Name);
+  NV_RESULTS(NV_BIND_RESULT)
+#undef NV_BIND_RESULT
+
   nb::class_<nv::Outcome>(m, "Outcome", "What Reconstruction.Reconstruct made besides its arrays (nv::Outcome).")
     .def_ro("Done", &nv::Outcome::Done)
     .def_ro("Ran", &nv::Outcome::Ran)
@@ -473,6 +480,7 @@ NB_MODULE(_core, m)
     .def_ro("VolumeEnd", &nv::Outcome::VolumeEnd)
     .def_ro("DenseArrays", &nv::Outcome::DenseArrays)
     .def_ro("OutputSeconds", &nv::Outcome::OutputSeconds)
+    .def_ro("Chosen", &nv::Outcome::Chosen)
     .def_prop_ro(
       "Summary",
       [](const nv::Outcome& outcome) {
