@@ -32,9 +32,9 @@
 
 #include <array>
 #include <cctype>
-#include <chrono>
 #include <cstring>
 #include <memory>
+#include <sstream>
 #include <utility>
 
 vtkStandardNewMacro(vtkNarrowVolumeReconstruction);
@@ -221,6 +221,44 @@ vtkSmartPointer<ArrayType> NewArray(const char* name, vtkIdType nodes)
   return array;
 }
 
+/// Brings the output of `connection` (null: no input) up to date for piece
+/// `piece` of `pieces`, without ghost levels.
+void UpdateInputPiece(vtkAlgorithmOutput* connection, int piece, int pieces)
+{
+  if (!connection)
+  {
+    return;
+  }
+  vtkNew<vtkInformationVector> requests;
+  requests->SetNumberOfInformationObjects(connection->GetProducer()->GetNumberOfOutputPorts());
+  vtkInformation* request = requests->GetInformationObject(connection->GetIndex());
+  request->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), piece);
+  request->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), pieces);
+  request->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+  connection->GetProducer()->Update(connection->GetIndex(), requests);
+}
+
+/// The volume's grid as the pipeline information of output 0 (whole extent,
+/// origin, spacing, float scalars); an empty extent for an invalid plan
+/// (RequestData then says why).
+void DeclareGrid(vtkInformation* info, const nv::Plan& plan)
+{
+  if (!plan.Valid())
+  {
+    const int empty[6] = { 0, -1, 0, -1, 0, -1 };
+    info->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), empty, 6);
+    return;
+  }
+  const nv::Grid& grid = plan.TheGrid;
+  const int wholeExtent[6] = { 0, static_cast<int>(grid.Dims[0] - 1), 0, static_cast<int>(grid.Dims[1] - 1), 0,
+    static_cast<int>(grid.Dims[2] - 1) };
+  info->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), wholeExtent, 6);
+  info->Set(vtkDataObject::ORIGIN(), grid.Origin.data(), 3);
+  const double spacing[3] = { grid.Spacing, grid.Spacing, grid.Spacing };
+  info->Set(vtkDataObject::SPACING(), spacing, 3);
+  vtkDataObject::SetPointDataActiveScalarInfo(info, VTK_FLOAT, 1);
+}
+
 } // namespace
 
 /// The dense arrays of the volume piece (null: not asked for), which the
@@ -264,6 +302,7 @@ struct vtkNarrowVolumeReconstruction::DenseArrays
 vtkNarrowVolumeReconstruction::vtkNarrowVolumeReconstruction()
   : Settings(new nv::Settings()) // the property table's defaults
   , Chosen(new nv::Results())
+  , Samplings(new nv::SamplingCache())
 {
   this->SetNumberOfInputPorts(1);
   this->SetNumberOfOutputPorts(2);
@@ -358,31 +397,19 @@ int vtkNarrowVolumeReconstruction::RequestInformation(
   // this process will ask for, see RequestUpdateExtent), and under several
   // processes their bounds are combined. The data pass then finds the input
   // up to date and derives the same grid.
-  vtkInformation* volumeInfo = outputVector->GetInformationObject(0);
   const bool several = this->HasSeveralProcesses();
-  double bounds[6] = { 1.0, 0.0, 1.0, 0.0, 1.0, 0.0 };
-  vtkAlgorithmOutput* connection = this->GetInputConnection(0, 0);
-  if (connection)
-  {
-    vtkNew<vtkInformationVector> requests;
-    requests->SetNumberOfInformationObjects(connection->GetProducer()->GetNumberOfOutputPorts());
-    vtkInformation* request = requests->GetInformationObject(connection->GetIndex());
-    request->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(),
-      several ? this->Controller->GetLocalProcessId() : 0);
-    request->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(),
-      several ? this->Controller->GetNumberOfProcesses() : 1);
-    request->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
-    connection->GetProducer()->Update(connection->GetIndex(), requests);
-  }
+  UpdateInputPiece(this->GetInputConnection(0, 0), several ? this->Controller->GetLocalProcessId() : 0,
+    several ? this->Controller->GetNumberOfProcesses() : 1);
   vtkPointSet* input = vtkPointSet::GetData(inputVector[0], 0);
+  double bounds[6] = { 1.0, 0.0, 1.0, 0.0, 1.0, 0.0 };
   if (input && input->GetNumberOfPoints() > 0)
   {
     input->GetBounds(bounds);
   }
-  std::unique_ptr<vtkNarrowVolumeCommunicator> communicator;
-  if (several)
+  std::unique_ptr<vtkNarrowVolumeCommunicator> communicator(
+    several ? new vtkNarrowVolumeCommunicator(this->Controller) : nullptr);
+  if (communicator)
   {
-    communicator.reset(new vtkNarrowVolumeCommunicator(this->Controller));
     nv::GlobalBounds(*communicator, bounds);
   }
   // The measurement shows its progress (on a large cloud it takes seconds,
@@ -397,22 +424,7 @@ int vtkNarrowVolumeReconstruction::RequestInformation(
   {
     this->SetProgressShiftScale(nv::SamplingStage, 1.0 - nv::SamplingStage);
   }
-  const nv::Plan plan = nv::MakePlan(this->GetSettings(), bounds, sampling->Statistics());
-  if (!plan.Valid())
-  {
-    // No grid: RequestData says why.
-    const int empty[6] = { 0, -1, 0, -1, 0, -1 };
-    volumeInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), empty, 6);
-    return 1;
-  }
-  const nv::Grid& grid = plan.TheGrid;
-  const int wholeExtent[6] = { 0, static_cast<int>(grid.Dims[0] - 1), 0, static_cast<int>(grid.Dims[1] - 1), 0,
-    static_cast<int>(grid.Dims[2] - 1) };
-  volumeInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), wholeExtent, 6);
-  volumeInfo->Set(vtkDataObject::ORIGIN(), grid.Origin.data(), 3);
-  const double spacing[3] = { grid.Spacing, grid.Spacing, grid.Spacing };
-  volumeInfo->Set(vtkDataObject::SPACING(), spacing, 3);
-  vtkDataObject::SetPointDataActiveScalarInfo(volumeInfo, VTK_FLOAT, 1);
+  DeclareGrid(outputVector->GetInformationObject(0), nv::MakePlan(this->GetSettings(), bounds, sampling->Statistics()));
   return 1;
 }
 
@@ -450,7 +462,6 @@ int vtkNarrowVolumeReconstruction::RequestData(
     vtkErrorMacro(<< this->InWordsOfReader(nv::TableInputError()));
     return 1;
   }
-
   // Distributed (see SetController), or one process computes everything:
   // then the requests for pieces other than 0 leave their outputs empty, so
   // that gathered pieces hold the serial result once.
@@ -461,21 +472,43 @@ int vtkNarrowVolumeReconstruction::RequestData(
   {
     return 1;
   }
+  const vtkIdType ghosts =
+    distributed ? volumeInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS()) : 0;
+  this->Reconstruct(input, distributed, ghosts, volume, surface);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkNarrowVolumeReconstruction::Reconstruct(
+  vtkPointSet* input, bool distributed, vtkIdType ghosts, vtkImageData* volume, vtkPolyData* surface)
+{
+  // The run and its outputs (nvReconstruct.h), into VTK's arrays.
   std::unique_ptr<vtkNarrowVolumeCommunicator> communicator(
     distributed ? new vtkNarrowVolumeCommunicator(this->Controller) : nullptr);
-
-  // The run and its outputs (nvReconstruct.h), into VTK's arrays.
   FilterMonitor monitor(this);
   nv::Reconstruction run(this->GetSettings(), communicator.get(), &monitor);
   const std::shared_ptr<const nv::Sampling> sampling = this->MeasureSampling(input, communicator.get(), monitor);
   DenseArrays dense;
   nv::PolyDataSink sink;
-  const vtkIdType ghosts =
-    distributed ? volumeInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS()) : 0;
   const nv::Outcome outcome = sampling // null: stopped (AbortExecute)
     ? nv::Reconstruct(run, PointsOf(input), sampling, sink, dense.Request(run, ghosts), distributed)
     : nv::Outcome();
   this->KeepResults(&run, outcome);
+  this->ReportMessages(outcome);
+  if (outcome.Done)
+  {
+    this->MakeVolume(volume, run, outcome, dense);
+    surface->ShallowCopy(sink.Finish());
+    this->AddRunSummary(volume, outcome.Summary);
+    this->UpdateProgress(1.0);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkNarrowVolumeReconstruction::ReportMessages(const nv::Outcome& outcome)
+{
+  // The run's error and warnings, in the words of the reader (the panel's
+  // labels in ParaView).
   if (!outcome.Error.empty())
   {
     vtkErrorMacro(<< this->InWordsOfReader(outcome.Error));
@@ -484,15 +517,6 @@ int vtkNarrowVolumeReconstruction::RequestData(
   {
     vtkWarningMacro(<< this->InWordsOfReader(warning));
   }
-  if (!outcome.Done)
-  {
-    return 1;
-  }
-  this->MakeVolume(volume, run, outcome, dense);
-  surface->ShallowCopy(sink.Finish());
-  this->AddRunSummary(volume, outcome.Summary);
-  this->UpdateProgress(1.0);
-  return 1;
 }
 
 //------------------------------------------------------------------------------
@@ -543,11 +567,7 @@ void vtkNarrowVolumeReconstruction::KeepResults(const nv::Reconstruction* run, c
   this->OutputTime = ran ? outcome.OutputSeconds : 0.0;
   // The measurement's seconds go to the first run that uses it (it may have
   // been made for this run's information pass).
-  this->SamplingTime = run ? this->SamplingUnreported : 0.0;
-  if (run)
-  {
-    this->SamplingUnreported = 0.0;
-  }
+  this->SamplingTime = run ? this->Samplings->TakeSeconds() : 0.0;
 }
 
 //------------------------------------------------------------------------------
@@ -627,44 +647,19 @@ void vtkNarrowVolumeReconstruction::AddRunSummary(
 std::shared_ptr<const nv::Sampling> vtkNarrowVolumeReconstruction::MeasureSampling(
   vtkPointSet* input, nv::Communicator* communicator, nv::Monitor& monitor, bool* measured)
 {
-  // The same points (object, modification time, count) are measured once:
-  // the information pass and the data pass, and runs that only change
-  // properties, share one measurement.
+  // The same points (object, modification time, count) are measured once
+  // (nv::SamplingCache).
   vtkPoints* points = input ? input->GetPoints() : nullptr;
-  const vtkMTimeType time = points ? points->GetMTime() : 0;
-  const vtkIdType count = points ? points->GetNumberOfPoints() : 0;
-  bool stale = !this->Sampled || time != this->SampledTime || count != this->SampledPoints ||
-    (communicator != nullptr) != this->SampledShared;
-  if (communicator)
+  nv::SamplingCache::Key key;
+  if (points)
   {
-    stale = communicator->MaxAll(stale ? 1.0 : 0.0) > 0.0; // all measure, or none
+    std::ostringstream object;
+    object << static_cast<const void*>(points);
+    key = { object.str(), points->GetMTime(), points->GetNumberOfPoints() };
   }
-  if (stale)
-  {
-    const auto start = std::chrono::steady_clock::now();
-    auto sampling = std::make_shared<nv::Sampling>();
-    bool complete = false;
-    monitor.Stage(0.0, nv::SamplingStage);
-    nv::WithThreads(this->Settings->NumberOfThreads,
-      [&]() { complete = sampling->Measure(PointsOf(input), communicator, &monitor); });
-    this->SamplingUnreported += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (measured)
-    {
-      *measured = true;
-    }
-    if (!complete)
-    {
-      this->Sampled = nullptr;
-      return nullptr;
-    }
-    this->Sampled = sampling;
-    this->SampledTime = time;
-    this->SampledPoints = count;
-    this->SampledShared = communicator != nullptr;
-  }
-  return this->Sampled;
+  return this->Samplings->Get(
+    key, [input]() { return PointsOf(input); }, communicator, monitor, this->Settings->NumberOfThreads, measured);
 }
-
 
 //------------------------------------------------------------------------------
 void vtkNarrowVolumeReconstruction::PrintSelf(ostream& os, vtkIndent indent)

@@ -76,6 +76,7 @@ class Communicator;
 class Monitor;
 class Reconstruction;
 class Sampling;
+class SamplingCache;
 struct Outcome;
 struct Results;
 struct Settings;
@@ -314,6 +315,11 @@ protected:
   const nv::Settings& GetSettings() const { return *this->Settings; }
   /// The results of the last run (run null: none yet), for the Get...() methods.
   void KeepResults(const nv::Reconstruction* run, const nv::Outcome& outcome);
+  /// The run on the input's points and its outputs, into VTK's arrays (the
+  /// data pass, once it knows the piece): ghosts, the volume's ghost layers.
+  void Reconstruct(vtkPointSet* input, bool distributed, vtkIdType ghosts, vtkImageData* volume, vtkPolyData* surface);
+  /// The run's error and warnings as vtkErrorMacro and vtkWarningMacro give them.
+  void ReportMessages(const nv::Outcome& outcome);
   /// A message of the core with the properties named as PanelLabelsInMessages says.
   std::string InWordsOfReader(std::string message) const;
   /// Output 0 of a finished run: the grid's piece and the dense arrays.
@@ -337,12 +343,8 @@ protected:
   std::vector<double> RelativeChanges;
   std::unique_ptr<nv::Results> Chosen; ///< the last run's results (NV_RESULTS)
   bool PanelLabelsInMessages = false;
-  std::shared_ptr<const nv::Sampling> Sampled; ///< of the input at SampledTime
-  vtkMTimeType SampledTime = 0;
-  vtkIdType SampledPoints = -1;
-  bool SampledShared = false;
+  std::unique_ptr<nv::SamplingCache> Samplings; ///< the input's sampling, measured once per points
   double SamplingTime = 0.0;
-  double SamplingUnreported = 0.0; ///< seconds of measurements no run has reported yet
   double SetupTime = 0.0;
   double EvolutionTime = 0.0;
   double OutputTime = 0.0;

@@ -14,7 +14,6 @@ Not in this flavour: SetController (distributed runs under MPI need the
 VTK-wrapped filter of the CMake build).
 """
 import operator
-import time
 
 import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
@@ -74,8 +73,7 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
         # The properties live in the core's own settings: a default-constructed
         # nv::Settings holds the C++ defaults.
         self._settings = _core.Settings()
-        self._sampled = None  # (points' identity, modification time, count, the core's Sampling)
-        self._sampling_unreported = 0.0  # seconds of a measurement no run has reported yet
+        self._samplings = _core.SamplingCache()  # the input's sampling, measured once per points
         self._panel_labels = False  # SetPanelLabelsInMessages
         self._clear_results()
 
@@ -212,12 +210,10 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
             # that flag only as a data pass begins (it may hold the last run's).
             self.SetProgressShiftScale(0.0, 1.0)
             monitor = _core.Monitor(report=self.UpdateProgress, poll=None)
-            monitor.Stage(0.0, _core.SamplingStage)
             sampling, measured = self._measure_sampling(data, monitor)
             if measured:
                 self.SetProgressShiftScale(_core.SamplingStage, 1.0 - _core.SamplingStage)
         except (KeyboardInterrupt, Exception) as error:  # RequestData reports the run's own errors
-            self._sampled = None
             volume_info.Set(sddp.WHOLE_EXTENT(), (0, -1, 0, -1, 0, -1), 6)
             self._error("%s while measuring the points' spacing: %s" % (type(error).__name__, error))
             return 0
@@ -235,26 +231,14 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
 
     def _measure_sampling(self, data, monitor):
         """The core's sampling of the input's points, measured once per
-        points (object, modification time, count), as the C++ filter does
-        (None if the monitor stopped the measurement), and whether this call
-        measured."""
+        points (object, modification time, count) by the core's
+        SamplingCache, as the C++ filter's (None if the monitor stopped the
+        measurement), and whether this call measured."""
         points = data.GetPoints() if data is not None else None
         # The C++ object's address (__this__): a Python wrapper's id() changes
         # whenever VTK hands out a new wrapper for the same points.
-        key = (points.__this__ if points else None, points.GetMTime() if points else 0,
-               points.GetNumberOfPoints() if points else 0)
-        if self._sampled is None or self._sampled[0] != key:
-            start = time.perf_counter()
-            self._sampled = None
-            try:
-                sampling = _core.Sampling.Measure(_points_of(data), self._settings.NumberOfThreads, monitor)
-            finally:
-                self._sampling_unreported += time.perf_counter() - start
-            if sampling is None:
-                return None, True
-            self._sampled = (key, sampling)
-            return sampling, True
-        return self._sampled[1], False
+        key = (points.__this__, points.GetMTime(), points.GetNumberOfPoints()) if points else ("", 0, 0)
+        return self._samplings.Get(key, lambda: _points_of(data), self._settings.NumberOfThreads, monitor)
 
     def RequestUpdateExtent(self, request, inInfoVec, outInfoVec):
         """The shell depends on every point: asks for the whole cloud."""
@@ -306,11 +290,10 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
         summary, or None when it failed or stopped."""
         monitor = _core.Monitor(report=self.UpdateProgress, poll=lambda: bool(self.GetAbortExecute()))
         run = _core.Reconstruction(self._settings, monitor)
-        monitor.Stage(0.0, _core.SamplingStage)
         sampling, _ = self._measure_sampling(data, monitor)
         # The measurement's seconds go to the first run that uses it (it may
         # have been made for this run's information pass).
-        self._sampling_time, self._sampling_unreported = self._sampling_unreported, 0.0
+        self._sampling_time = self._samplings.TakeSeconds()
         if sampling is None:  # stopped (AbortExecute)
             return None
         sink = _core.MeshSink()

@@ -27,6 +27,7 @@
 #include <nanobind/nanobind.h>
 #include <nanobind/ndarray.h>
 #include <nanobind/stl/array.h>
+#include <nanobind/stl/pair.h>
 #include <nanobind/stl/shared_ptr.h>
 #include <nanobind/stl/string.h>
 #include <nanobind/stl/tuple.h>
@@ -402,6 +403,41 @@ NB_MODULE(_core, m)
       "cores), without the GIL. The monitor (optional) gets the search's progress in its current stage and "
       "may stop it: then None (Ctrl-C raises KeyboardInterrupt).")
     .def("Statistics", &nv::Sampling::Statistics);
+
+  nb::class_<nv::SamplingCache>(m, "SamplingCache",
+    "The sampling of a filter's input, measured once per points (nv::SamplingCache).")
+    .def(nb::init<>())
+    .def(
+      "Get",
+      [](nv::SamplingCache& cache, const std::tuple<std::string, std::uint64_t, std::int64_t>& key,
+        nb::callable points, int threads, std::shared_ptr<PythonMonitor> monitor) {
+        nv::Monitor silent;
+        nv::Monitor& watch = monitor ? static_cast<nv::Monitor&>(*monitor) : silent;
+        // The points are asked for only when measured, on this thread, with the GIL.
+        const std::function<std::vector<double>()> xyz = [&points]() {
+          nb::gil_scoped_acquire gil;
+          const Points array = nb::cast<Points>(points());
+          return std::vector<double>(array.data(), array.data() + 3 * array.shape(0));
+        };
+        std::shared_ptr<const nv::Sampling> sampling;
+        bool measured = false;
+        {
+          nb::gil_scoped_release release;
+          sampling = cache.Get({ std::get<0>(key), std::get<1>(key), std::get<2>(key) }, xyz, nullptr, watch,
+            threads, &measured);
+        }
+        if (monitor)
+        {
+          monitor->RaisePending(); // Ctrl-C, or what a callback raised
+        }
+        return std::make_pair(std::const_pointer_cast<nv::Sampling>(sampling), measured);
+      },
+      "key"_a, "points"_a, "threads"_a = 0, "monitor"_a.none() = nb::none(),
+      "(sampling, measured): the sampling of the points that points() gives ((n, 3) float64, called only "
+      "to measure), measured on `threads` threads without the GIL unless the last measurement had the same "
+      "key (the points' object, modification time and count); None if the monitor stopped it.")
+    .def("TakeSeconds", &nv::SamplingCache::TakeSeconds,
+      "The seconds of the measurements since the last call (the filter's SamplingTime).");
 
   m.def("TableInputError", &nv::TableInputError, "The error for a table given as input (nv::TableInputError).");
   m.def(

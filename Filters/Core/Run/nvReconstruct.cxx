@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "nvReconstruct.h"
 
+#include "nvCommunicator.h"
 #include "nvParallel.h"
 #include "nvPrintPart.h"
 #include "nvSheets.h"
@@ -519,6 +520,51 @@ Outcome ReconstructSteps(Reconstruction& run, std::vector<double> xyz, std::shar
   return outcome;
 }
 } // namespace
+
+std::shared_ptr<const Sampling> SamplingCache::Get(const Key& key,
+  const std::function<std::vector<double>()>& points, Communicator* communicator, Monitor& monitor, int threads,
+  bool* measured)
+{
+  bool stale = !this->Measured || !(key == this->MeasuredKey) || (communicator != nullptr) != this->MeasuredShared;
+  if (communicator)
+  {
+    stale = communicator->MaxAll(stale ? 1.0 : 0.0) > 0.0; // all measure, or none
+  }
+  if (measured)
+  {
+    *measured = stale;
+  }
+  if (!stale)
+  {
+    return this->Measured;
+  }
+  this->Measured = nullptr; // until this measurement is complete
+  struct Clock // the seconds count even when the measurement throws
+  {
+    double& Seconds;
+    const std::chrono::steady_clock::time_point Start = std::chrono::steady_clock::now();
+    ~Clock() { this->Seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - this->Start).count(); }
+  } clock{ this->Unreported };
+  monitor.Stage(0.0, SamplingStage);
+  auto sampling = std::make_shared<Sampling>();
+  bool complete = false;
+  WithThreads(threads, [&]() { complete = sampling->Measure(points(), communicator, &monitor); });
+  if (!complete)
+  {
+    return nullptr;
+  }
+  this->Measured = sampling;
+  this->MeasuredKey = key;
+  this->MeasuredShared = communicator != nullptr;
+  return sampling;
+}
+
+double SamplingCache::TakeSeconds()
+{
+  const double seconds = this->Unreported;
+  this->Unreported = 0.0;
+  return seconds;
+}
 
 std::string TableInputError()
 {

@@ -63,6 +63,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <type_traits>
@@ -143,6 +144,48 @@ struct VolumeRequest
 {
   std::int64_t GhostLayers = 0;
   Reconstruction::VolumeAllocator Allocate;
+};
+
+/**
+ * The sampling of a filter's input (nvSampling.h), measured once per
+ * points: the information pass and the data pass, and runs that only change
+ * properties, share one measurement. Both filters keep one.
+ */
+class SamplingCache
+{
+public:
+  /// What tells the points apart: the caller's object (its address as a
+  /// text), their modification time and their count.
+  struct Key
+  {
+    std::string Object;
+    std::uint64_t Time = 0;
+    std::int64_t Count = 0;
+    bool operator==(const Key& other) const
+    {
+      return this->Object == other.Object && this->Time == other.Time && this->Count == other.Count;
+    }
+  };
+
+  /**
+   * The sampling of the points that `points` gives (xyz triples), measured
+   * on `threads` threads unless the last measurement has the same key and
+   * was shared alike (by the processes of `communicator`, or by none); with
+   * a communicator every process measures, or none (collective). A
+   * measurement is the monitor's stage [0, SamplingStage). Null if the
+   * monitor stopped it. measured: whether this call measured.
+   */
+  std::shared_ptr<const Sampling> Get(const Key& key, const std::function<std::vector<double>()>& points,
+    Communicator* communicator, Monitor& monitor, int threads, bool* measured = nullptr);
+  /// The seconds of the measurements made since the last call: the first
+  /// run that uses a measurement reports it (the filters' SamplingTime).
+  double TakeSeconds();
+
+private:
+  std::shared_ptr<const Sampling> Measured;
+  Key MeasuredKey;
+  bool MeasuredShared = false;
+  double Unreported = 0.0;
 };
 
 /// The error for a table given as input (a CSV file read as a vtkTable):
