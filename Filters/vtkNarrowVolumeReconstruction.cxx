@@ -31,8 +31,6 @@
 #include "vtkUnsignedCharArray.h"
 
 #include <array>
-#include <cctype>
-#include <cstring>
 #include <memory>
 #include <sstream>
 #include <utility>
@@ -520,36 +518,11 @@ void vtkNarrowVolumeReconstruction::ReportMessages(const nv::Outcome& outcome)
 }
 
 //------------------------------------------------------------------------------
-std::string vtkNarrowVolumeReconstruction::InWordsOfReader(std::string message) const
+std::string vtkNarrowVolumeReconstruction::InWordsOfReader(const std::string& message) const
 {
-  if (!this->PanelLabelsInMessages)
-  {
-    return message;
-  }
   // The core names the properties (OffsetDistance); the panel's reader knows
-  // their labels (Offset Distance). Whole words only.
-  static const std::pair<const char*, const char*> labels[] = {
-#define NV_LABEL(Name, Label) { #Name, Label },
-    NV_PANEL_LABELS(NV_LABEL)
-#undef NV_LABEL
-  };
-  const auto inWord = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
-  for (const auto& label : labels)
-  {
-    const std::string name = label.first;
-    for (std::size_t at = message.find(name); at != std::string::npos; at = message.find(name, at))
-    {
-      const std::size_t end = at + name.size();
-      if ((at > 0 && inWord(message[at - 1])) || (end < message.size() && inWord(message[end])))
-      {
-        at = end;
-        continue;
-      }
-      message.replace(at, name.size(), label.second);
-      at += std::strlen(label.second);
-    }
-  }
-  return message;
+  // their labels (Offset Distance).
+  return this->PanelLabelsInMessages ? nv::InPanelWords(message) : message;
 }
 
 //------------------------------------------------------------------------------

@@ -321,7 +321,7 @@ protected:
   /// The run's error and warnings as vtkErrorMacro and vtkWarningMacro give them.
   void ReportMessages(const nv::Outcome& outcome);
   /// A message of the core with the properties named as PanelLabelsInMessages says.
-  std::string InWordsOfReader(std::string message) const;
+  std::string InWordsOfReader(const std::string& message) const;
   /// Output 0 of a finished run: the grid's piece and the dense arrays.
   struct DenseArrays;
   void MakeVolume(

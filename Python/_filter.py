@@ -157,7 +157,7 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
 
     def _message(self, event, text):
         if self.GetPanelLabelsInMessages():
-            text = _properties.in_words(text, lambda name: _properties.BY_NAME[name].label)
+            text = _core.InPanelWords(text)  # the C++ filter's words (nv::InPanelWords)
         if not vtkObject.GetGlobalWarningDisplay():
             return
         if self.HasObserver(event):

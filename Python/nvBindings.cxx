@@ -439,6 +439,8 @@ NB_MODULE(_core, m)
     .def("TakeSeconds", &nv::SamplingCache::TakeSeconds,
       "The seconds of the measurements since the last call (the filter's SamplingTime).");
 
+  m.def("InPanelWords", &nv::InPanelWords, "message"_a,
+    "The message with the properties' names as the labels of ParaView's panel (nv::InPanelWords).");
   m.def("TableInputError", &nv::TableInputError, "The error for a table given as input (nv::TableInputError).");
   m.def(
     "check_ply_file",

@@ -10,9 +10,12 @@
 #include "nvSurfaceField.h"
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <sstream>
+#include <utility>
 
 namespace nv
 {
@@ -564,6 +567,32 @@ double SamplingCache::TakeSeconds()
   const double seconds = this->Unreported;
   this->Unreported = 0.0;
   return seconds;
+}
+
+std::string InPanelWords(std::string message)
+{
+  static const std::pair<const char*, const char*> labels[] = {
+#define NV_LABEL(Name, Label) { #Name, Label },
+    NV_PANEL_LABELS(NV_LABEL)
+#undef NV_LABEL
+  };
+  const auto inWord = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  for (const auto& label : labels)
+  {
+    const std::string name = label.first;
+    for (std::size_t at = message.find(name); at != std::string::npos; at = message.find(name, at))
+    {
+      const std::size_t end = at + name.size();
+      if ((at > 0 && inWord(message[at - 1])) || (end < message.size() && inWord(message[end])))
+      {
+        at = end;
+        continue;
+      }
+      message.replace(at, name.size(), label.second);
+      at += std::strlen(label.second);
+    }
+  }
+  return message;
 }
 
 std::string TableInputError()

@@ -188,6 +188,12 @@ private:
   double Unreported = 0.0;
 };
 
+/// A message of the core (it names the properties: OffsetDistance) with
+/// each property's name replaced by its label in ParaView's panel (Offset
+/// Distance, NV_PANEL_LABELS): what both filters give with
+/// PanelLabelsInMessages. Whole names only.
+std::string InPanelWords(std::string message);
+
 /// The error for a table given as input (a CSV file read as a vtkTable):
 /// both filters refuse it with this message.
 std::string TableInputError();
