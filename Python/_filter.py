@@ -189,15 +189,7 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
         input is brought up to date here, and the data pass finds it so."""
         volume_info = outInfoVec.GetInformationObject(0)
         if self.GetNumberOfInputConnections(0) > 0:
-            connection = self.GetInputConnection(0, 0)
-            producer = connection.GetProducer()
-            requests = vtkInformationVector()
-            requests.SetNumberOfInformationObjects(producer.GetNumberOfOutputPorts())
-            piece = requests.GetInformationObject(connection.GetIndex())
-            piece.Set(sddp.UPDATE_PIECE_NUMBER(), 0)
-            piece.Set(sddp.UPDATE_NUMBER_OF_PIECES(), 1)
-            piece.Set(sddp.UPDATE_NUMBER_OF_GHOST_LEVELS(), 0)
-            producer.Update(connection.GetIndex(), requests)
+            _update_input_piece(self.GetInputConnection(0, 0))
         data = vtkPointSet.GetData(inInfoVec[0], 0)
         bounds = (1.0, 0.0, 1.0, 0.0, 1.0, 0.0)
         if data is not None and data.GetNumberOfPoints() > 0:
@@ -217,16 +209,7 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
             volume_info.Set(sddp.WHOLE_EXTENT(), (0, -1, 0, -1, 0, -1), 6)
             self._error("%s while measuring the points' spacing: %s" % (type(error).__name__, error))
             return 0
-        plan = _core.MakePlan(self._settings, list(bounds), sampling.Statistics())
-        if not plan.Valid():
-            volume_info.Set(sddp.WHOLE_EXTENT(), (0, -1, 0, -1, 0, -1), 6)  # RequestData says why
-            return 1
-        grid = plan.TheGrid
-        nx, ny, nz = grid.Dims
-        volume_info.Set(sddp.WHOLE_EXTENT(), (0, nx - 1, 0, ny - 1, 0, nz - 1), 6)
-        volume_info.Set(vtkDataObject.ORIGIN(), tuple(grid.Origin), 3)
-        volume_info.Set(vtkDataObject.SPACING(), (grid.Spacing,) * 3, 3)
-        vtkDataObject.SetPointDataActiveScalarInfo(volume_info, VTK_FLOAT, 1)
+        _declare_grid(volume_info, _core.MakePlan(self._settings, list(bounds), sampling.Statistics()))
         return 1
 
     def _measure_sampling(self, data, monitor):
@@ -313,6 +296,34 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
         _make_volume(volume, run, outcome)
         surface.ShallowCopy(_polydata(*sink.Take()))
         return outcome.Summary
+
+
+def _update_input_piece(connection):
+    """Brings the output of `connection` up to date as one piece, without
+    ghost levels (as the C++ filter's UpdateInputPiece)."""
+    producer = connection.GetProducer()
+    requests = vtkInformationVector()
+    requests.SetNumberOfInformationObjects(producer.GetNumberOfOutputPorts())
+    piece = requests.GetInformationObject(connection.GetIndex())
+    piece.Set(sddp.UPDATE_PIECE_NUMBER(), 0)
+    piece.Set(sddp.UPDATE_NUMBER_OF_PIECES(), 1)
+    piece.Set(sddp.UPDATE_NUMBER_OF_GHOST_LEVELS(), 0)
+    producer.Update(connection.GetIndex(), requests)
+
+
+def _declare_grid(info, plan):
+    """The volume's grid as the pipeline information of output 0 (as the C++
+    filter's DeclareGrid): an empty extent for an invalid plan (RequestData
+    then says why)."""
+    if not plan.Valid():
+        info.Set(sddp.WHOLE_EXTENT(), (0, -1, 0, -1, 0, -1), 6)
+        return
+    grid = plan.TheGrid
+    nx, ny, nz = grid.Dims
+    info.Set(sddp.WHOLE_EXTENT(), (0, nx - 1, 0, ny - 1, 0, nz - 1), 6)
+    info.Set(vtkDataObject.ORIGIN(), tuple(grid.Origin), 3)
+    info.Set(vtkDataObject.SPACING(), (grid.Spacing,) * 3, 3)
+    vtkDataObject.SetPointDataActiveScalarInfo(info, VTK_FLOAT, 1)
 
 
 def _make_volume(volume, run, outcome):
