@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkNarrowVolumeReconstruction.h"
 
-#include "nvOutputs.h"
+#include "nvReconstruct.h"
 #include "nvParallel.h"
 #include "nvReconstruction.h"
 #include "nvSampling.h"
@@ -30,10 +30,9 @@
 #include "vtkTable.h"
 #include "vtkUnsignedCharArray.h"
 
-#include <cctype>
-#include <chrono>
-#include <cstring>
+#include <array>
 #include <memory>
+#include <sstream>
 #include <utility>
 
 vtkStandardNewMacro(vtkNarrowVolumeReconstruction);
@@ -116,6 +115,44 @@ bool Store(Field& field, T value)
 NV_SETTINGS(NV_ACCESSORS)
 #undef NV_ACCESSORS
 
+//------------------------------------------------------------------------------
+// The results' Get methods (declared by NV_RESULTS in the header) over the
+// fields of the last run's nv::Results: a number as it is, a text as a C
+// string, three values as a pointer to them.
+namespace
+{
+double ResultValue(double value)
+{
+  return value;
+}
+int ResultValue(int value)
+{
+  return value;
+}
+const char* ResultValue(const std::string& text)
+{
+  return text.c_str();
+}
+template <class T>
+T* ResultValue(std::array<T, 3>& values)
+{
+  return values.data();
+}
+} // namespace
+
+#define NV_RESULT_GETTER(Type, Name, Size)                                                         \
+  decltype(std::declval<vtkNarrowVolumeReconstruction&>().Get##Name()) vtkNarrowVolumeReconstruction::Get##Name() \
+    NV_RESULT_CONST_##Size                                                                         \
+  {                                                                                                \
+    return ResultValue(this->Chosen->Name);                                                        \
+  }
+#define NV_RESULT_CONST_1 const
+#define NV_RESULT_CONST_3
+NV_RESULTS(NV_RESULT_GETTER)
+#undef NV_RESULT_GETTER
+#undef NV_RESULT_CONST_1
+#undef NV_RESULT_CONST_3
+
 namespace
 {
 
@@ -182,6 +219,44 @@ vtkSmartPointer<ArrayType> NewArray(const char* name, vtkIdType nodes)
   return array;
 }
 
+/// Brings the output of `connection` (null: no input) up to date for piece
+/// `piece` of `pieces`, without ghost levels.
+void UpdateInputPiece(vtkAlgorithmOutput* connection, int piece, int pieces)
+{
+  if (!connection)
+  {
+    return;
+  }
+  vtkNew<vtkInformationVector> requests;
+  requests->SetNumberOfInformationObjects(connection->GetProducer()->GetNumberOfOutputPorts());
+  vtkInformation* request = requests->GetInformationObject(connection->GetIndex());
+  request->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), piece);
+  request->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), pieces);
+  request->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+  connection->GetProducer()->Update(connection->GetIndex(), requests);
+}
+
+/// The volume's grid as the pipeline information of output 0 (whole extent,
+/// origin, spacing, float scalars); an empty extent for an invalid plan
+/// (RequestData then says why).
+void DeclareGrid(vtkInformation* info, const nv::Plan& plan)
+{
+  if (!plan.Valid())
+  {
+    const int empty[6] = { 0, -1, 0, -1, 0, -1 };
+    info->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), empty, 6);
+    return;
+  }
+  const nv::Grid& grid = plan.TheGrid;
+  const int wholeExtent[6] = { 0, static_cast<int>(grid.Dims[0] - 1), 0, static_cast<int>(grid.Dims[1] - 1), 0,
+    static_cast<int>(grid.Dims[2] - 1) };
+  info->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), wholeExtent, 6);
+  info->Set(vtkDataObject::ORIGIN(), grid.Origin.data(), 3);
+  const double spacing[3] = { grid.Spacing, grid.Spacing, grid.Spacing };
+  info->Set(vtkDataObject::SPACING(), spacing, 3);
+  vtkDataObject::SetPointDataActiveScalarInfo(info, VTK_FLOAT, 1);
+}
+
 } // namespace
 
 /// The dense arrays of the volume piece (null: not asked for), which the
@@ -224,6 +299,8 @@ struct vtkNarrowVolumeReconstruction::DenseArrays
 //------------------------------------------------------------------------------
 vtkNarrowVolumeReconstruction::vtkNarrowVolumeReconstruction()
   : Settings(new nv::Settings()) // the property table's defaults
+  , Chosen(new nv::Results())
+  , Samplings(new nv::SamplingCache())
 {
   this->SetNumberOfInputPorts(1);
   this->SetNumberOfOutputPorts(2);
@@ -318,31 +395,19 @@ int vtkNarrowVolumeReconstruction::RequestInformation(
   // this process will ask for, see RequestUpdateExtent), and under several
   // processes their bounds are combined. The data pass then finds the input
   // up to date and derives the same grid.
-  vtkInformation* volumeInfo = outputVector->GetInformationObject(0);
   const bool several = this->HasSeveralProcesses();
-  double bounds[6] = { 1.0, 0.0, 1.0, 0.0, 1.0, 0.0 };
-  vtkAlgorithmOutput* connection = this->GetInputConnection(0, 0);
-  if (connection)
-  {
-    vtkNew<vtkInformationVector> requests;
-    requests->SetNumberOfInformationObjects(connection->GetProducer()->GetNumberOfOutputPorts());
-    vtkInformation* request = requests->GetInformationObject(connection->GetIndex());
-    request->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(),
-      several ? this->Controller->GetLocalProcessId() : 0);
-    request->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(),
-      several ? this->Controller->GetNumberOfProcesses() : 1);
-    request->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
-    connection->GetProducer()->Update(connection->GetIndex(), requests);
-  }
+  UpdateInputPiece(this->GetInputConnection(0, 0), several ? this->Controller->GetLocalProcessId() : 0,
+    several ? this->Controller->GetNumberOfProcesses() : 1);
   vtkPointSet* input = vtkPointSet::GetData(inputVector[0], 0);
+  double bounds[6] = { 1.0, 0.0, 1.0, 0.0, 1.0, 0.0 };
   if (input && input->GetNumberOfPoints() > 0)
   {
     input->GetBounds(bounds);
   }
-  std::unique_ptr<vtkNarrowVolumeCommunicator> communicator;
-  if (several)
+  std::unique_ptr<vtkNarrowVolumeCommunicator> communicator(
+    several ? new vtkNarrowVolumeCommunicator(this->Controller) : nullptr);
+  if (communicator)
   {
-    communicator.reset(new vtkNarrowVolumeCommunicator(this->Controller));
     nv::GlobalBounds(*communicator, bounds);
   }
   // The measurement shows its progress (on a large cloud it takes seconds,
@@ -357,22 +422,7 @@ int vtkNarrowVolumeReconstruction::RequestInformation(
   {
     this->SetProgressShiftScale(nv::SamplingStage, 1.0 - nv::SamplingStage);
   }
-  const nv::Plan plan = nv::MakePlan(this->GetSettings(), bounds, sampling->Statistics());
-  if (!plan.Valid())
-  {
-    // No grid: RequestData says why.
-    const int empty[6] = { 0, -1, 0, -1, 0, -1 };
-    volumeInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), empty, 6);
-    return 1;
-  }
-  const nv::Grid& grid = plan.TheGrid;
-  const int wholeExtent[6] = { 0, static_cast<int>(grid.Dims[0] - 1), 0, static_cast<int>(grid.Dims[1] - 1), 0,
-    static_cast<int>(grid.Dims[2] - 1) };
-  volumeInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), wholeExtent, 6);
-  volumeInfo->Set(vtkDataObject::ORIGIN(), grid.Origin.data(), 3);
-  const double spacing[3] = { grid.Spacing, grid.Spacing, grid.Spacing };
-  volumeInfo->Set(vtkDataObject::SPACING(), spacing, 3);
-  vtkDataObject::SetPointDataActiveScalarInfo(volumeInfo, VTK_FLOAT, 1);
+  DeclareGrid(outputVector->GetInformationObject(0), nv::MakePlan(this->GetSettings(), bounds, sampling->Statistics()));
   return 1;
 }
 
@@ -410,7 +460,6 @@ int vtkNarrowVolumeReconstruction::RequestData(
     vtkErrorMacro(<< this->InWordsOfReader(nv::TableInputError()));
     return 1;
   }
-
   // Distributed (see SetController), or one process computes everything:
   // then the requests for pieces other than 0 leave their outputs empty, so
   // that gathered pieces hold the serial result once.
@@ -421,21 +470,43 @@ int vtkNarrowVolumeReconstruction::RequestData(
   {
     return 1;
   }
+  const vtkIdType ghosts =
+    distributed ? volumeInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS()) : 0;
+  this->Reconstruct(input, distributed, ghosts, volume, surface);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkNarrowVolumeReconstruction::Reconstruct(
+  vtkPointSet* input, bool distributed, vtkIdType ghosts, vtkImageData* volume, vtkPolyData* surface)
+{
+  // The run and its outputs (nvReconstruct.h), into VTK's arrays.
   std::unique_ptr<vtkNarrowVolumeCommunicator> communicator(
     distributed ? new vtkNarrowVolumeCommunicator(this->Controller) : nullptr);
-
-  // The run and its outputs (nvOutputs.h), into VTK's arrays.
   FilterMonitor monitor(this);
   nv::Reconstruction run(this->GetSettings(), communicator.get(), &monitor);
   const std::shared_ptr<const nv::Sampling> sampling = this->MeasureSampling(input, communicator.get(), monitor);
   DenseArrays dense;
   nv::PolyDataSink sink;
-  const vtkIdType ghosts =
-    distributed ? volumeInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS()) : 0;
   const nv::Outcome outcome = sampling // null: stopped (AbortExecute)
     ? nv::Reconstruct(run, PointsOf(input), sampling, sink, dense.Request(run, ghosts), distributed)
     : nv::Outcome();
   this->KeepResults(&run, outcome);
+  this->ReportMessages(outcome);
+  if (outcome.Done)
+  {
+    this->MakeVolume(volume, run, outcome, dense);
+    surface->ShallowCopy(sink.Finish());
+    this->AddRunSummary(volume, outcome.Summary);
+    this->UpdateProgress(1.0);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkNarrowVolumeReconstruction::ReportMessages(const nv::Outcome& outcome)
+{
+  // The run's error and warnings, in the words of the reader (the panel's
+  // labels in ParaView).
   if (!outcome.Error.empty())
   {
     vtkErrorMacro(<< this->InWordsOfReader(outcome.Error));
@@ -444,56 +515,14 @@ int vtkNarrowVolumeReconstruction::RequestData(
   {
     vtkWarningMacro(<< this->InWordsOfReader(warning));
   }
-  if (!outcome.Done)
-  {
-    return 1;
-  }
-  this->MakeVolume(volume, run, outcome, dense);
-  surface->ShallowCopy(sink.Finish());
-  this->AddRunSummary(volume, outcome.Summary);
-  this->UpdateProgress(1.0);
-  return 1;
 }
 
 //------------------------------------------------------------------------------
-std::string vtkNarrowVolumeReconstruction::InWordsOfReader(std::string message) const
+std::string vtkNarrowVolumeReconstruction::InWordsOfReader(const std::string& message) const
 {
-  if (!this->PanelLabelsInMessages)
-  {
-    return message;
-  }
   // The core names the properties (OffsetDistance); the panel's reader knows
-  // their labels (Offset Distance). Whole words only.
-  static const std::pair<const char*, const char*> labels[] = {
-#define NV_LABEL(Name, Label) { #Name, Label },
-    NV_PANEL_LABELS(NV_LABEL)
-#undef NV_LABEL
-  };
-  const auto inWord = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
-  for (const auto& label : labels)
-  {
-    const std::string name = label.first;
-    for (std::size_t at = message.find(name); at != std::string::npos; at = message.find(name, at))
-    {
-      const std::size_t end = at + name.size();
-      if ((at > 0 && inWord(message[at - 1])) || (end < message.size() && inWord(message[end])))
-      {
-        at = end;
-        continue;
-      }
-      message.replace(at, name.size(), label.second);
-      at += std::strlen(label.second);
-    }
-  }
-  return message;
-}
-
-//------------------------------------------------------------------------------
-const char* vtkNarrowVolumeReconstruction::GetGridUsed()
-{
-  const int* n = this->GridDimensionsUsed;
-  this->GridUsed = n[0] > 0 ? std::to_string(n[0]) + " x " + std::to_string(n[1]) + " x " + std::to_string(n[2]) : "";
-  return this->GridUsed.c_str();
+  // their labels (Offset Distance).
+  return this->PanelLabelsInMessages ? nv::InPanelWords(message) : message;
 }
 
 //------------------------------------------------------------------------------
@@ -505,23 +534,13 @@ void vtkNarrowVolumeReconstruction::KeepResults(const nv::Reconstruction* run, c
   this->NumberOfGridNodes = ran ? static_cast<vtkIdType>(run->GetGrid().NumberOfNodes()) : 0;
   this->NumberOfBandNodes = ran ? static_cast<vtkIdType>(run->NumberOfBandNodes()) : 0;
   this->RelativeChanges = ran ? run->RelativeChanges() : std::vector<double>();
-  this->OffsetDistanceUsed = ran ? run->GetParameters().OffsetDistance : 0.0;
-  this->SampleSpacingUsed = ran ? run->GetGrid().Spacing : 0.0;
-  this->ClosingRadiusUsed = ran ? run->GetPlan().ClosingRadius : 0.0;
-  for (int axis = 0; axis < 3; ++axis)
-  {
-    this->GridDimensionsUsed[axis] = ran ? static_cast<int>(run->GetGrid().Dims[axis]) : 0;
-  }
+  *this->Chosen = outcome.Chosen; // all zero when it did not run
   this->SetupTime = ran ? run->SetupSeconds() : 0.0;
   this->EvolutionTime = ran ? run->EvolutionSeconds() : 0.0;
   this->OutputTime = ran ? outcome.OutputSeconds : 0.0;
   // The measurement's seconds go to the first run that uses it (it may have
   // been made for this run's information pass).
-  this->SamplingTime = run ? this->SamplingUnreported : 0.0;
-  if (run)
-  {
-    this->SamplingUnreported = 0.0;
-  }
+  this->SamplingTime = run ? this->Samplings->TakeSeconds() : 0.0;
 }
 
 //------------------------------------------------------------------------------
@@ -566,7 +585,7 @@ void vtkNarrowVolumeReconstruction::MakeVolume(
 void vtkNarrowVolumeReconstruction::AddRunSummary(
   vtkImageData* volume, const std::vector<nv::SummaryArray>& summary)
 {
-  // The run's figures in the volume's field data (nvOutputs.h), for scripts
+  // The run's figures in the volume's field data (nvReconstruct.h), for scripts
   // and the GUI's Information panel.
   for (const nv::SummaryArray& values : summary)
   {
@@ -601,44 +620,19 @@ void vtkNarrowVolumeReconstruction::AddRunSummary(
 std::shared_ptr<const nv::Sampling> vtkNarrowVolumeReconstruction::MeasureSampling(
   vtkPointSet* input, nv::Communicator* communicator, nv::Monitor& monitor, bool* measured)
 {
-  // The same points (object, modification time, count) are measured once:
-  // the information pass and the data pass, and runs that only change
-  // properties, share one measurement.
+  // The same points (object, modification time, count) are measured once
+  // (nv::SamplingCache).
   vtkPoints* points = input ? input->GetPoints() : nullptr;
-  const vtkMTimeType time = points ? points->GetMTime() : 0;
-  const vtkIdType count = points ? points->GetNumberOfPoints() : 0;
-  bool stale = !this->Sampled || time != this->SampledTime || count != this->SampledPoints ||
-    (communicator != nullptr) != this->SampledShared;
-  if (communicator)
+  nv::SamplingCache::Key key;
+  if (points)
   {
-    stale = communicator->MaxAll(stale ? 1.0 : 0.0) > 0.0; // all measure, or none
+    std::ostringstream object;
+    object << static_cast<const void*>(points);
+    key = { object.str(), points->GetMTime(), points->GetNumberOfPoints() };
   }
-  if (stale)
-  {
-    const auto start = std::chrono::steady_clock::now();
-    auto sampling = std::make_shared<nv::Sampling>();
-    bool complete = false;
-    monitor.Stage(0.0, nv::SamplingStage);
-    nv::WithThreads(this->Settings->NumberOfThreads,
-      [&]() { complete = sampling->Measure(PointsOf(input), communicator, &monitor); });
-    this->SamplingUnreported += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (measured)
-    {
-      *measured = true;
-    }
-    if (!complete)
-    {
-      this->Sampled = nullptr;
-      return nullptr;
-    }
-    this->Sampled = sampling;
-    this->SampledTime = time;
-    this->SampledPoints = count;
-    this->SampledShared = communicator != nullptr;
-  }
-  return this->Sampled;
+  return this->Samplings->Get(
+    key, [input]() { return PointsOf(input); }, communicator, monitor, this->Settings->NumberOfThreads, measured);
 }
-
 
 //------------------------------------------------------------------------------
 void vtkNarrowVolumeReconstruction::PrintSelf(ostream& os, vtkIndent indent)

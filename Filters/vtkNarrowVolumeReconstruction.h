@@ -62,6 +62,7 @@
 #define vtkNarrowVolumeReconstruction_h
 
 #include "NarrowVolumeFiltersModule.h" // for export macro
+#include "nvSettingsTable.h"          // for NV_RESULTS, from the property table
 #include "vtkAlgorithm.h"
 
 #include <cstdint> // for the counts
@@ -75,7 +76,9 @@ class Communicator;
 class Monitor;
 class Reconstruction;
 class Sampling;
+class SamplingCache;
 struct Outcome;
+struct Results;
 struct Settings;
 struct SummaryArray;
 }
@@ -102,6 +105,27 @@ class vtkPolyData;
   virtual type Get##name##MinValue() { return low; }                                                 \
   virtual type Get##name##MaxValue() { return high; }                                                \
   vtkNarrowVolumeSettingMacro(name, type)
+
+// The Get method of a result of the last run (a row of the property
+// table's RESULTS, NV_RESULTS(X) calling X(Type, Name, Size)), by its type
+// and size: a number, a text, or three values as vtkGetVector3Macro gives
+// them. Defined over the filter's nv::Results in the .cxx.
+#define vtkNarrowVolumeResultMacro(type, name, size) vtkNarrowVolumeResult_##type##_##size(name)
+#define vtkNarrowVolumeResult_double_1(name) virtual double Get##name() const;
+#define vtkNarrowVolumeResult_int_1(name) virtual int Get##name() const;
+#define vtkNarrowVolumeResult_Text_1(name) virtual const char* Get##name() const;
+#define vtkNarrowVolumeResult_double_3(name) vtkNarrowVolumeResultVector3(name, double)
+#define vtkNarrowVolumeResult_int_3(name) vtkNarrowVolumeResultVector3(name, int)
+#define vtkNarrowVolumeResultVector3(name, type)                                                    \
+  virtual type* Get##name() VTK_SIZEHINT(3);                                                         \
+  virtual void Get##name(type& x, type& y, type& z)                                                  \
+  {                                                                                                  \
+    const type* values = this->Get##name();                                                          \
+    x = values[0];                                                                                   \
+    y = values[1];                                                                                   \
+    z = values[2];                                                                                   \
+  }                                                                                                  \
+  virtual void Get##name(type values[3]) { this->Get##name(values[0], values[1], values[2]); }
 
 class NARROWVOLUMEFILTERS_EXPORT vtkNarrowVolumeReconstruction : public vtkAlgorithm
 {
@@ -239,27 +263,31 @@ public:
 
   ///@{
   /**
-   * Results of the last run: time steps taken, band nodes and all grid nodes
-   * (over all processes in a distributed run), the offset l and spacing h
-   * used (the automatic ones, or those set), the grid's nodes along x, y, z,
-   * the relative change of each step, and wall-clock seconds of the set-up
-   * (distance and band), the evolution and the output (volume and surface)
-   * on this process. SamplingTime: seconds spent measuring the points'
-   * spacing (nearest neighbours, for the automatic offset and
-   * MedianPointSpacing) in the last update; 0 when the points had not
-   * changed and the last measurement served. GridUsed: the grid's nodes as
-   * one text, "221 x 260 x 200" ("" before a run), which ParaView's panel
-   * shows as Grid Used.
+   * What the last run chose, which ParaView's panel shows read-only: one Get
+   * method per row of the property table's RESULTS (the parameter reference
+   * says what each is): GetOffsetDistanceUsed, GetClosingRadiusUsed,
+   * GetSampleSpacingUsed, GetGridUsed (the grid's nodes as one text, "221 x
+   * 260 x 200"; "" before a run) and GetGridDimensionsUsed (the same as
+   * three integers). 0 (or "") before a run or after one that failed.
+   */
+  NV_RESULTS(vtkNarrowVolumeResultMacro)
+  ///@}
+
+  ///@{
+  /**
+   * Figures of the last run: time steps taken, band nodes and all grid nodes
+   * (over all processes in a distributed run), the relative change of each
+   * step, and wall-clock seconds of the set-up (distance and band), the
+   * evolution and the output (volume and surface) on this process.
+   * SamplingTime: seconds spent measuring the points' spacing (nearest
+   * neighbours, for the automatic offset and MedianPointSpacing) in the
+   * last update; 0 when the points had not changed and the last
+   * measurement served.
    */
   int GetNumberOfIterations() const { return static_cast<int>(this->RelativeChanges.size()); }
   vtkGetMacro(NumberOfBandNodes, vtkIdType);
   vtkGetMacro(NumberOfGridNodes, vtkIdType);
   const std::vector<double>& GetRelativeChanges() const { return this->RelativeChanges; }
-  vtkGetMacro(OffsetDistanceUsed, double);
-  vtkGetMacro(SampleSpacingUsed, double);
-  vtkGetMacro(ClosingRadiusUsed, double);
-  vtkGetVector3Macro(GridDimensionsUsed, int);
-  const char* GetGridUsed();
   vtkGetMacro(SamplingTime, double);
   vtkGetMacro(SetupTime, double);
   vtkGetMacro(EvolutionTime, double);
@@ -304,8 +332,13 @@ protected:
   const nv::Settings& GetSettings() const { return *this->Settings; }
   /// The results of the last run (run null: none yet), for the Get...() methods.
   void KeepResults(const nv::Reconstruction* run, const nv::Outcome& outcome);
+  /// The run on the input's points and its outputs, into VTK's arrays (the
+  /// data pass, once it knows the piece): ghosts, the volume's ghost layers.
+  void Reconstruct(vtkPointSet* input, bool distributed, vtkIdType ghosts, vtkImageData* volume, vtkPolyData* surface);
+  /// The run's error and warnings as vtkErrorMacro and vtkWarningMacro give them.
+  void ReportMessages(const nv::Outcome& outcome);
   /// A message of the core with the properties named as PanelLabelsInMessages says.
-  std::string InWordsOfReader(std::string message) const;
+  std::string InWordsOfReader(const std::string& message) const;
   /// Output 0 of a finished run: the grid's piece and the dense arrays.
   struct DenseArrays;
   void MakeVolume(
@@ -325,18 +358,10 @@ protected:
   vtkIdType NumberOfBandNodes = 0;
   vtkIdType NumberOfGridNodes = 0;
   std::vector<double> RelativeChanges;
-  double OffsetDistanceUsed = 0.0;
-  double SampleSpacingUsed = 0.0;
-  double ClosingRadiusUsed = 0.0;
-  int GridDimensionsUsed[3] = { 0, 0, 0 };
-  std::string GridUsed; // GetGridUsed()'s text
+  std::unique_ptr<nv::Results> Chosen; ///< the last run's results (NV_RESULTS)
   bool PanelLabelsInMessages = false;
-  std::shared_ptr<const nv::Sampling> Sampled; ///< of the input at SampledTime
-  vtkMTimeType SampledTime = 0;
-  vtkIdType SampledPoints = -1;
-  bool SampledShared = false;
+  std::unique_ptr<nv::SamplingCache> Samplings; ///< the input's sampling, measured once per points
   double SamplingTime = 0.0;
-  double SamplingUnreported = 0.0; ///< seconds of measurements no run has reported yet
   double SetupTime = 0.0;
   double EvolutionTime = 0.0;
   double OutputTime = 0.0;

@@ -6,7 +6,7 @@ The run is the core's (narrowvolume._core, the same C++ as the C++ filter's,
 its loops on std::threads), and so are the surface (marching cubes in the
 band's bricks, as in the C++ filter), the small pieces' removal, the
 warnings and the field data: one call of the core's nv::Reconstruct
-(nvOutputs.h) makes them, and this file only converts, as
+(nvReconstruct.h) makes them, and this file only converts, as
 vtkNarrowVolumeReconstruction.cxx does. The arrays the core fills reach VTK
 without a copy.
 
@@ -14,7 +14,6 @@ Not in this flavour: SetController (distributed runs under MPI need the
 VTK-wrapped filter of the CMake build).
 """
 import operator
-import time
 
 import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
@@ -74,8 +73,7 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
         # The properties live in the core's own settings: a default-constructed
         # nv::Settings holds the C++ defaults.
         self._settings = _core.Settings()
-        self._sampled = None  # (points' identity, modification time, count, the core's Sampling)
-        self._sampling_unreported = 0.0  # seconds of a measurement no run has reported yet
+        self._samplings = _core.SamplingCache()  # the input's sampling, measured once per points
         self._panel_labels = False  # SetPanelLabelsInMessages
         self._clear_results()
 
@@ -83,8 +81,7 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
         self._band_nodes = 0
         self._grid_nodes = 0
         self._changes = ()
-        self._used = (0.0, 0.0, 0.0)
-        self._dimensions = (0, 0, 0)
+        self._chosen = _core.Results()  # the results (RESULTS): zero before a run
         self._times = (0.0, 0.0, 0.0)
         self._sampling_time = 0.0
 
@@ -110,7 +107,7 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
         """Output port 1, the surface (vtkPolyData)."""
         return self.GetOutputDataObject(1)
 
-    # --- Results of the last run.
+    # --- Figures of the last run (the results of the table's RESULTS are made below).
     def GetNumberOfIterations(self):
         """Time steps the last run took."""
         return len(self._changes)
@@ -126,27 +123,6 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
     def GetRelativeChanges(self):
         """The relative change ||phi^{n+1} - phi^n||_2 / ||phi^n||_2 of each time step of the last run."""
         return tuple(self._changes)
-
-    def GetOffsetDistanceUsed(self):
-        """The offset distance l of the last run (the automatic one, or the one set)."""
-        return self._used[0]
-
-    def GetSampleSpacingUsed(self):
-        """The grid spacing h of the last run (the automatic one, or the one set)."""
-        return self._used[1]
-
-    def GetClosingRadiusUsed(self):
-        """The closing radius of the last run (0 with CloseGaps off)."""
-        return self._used[2]
-
-    def GetGridDimensionsUsed(self):
-        """The grid's nodes along x, y and z in the last run."""
-        return self._dimensions
-
-    def GetGridUsed(self):
-        """GridDimensionsUsed as one text, "221 x 260 x 200" ("" before a run):
-        what ParaView's panel shows as Grid Used."""
-        return " x ".join(str(n) for n in self._dimensions) if self._dimensions[0] > 0 else ""
 
     def GetSamplingTime(self):
         """Wall-clock seconds spent measuring the points' spacing (nearest
@@ -181,7 +157,7 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
 
     def _message(self, event, text):
         if self.GetPanelLabelsInMessages():
-            text = _properties.in_words(text, lambda name: _properties.BY_NAME[name].label)
+            text = _core.InPanelWords(text)  # the C++ filter's words (nv::InPanelWords)
         if not vtkObject.GetGlobalWarningDisplay():
             return
         if self.HasObserver(event):
@@ -213,15 +189,7 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
         input is brought up to date here, and the data pass finds it so."""
         volume_info = outInfoVec.GetInformationObject(0)
         if self.GetNumberOfInputConnections(0) > 0:
-            connection = self.GetInputConnection(0, 0)
-            producer = connection.GetProducer()
-            requests = vtkInformationVector()
-            requests.SetNumberOfInformationObjects(producer.GetNumberOfOutputPorts())
-            piece = requests.GetInformationObject(connection.GetIndex())
-            piece.Set(sddp.UPDATE_PIECE_NUMBER(), 0)
-            piece.Set(sddp.UPDATE_NUMBER_OF_PIECES(), 1)
-            piece.Set(sddp.UPDATE_NUMBER_OF_GHOST_LEVELS(), 0)
-            producer.Update(connection.GetIndex(), requests)
+            _update_input_piece(self.GetInputConnection(0, 0))
         data = vtkPointSet.GetData(inInfoVec[0], 0)
         bounds = (1.0, 0.0, 1.0, 0.0, 1.0, 0.0)
         if data is not None and data.GetNumberOfPoints() > 0:
@@ -234,49 +202,26 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
             # that flag only as a data pass begins (it may hold the last run's).
             self.SetProgressShiftScale(0.0, 1.0)
             monitor = _core.Monitor(report=self.UpdateProgress, poll=None)
-            monitor.Stage(0.0, _core.SamplingStage)
             sampling, measured = self._measure_sampling(data, monitor)
             if measured:
                 self.SetProgressShiftScale(_core.SamplingStage, 1.0 - _core.SamplingStage)
         except (KeyboardInterrupt, Exception) as error:  # RequestData reports the run's own errors
-            self._sampled = None
             volume_info.Set(sddp.WHOLE_EXTENT(), (0, -1, 0, -1, 0, -1), 6)
             self._error("%s while measuring the points' spacing: %s" % (type(error).__name__, error))
             return 0
-        plan = _core.MakePlan(self._settings, list(bounds), sampling.Statistics())
-        if not plan.Valid():
-            volume_info.Set(sddp.WHOLE_EXTENT(), (0, -1, 0, -1, 0, -1), 6)  # RequestData says why
-            return 1
-        grid = plan.TheGrid
-        nx, ny, nz = grid.Dims
-        volume_info.Set(sddp.WHOLE_EXTENT(), (0, nx - 1, 0, ny - 1, 0, nz - 1), 6)
-        volume_info.Set(vtkDataObject.ORIGIN(), tuple(grid.Origin), 3)
-        volume_info.Set(vtkDataObject.SPACING(), (grid.Spacing,) * 3, 3)
-        vtkDataObject.SetPointDataActiveScalarInfo(volume_info, VTK_FLOAT, 1)
+        _declare_grid(volume_info, _core.MakePlan(self._settings, list(bounds), sampling.Statistics()))
         return 1
 
     def _measure_sampling(self, data, monitor):
         """The core's sampling of the input's points, measured once per
-        points (object, modification time, count), as the C++ filter does
-        (None if the monitor stopped the measurement), and whether this call
-        measured."""
+        points (object, modification time, count) by the core's
+        SamplingCache, as the C++ filter's (None if the monitor stopped the
+        measurement), and whether this call measured."""
         points = data.GetPoints() if data is not None else None
         # The C++ object's address (__this__): a Python wrapper's id() changes
         # whenever VTK hands out a new wrapper for the same points.
-        key = (points.__this__ if points else None, points.GetMTime() if points else 0,
-               points.GetNumberOfPoints() if points else 0)
-        if self._sampled is None or self._sampled[0] != key:
-            start = time.perf_counter()
-            self._sampled = None
-            try:
-                sampling = _core.Sampling.Measure(_points_of(data), self._settings.NumberOfThreads, monitor)
-            finally:
-                self._sampling_unreported += time.perf_counter() - start
-            if sampling is None:
-                return None, True
-            self._sampled = (key, sampling)
-            return sampling, True
-        return self._sampled[1], False
+        key = (points.__this__, points.GetMTime(), points.GetNumberOfPoints()) if points else ("", 0, 0)
+        return self._samplings.Get(key, lambda: _points_of(data), self._settings.NumberOfThreads, monitor)
 
     def RequestUpdateExtent(self, request, inInfoVec, outInfoVec):
         """The shell depends on every point: asks for the whole cloud."""
@@ -328,11 +273,10 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
         summary, or None when it failed or stopped."""
         monitor = _core.Monitor(report=self.UpdateProgress, poll=lambda: bool(self.GetAbortExecute()))
         run = _core.Reconstruction(self._settings, monitor)
-        monitor.Stage(0.0, _core.SamplingStage)
         sampling, _ = self._measure_sampling(data, monitor)
         # The measurement's seconds go to the first run that uses it (it may
         # have been made for this run's information pass).
-        self._sampling_time, self._sampling_unreported = self._sampling_unreported, 0.0
+        self._sampling_time = self._samplings.TakeSeconds()
         if sampling is None:  # stopped (AbortExecute)
             return None
         sink = _core.MeshSink()
@@ -341,8 +285,7 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
             self._grid_nodes = run.GetGrid().NumberOfNodes()
             self._band_nodes = run.NumberOfBandNodes()
             self._changes = tuple(run.RelativeChanges())
-            self._used = (run.GetParameters().OffsetDistance, run.GetGrid().Spacing, run.GetPlan().ClosingRadius)
-            self._dimensions = tuple(int(n) for n in run.GetGrid().Dims)
+            self._chosen = outcome.Chosen
             self._times = (run.SetupSeconds(), run.EvolutionSeconds(), outcome.OutputSeconds)
         if outcome.Error:
             self._error(outcome.Error)
@@ -353,6 +296,34 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
         _make_volume(volume, run, outcome)
         surface.ShallowCopy(_polydata(*sink.Take()))
         return outcome.Summary
+
+
+def _update_input_piece(connection):
+    """Brings the output of `connection` up to date as one piece, without
+    ghost levels (as the C++ filter's UpdateInputPiece)."""
+    producer = connection.GetProducer()
+    requests = vtkInformationVector()
+    requests.SetNumberOfInformationObjects(producer.GetNumberOfOutputPorts())
+    piece = requests.GetInformationObject(connection.GetIndex())
+    piece.Set(sddp.UPDATE_PIECE_NUMBER(), 0)
+    piece.Set(sddp.UPDATE_NUMBER_OF_PIECES(), 1)
+    piece.Set(sddp.UPDATE_NUMBER_OF_GHOST_LEVELS(), 0)
+    producer.Update(connection.GetIndex(), requests)
+
+
+def _declare_grid(info, plan):
+    """The volume's grid as the pipeline information of output 0 (as the C++
+    filter's DeclareGrid): an empty extent for an invalid plan (RequestData
+    then says why)."""
+    if not plan.Valid():
+        info.Set(sddp.WHOLE_EXTENT(), (0, -1, 0, -1, 0, -1), 6)
+        return
+    grid = plan.TheGrid
+    nx, ny, nz = grid.Dims
+    info.Set(sddp.WHOLE_EXTENT(), (0, nx - 1, 0, ny - 1, 0, nz - 1), 6)
+    info.Set(vtkDataObject.ORIGIN(), tuple(grid.Origin), 3)
+    info.Set(vtkDataObject.SPACING(), (grid.Spacing,) * 3, 3)
+    vtkDataObject.SetPointDataActiveScalarInfo(info, VTK_FLOAT, 1)
 
 
 def _make_volume(volume, run, outcome):
@@ -508,4 +479,17 @@ def _install_properties(cls):
             setattr(cls, "Set%sTo%s" % (prop.name, suffix), choose)
 
 
+def _install_results(cls):
+    """Get<Name> for each result of the table (RESULTS), over the run's nv::Results."""
+    for result in _properties.RESULTS:
+        def getter(self, result=result):
+            value = getattr(self._chosen, result.name)
+            return tuple(result.kind(v) for v in value) if result.size > 1 else result.kind(value)
+
+        getter.__doc__ = "%s\n\n%s" % (result.name, _properties.describe(result))
+        getter.__name__ = "Get" + result.name
+        setattr(cls, getter.__name__, getter)
+
+
 _install_properties(vtkNarrowVolumeReconstruction)
+_install_results(vtkNarrowVolumeReconstruction)

@@ -277,7 +277,13 @@ panel: "default" (the panel shows it), "advanced" (only in advanced mode)
     panel shows in another form. Hidden by the proxy's hint
     <Property name=... show="0"/>, not panel_visibility="never", which
     would also take it from pvpython's attributes.
-doc: what it is, with {OtherProperty} for the names of other properties."""
+doc: what it is, with {OtherProperty} for the names of other properties.
+
+A row here and the line of ResultsOf (Filters/Core/Run/nvReconstruct.cxx) that
+computes it are all a new result needs: the header's NV_RESULTS (rewrite it
+with --header, as for a property) gives nv::Results its field, the VTK
+filter and the binding their Get method and field, and _filter.py and the
+stub make theirs from this table."""
 
 # What the last run chose, in the panel's order.
 RESULTS = (

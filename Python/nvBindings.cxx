@@ -3,7 +3,7 @@
 // narrowvolume._core: the numerical core for Python (nanobind), in the wheel
 // that pip builds without VTK. The Python filter (_filter.py) drives a run
 // through these names, which are the core's own (nvReconstruction.h,
-// nvOutputs.h, nvSampling.h): nothing of the method is decided here. It
+// nvReconstruct.h, nvSampling.h): nothing of the method is decided here. It
 // also holds the readers' PLY check (nvPLY.h), for the command line, and
 // their PCD and text parsers (nvReaderBindings.cxx).
 //
@@ -17,7 +17,7 @@
 // The arrays the core fills (the dense volume, the surface) are allocated
 // here and handed to numpy without a copy; the Python filter hands them to
 // VTK without a copy either.
-#include "nvOutputs.h"
+#include "nvReconstruct.h"
 #include "nvPLY.h"
 #include "nvParallel.h"
 #include "nvReconstruction.h"
@@ -27,6 +27,7 @@
 #include <nanobind/nanobind.h>
 #include <nanobind/ndarray.h>
 #include <nanobind/stl/array.h>
+#include <nanobind/stl/pair.h>
 #include <nanobind/stl/shared_ptr.h>
 #include <nanobind/stl/string.h>
 #include <nanobind/stl/tuple.h>
@@ -410,6 +411,43 @@ NB_MODULE(_core, m)
       "may stop it: then None (Ctrl-C raises KeyboardInterrupt).")
     .def("Statistics", &nv::Sampling::Statistics);
 
+  nb::class_<nv::SamplingCache>(m, "SamplingCache",
+    "The sampling of a filter's input, measured once per points (nv::SamplingCache).")
+    .def(nb::init<>())
+    .def(
+      "Get",
+      [](nv::SamplingCache& cache, const std::tuple<std::string, std::uint64_t, std::int64_t>& key,
+        nb::callable points, int threads, std::shared_ptr<PythonMonitor> monitor) {
+        nv::Monitor silent;
+        nv::Monitor& watch = monitor ? static_cast<nv::Monitor&>(*monitor) : silent;
+        // The points are asked for only when measured, on this thread, with the GIL.
+        const std::function<std::vector<double>()> xyz = [&points]() {
+          nb::gil_scoped_acquire gil;
+          const Points array = nb::cast<Points>(points());
+          return std::vector<double>(array.data(), array.data() + 3 * array.shape(0));
+        };
+        std::shared_ptr<const nv::Sampling> sampling;
+        bool measured = false;
+        {
+          nb::gil_scoped_release release;
+          sampling = cache.Get({ std::get<0>(key), std::get<1>(key), std::get<2>(key) }, xyz, nullptr, watch,
+            threads, &measured);
+        }
+        if (monitor)
+        {
+          monitor->RaisePending(); // Ctrl-C, or what a callback raised
+        }
+        return std::make_pair(std::const_pointer_cast<nv::Sampling>(sampling), measured);
+      },
+      "key"_a, "points"_a, "threads"_a = 0, "monitor"_a.none() = nb::none(),
+      "(sampling, measured): the sampling of the points that points() gives ((n, 3) float64, called only "
+      "to measure), measured on `threads` threads without the GIL unless the last measurement had the same "
+      "key (the points' object, modification time and count); None if the monitor stopped it.")
+    .def("TakeSeconds", &nv::SamplingCache::TakeSeconds,
+      "The seconds of the measurements since the last call (the filter's SamplingTime).");
+
+  m.def("InPanelWords", &nv::InPanelWords, "message"_a,
+    "The message with the properties' names as the labels of ParaView's panel (nv::InPanelWords).");
   m.def("TableInputError", &nv::TableInputError, "The error for a table given as input (nv::TableInputError).");
   m.def(
     "check_ply_file",
@@ -471,6 +509,13 @@ NB_MODULE(_core, m)
       "(points (n, 3) float64, normals (n, 3) float32, triangles (m, 3) int64), without a copy; the sink is "
       "empty afterwards.");
 
+  // Every result of nv::Results (the property table's RESULTS, NV_RESULTS).
+  nb::class_<nv::Results> results(m, "Results", "What the run chose (nv::Results): the filter's Get<Name> results.");
+  results.def(nb::init<>());
+#define NV_BIND_RESULT(Type, Name, Size) results.def_ro(#Name, &nv::Results::Name);
+  NV_RESULTS(NV_BIND_RESULT)
+#undef NV_BIND_RESULT
+
   nb::class_<nv::Outcome>(m, "Outcome", "What Reconstruction.Reconstruct made besides its arrays (nv::Outcome).")
     .def_ro("Done", &nv::Outcome::Done)
     .def_ro("Ran", &nv::Outcome::Ran)
@@ -480,6 +525,7 @@ NB_MODULE(_core, m)
     .def_ro("VolumeEnd", &nv::Outcome::VolumeEnd)
     .def_ro("DenseArrays", &nv::Outcome::DenseArrays)
     .def_ro("OutputSeconds", &nv::Outcome::OutputSeconds)
+    .def_ro("Chosen", &nv::Outcome::Chosen)
     .def_prop_ro(
       "Summary",
       [](const nv::Outcome& outcome) {

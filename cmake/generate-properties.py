@@ -109,8 +109,22 @@ def header(table):
         "#define NV_PANEL_LABELS(X) \\",
     ]
     rows = ["  X(%s, %s)" % (p.name, json.dumps(p.label)) for p in table.PROPERTIES]
+    lines += [row + " \\" for row in rows[:-1]] + [rows[-1], ""]
+    lines += [
+        "// NV_RESULTS(X) calls X(Type, Name, Size) for each result of a run (the",
+        "// table's RESULTS: a value the run chose, which the panel shows read-only):",
+        "// Type double, int or Text (a string), Size values. nv::Results declares its",
+        "// fields with it (nvReconstruct.h), the VTK filter its Get methods, the binding",
+        "// binds them.",
+        "#define NV_RESULTS(X) \\",
+    ]
+    rows = ["  X(%s, %s, %d)" % (result_type(r), r.name, r.size) for r in table.RESULTS]
     lines += [row + " \\" for row in rows[:-1]] + [rows[-1], "", "#endif", ""]
     return "\n".join(lines)
+
+
+def result_type(result):
+    return {float: "double", int: "int", str: "Text"}[result.kind]
 
 
 # --- ParaView: the proxy (Python/_servermanager.py, which the Python plugin uses too).
@@ -161,11 +175,14 @@ def stub(table):
             '        """Messages name the properties by their panel labels (the plugins set it)."""',
             "    def GetPanelLabelsInMessages(self) -> bool: ...",
             ]
-    for result in table.RESULTS:
+    for result in table.RESULTS:  # made by _filter.py from the same rows
         kind = result.kind.__name__
         if result.size > 1:
             kind = "Tuple[%s]" % ", ".join([kind] * result.size)
-        out.append("    def Get%s(self) -> %s: ..." % (result.name, kind))
+        doc = textwrap.fill(table.describe(result).replace("\\", "\\\\").replace('"', "'"), 96,
+                            subsequent_indent=" " * 8)
+        out.append("    def Get%s(self) -> %s:" % (result.name, kind))
+        out.append('        """%s"""' % doc)
     out += ["    def GetSamplingTime(self) -> float: ...",
             "    def GetSetupTime(self) -> float: ...",
             "    def GetEvolutionTime(self) -> float: ...",

@@ -10,7 +10,9 @@
 // pool when vtkSMPTools' backend is Sequential or STDThread: there it is
 // tested as the pool.
 #include "nvParallel.h"
+#include "nvReconstruct.h"
 #include "nvReconstruction.h"
+#include "nvSurface.h"
 #include "nvTestUtilities.h"
 
 #include <algorithm>
@@ -223,6 +225,36 @@ void TestRunThreads()
   NV_CHECK(phi[2] == phi[0]);
 }
 
+/// The usage block of nvReconstruct.h (on a coarser grid): the entry point
+/// makes the surface and the results in one thread scope; the triangles
+/// are the same for 1 and 3 threads.
+void TestEntryPoint()
+{
+  const double center[3] = { 0.3, -0.1, 0.2 };
+  const std::vector<double> xyz = nvtest::SpherePoints(3000, 0.5, center);
+  std::vector<nv::VertexId> triangles[2];
+  const int counts[2] = { 1, 3 };
+  for (int t = 0; t < 2; ++t)
+  {
+    nv::Settings settings;                       // the property table's defaults
+    settings.OffsetDistance = 0.1;               // l; 0: from the cloud's spacing
+    settings.OutputVolume = false;               // no dense phi (a VolumeRequest takes it)
+    settings.NumberOfThreads = counts[t];
+    nv::Reconstruction run(settings, nullptr, nullptr); // one process, no monitor
+    nv::SurfaceMesh surface;                     // or a sink into the caller's arrays
+    nv::Outcome outcome = nv::Reconstruct(run, xyz, nullptr, surface, nv::VolumeRequest(), false);
+    NV_CHECK(outcome.Done && outcome.Error.empty());
+    NV_CHECK(!surface.Triangles.empty());
+    NV_CHECK(outcome.Chosen.OffsetDistanceUsed == 0.1);
+    NV_CHECK(outcome.Chosen.SampleSpacingUsed == run.GetGrid().Spacing);
+    NV_CHECK(outcome.Chosen.GridDimensionsUsed[2] == static_cast<int>(run.GetGrid().Dims[2]));
+    NV_CHECK(outcome.Chosen.GridUsed == std::to_string(run.GetGrid().Dims[0]) + " x " +
+        std::to_string(run.GetGrid().Dims[1]) + " x " + std::to_string(run.GetGrid().Dims[2]));
+    triangles[t] = surface.Triangles;
+  }
+  NV_CHECK(triangles[1] == triangles[0]);
+}
+
 #ifndef _WIN32
 /// A child made by fork() after the pool started runs parallel loops too
 /// (it has none of its parent's threads).
@@ -256,6 +288,7 @@ int main()
   }
   TestReductions();
   TestRunThreads();
+  TestEntryPoint();
 #ifndef _WIN32
   if (OnPool())
   {

@@ -99,6 +99,12 @@ def _signatures(declaration):
                 return (out + ["%s Get%sMinValue()" % (kind_type, name), "%s Get%sMaxValue()" % (kind_type, name)],
                         "Set%s clamps to [%s, %s]." % (name, args[2], args[3]))
             return out, None
+        if kind == "vtkNarrowVolumeResultMacro":  # a row of NV_RESULTS (_results_declarations)
+            result_type, name, size = {"Text": "const char*"}.get(args[0], args[0]), args[1], int(args[2])
+            if size == 1:
+                return ["%s Get%s()" % (result_type, name)], None
+            return ["%s* Get%s()" % (result_type, name),
+                    "void Get%s(%s data[%d])" % (name, result_type, size)], None
         if kind == "vtkGetObjectMacro":
             return ["%s* Get%s()" % (args[1], name)], None
         return [], None  # vtkTypeMacro and the like: no method of this class's own
@@ -107,12 +113,24 @@ def _signatures(declaration):
     return [declaration], None
 
 
+def _results_declarations(macro):
+    """NV_RESULTS(macro) as the header expands it: macro(Type, Name, Size);
+    for each row of the property table's RESULTS (nvSettingsTable.h)."""
+    generator = _load("nv_generate_properties", os.path.join(SOURCE, "cmake", "generate-properties.py"))
+    table = generator.load_module("narrowvolume_properties", generator.TABLE)
+    return ["%s(%s, %s, %d);" % (macro, generator.result_type(r), r.name, r.size) for r in table.RESULTS]
+
+
 def _declarations(lines):
     """Whole declarations (joined over lines) from a list of code lines."""
     out, current = [], ""
     for line in lines:
         code = line.split("//")[0].strip()
         if not code:
+            continue
+        results = re.match(r"NV_RESULTS\((\w+)\)$", code)
+        if results:
+            out += _results_declarations(results.group(1))
             continue
         current = (current + " " + code).strip()
         if current.endswith(";") or current.endswith("}"):

@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
 // SPDX-License-Identifier: BSD-3-Clause
 // Where a run's time goes: the wall-clock seconds of its stages, in the
-// order they ran, for the field data "StageSeconds" (nvOutputs.h), the
+// order they ran, for the field data "StageSeconds" (nvReconstruct.h), the
 // command line's --timings and the stage benchmark (benchmarks/stages.py).
 #ifndef nvStageTimes_h
 #define nvStageTimes_h

@@ -110,6 +110,28 @@ Settings ResolveAutomatic(const Settings& settings, const SamplingStatistics& sa
   return values;
 }
 
+/// The scheme's parameters (nvParameters.h) from the settings with the
+/// automatic values resolved: the properties of the same names, and h (0
+/// or less when MaximumDimension gives none). The one place they are copied.
+Parameters SchemeParameters(const Settings& settings, const double bounds[6])
+{
+  Parameters parameters;
+  parameters.OffsetDistance = settings.OffsetDistance;
+  parameters.XiCells = settings.XiCells;
+  parameters.EpsilonCells = settings.EpsilonCells;
+  parameters.TimeStep = settings.TimeStep;
+  parameters.MaximumNumberOfIterations = settings.MaximumNumberOfIterations;
+  parameters.ConvergenceTolerance = settings.ConvergenceTolerance;
+  parameters.GaussSeidelTolerance = settings.GaussSeidelTolerance;
+  parameters.Domain = settings.Domain;
+  parameters.EdgeStoppingFunction = settings.EdgeStoppingFunction;
+  parameters.PreserveOffset = settings.PreserveOffset;
+  parameters.Spacing = settings.SampleSpacing > 0.0
+    ? settings.SampleSpacing
+    : SpacingForMaximumDimension(bounds, settings.OffsetDistance, settings.XiCells, settings.MaximumDimension);
+  return parameters;
+}
+
 /// The brick layers along z of a grid (nvPartition.h splits them).
 std::int64_t BrickLayers(const Grid& grid)
 {
@@ -195,20 +217,8 @@ Plan MakePlan(const Settings& chosen, const double bounds[6], const SamplingStat
     return plan;
   }
 
+  plan.Scheme = SchemeParameters(settings, bounds);
   Parameters& parameters = plan.Scheme;
-  parameters.OffsetDistance = settings.OffsetDistance;
-  parameters.XiCells = settings.XiCells;
-  parameters.EpsilonCells = settings.EpsilonCells;
-  parameters.TimeStep = settings.TimeStep;
-  parameters.MaximumNumberOfIterations = settings.MaximumNumberOfIterations;
-  parameters.ConvergenceTolerance = settings.ConvergenceTolerance;
-  parameters.GaussSeidelTolerance = settings.GaussSeidelTolerance;
-  parameters.Domain = settings.Domain;
-  parameters.EdgeStoppingFunction = settings.EdgeStoppingFunction;
-  parameters.PreserveOffset = settings.PreserveOffset;
-  parameters.Spacing = settings.SampleSpacing > 0.0
-    ? settings.SampleSpacing
-    : SpacingForMaximumDimension(bounds, settings.OffsetDistance, settings.XiCells, settings.MaximumDimension);
   if (!(parameters.Spacing > 0.0) || !std::isfinite(parameters.Spacing))
   {
     error << "Cannot derive a grid spacing from MaximumDimension " << settings.MaximumDimension
@@ -292,7 +302,7 @@ bool Reconstruction::Run(std::vector<double> xyz, std::shared_ptr<const Sampling
 
 bool Reconstruction::RunSteps(std::vector<double> xyz, std::shared_ptr<const Sampling> measured)
 {
-  // The steps of this file's header, each false when the run stops.
+  // Steps 1-6 of nvReconstruct.h's list, each false when the run stops.
   double bounds[6];
   return this->ChooseDevice() && this->CheckPoints(xyz, bounds) && this->PlanGrid(xyz, bounds, std::move(measured)) &&
     this->GatherPoints(xyz) && this->BuildBand(std::move(xyz)) && this->Evolve() &&

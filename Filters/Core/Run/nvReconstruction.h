@@ -1,33 +1,12 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
 // SPDX-License-Identifier: BSD-3-Clause
-// The whole run of the narrow volume method, in the order of the paper's
-// section 3, for one process or for each process of a distributed run:
-//
-//   1. check the user's settings and the points (a message says what to change);
-//   2. the points' spacing (nvSampling.h), and the grid around the points'
-//      box (all processes' box): offset l and spacing h given, from the
-//      number of cells along the longest side, or chosen from the spacing
-//      (MakePlan);
-//   3. in a distributed run, the slab of brick layers this process owns
-//      (nvPartition.h), balanced by the points per layer, and the points
-//      within reach of it, moved here from the other processes; then the
-//      points that bridge the holes of the sampling (nvGapClosing.h), and
-//      the holes left open;
-//   4. the memory budget: the dense output and the per-brick tables before
-//      anything large exists, the band once its size is known;
-//   5. the truncated distance (eq. 6, 7) and the narrow band (steps 1-3),
-//      and, on request, the dense arrays of the output from the same
-//      distances (nvVolume.h);
-//   6. the time steps of the operator-split scheme (eq. 10-12), on the CPU
-//      or, with Device GPU, by the device back end (nvDeviceEvolution.h),
-//      then the
-//      band's phi into the dense arrays, and whether each hole left open
-//      pierces the evolved shell (GapReport);
-//   7. the phi = 0 surface, from the band (ExtractSurface, nvSurface.h; with
-//      Device GPU by the device back end, nvDeviceSurface.h).
-//
-// The VTK filter (vtkNarrowVolumeReconstruction) only converts: the input's
-// points in, the image and the surface out.
+// nv::Reconstruction, the run of the narrow volume method for one process
+// or for each process of a distributed run: steps 1-6 of the steps that
+// nvReconstruct.h lists (Run: the checks, the grid, the slab and the points,
+// the memory budget, the distance and the band, the time steps) and step
+// 7's surface from the band (ExtractSurface). nv::Reconstruct
+// (nvReconstruct.h), the core's entry point, calls it and makes the
+// outputs; the filters call nv::Reconstruct.
 #ifndef nvReconstruction_h
 #define nvReconstruction_h
 
@@ -149,7 +128,7 @@ public:
   std::int64_t NumberOfBandNodes() const { return this->BandNodes; }
   const std::vector<double>& RelativeChanges() const { return this->Changes; }
   /// The seconds of the run's stages, in the order they ran (the outputs
-  /// add theirs, nvOutputs.h).
+  /// add theirs, nvReconstruct.h).
   const StageTimes& GetStageTimes() const { return this->Stages; }
   StageTimes& GetStageTimes() { return this->Stages; }
   double SetupSeconds() const { return this->SetupTime; }
@@ -186,7 +165,7 @@ public:
 
 private:
   bool RunSteps(std::vector<double> xyz, std::shared_ptr<const Sampling> measured);
-  // The steps of Run, in order (this file's header); each returns false when the run stops.
+  // The steps of Run, in order (nvReconstruct.h's list); each returns false when the run stops.
   bool CheckPoints(const std::vector<double>& xyz, double bounds[6]);
   /// Whether double precision resolves the cloud at its distance from the origin.
   bool CheckPrecision(const double bounds[6], std::int64_t points);

@@ -89,4 +89,16 @@
   X(DrainHoleAxis, "Drain Hole Axis") \
   X(DrainHoleDiameter, "Drain Hole Diameter")
 
+// NV_RESULTS(X) calls X(Type, Name, Size) for each result of a run (the
+// table's RESULTS: a value the run chose, which the panel shows read-only):
+// Type double, int or Text (a string), Size values. nv::Results declares its
+// fields with it (nvReconstruct.h), the VTK filter its Get methods, the binding
+// binds them.
+#define NV_RESULTS(X) \
+  X(double, OffsetDistanceUsed, 1) \
+  X(double, ClosingRadiusUsed, 1) \
+  X(double, SampleSpacingUsed, 1) \
+  X(Text, GridUsed, 1) \
+  X(int, GridDimensionsUsed, 3)
+
 #endif

@@ -117,6 +117,9 @@ def test_stub_lists_every_property():
         words = " ".join(ast.get_docstring(methods["Set" + prop.name]).split())
         expected = " ".join(_properties.describe(prop).replace('"', "'").split())  # the stub's quotes
         assert words == expected, prop.name
+    for result in _properties.RESULTS:
+        words = " ".join(ast.get_docstring(methods["Get" + result.name]).split())
+        assert words == " ".join(_properties.describe(result).replace('"', "'").split()), result.name
     passes = {"FillInputPortInformation", "FillOutputPortInformation", "RequestInformation", "RequestUpdateExtent",
               "RequestData"}
     own = {name for name, value in vars(narrowvolume.vtkNarrowVolumeReconstruction).items()
@@ -150,6 +153,35 @@ def test_property_methods(prop):
         assert getattr(narrowvolume.vtkNarrowVolumeReconstruction, constant) == value
         getattr(f, "Set%sTo%s" % (prop.name, suffix))()
         assert getattr(f, "Get" + prop.name)() == value
+
+
+def test_results_from_the_table():
+    """Each row of RESULTS is a Get method of the filter: zero (or "")
+    before a run, what the run chose after it, and zero again after a run
+    that failed."""
+    f = narrowvolume.vtkNarrowVolumeReconstruction()
+    zero = {float: 0.0, int: 0, str: ""}
+
+    def results():
+        return {r.name: getattr(f, "Get" + r.name)() for r in _properties.RESULTS}
+
+    for result in _properties.RESULTS:
+        value = getattr(f, "Get" + result.name)()
+        assert value == (tuple([zero[result.kind]] * result.size) if result.size > 1 else zero[result.kind])
+    f.SetInputData(nvclouds.cloud(SPHERE))
+    f.SetOffsetDistance(0.1)
+    f.SetSampleSpacing(0.025)
+    f.Update()
+    chosen = results()
+    print(chosen)
+    assert chosen["OffsetDistanceUsed"] == 0.1 and chosen["SampleSpacingUsed"] == 0.025
+    assert chosen["ClosingRadiusUsed"] == pytest.approx(0.3)
+    assert tuple(chosen["GridDimensionsUsed"]) == f.GetVolumeOutput().GetDimensions()
+    assert chosen["GridUsed"] == " x ".join(str(n) for n in chosen["GridDimensionsUsed"])
+    f.SetXiCells(0.5)  # refused: the run fails
+    f.AddObserver("ErrorEvent", lambda *args: None)
+    f.Update()
+    assert results()["GridUsed"] == "" and results()["OffsetDistanceUsed"] == 0.0
 
 
 def test_setter_marks_modified():

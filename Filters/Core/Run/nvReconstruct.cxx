@@ -1,7 +1,8 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
 // SPDX-License-Identifier: BSD-3-Clause
-#include "nvOutputs.h"
+#include "nvReconstruct.h"
 
+#include "nvCommunicator.h"
 #include "nvParallel.h"
 #include "nvPrintPart.h"
 #include "nvSheets.h"
@@ -9,9 +10,12 @@
 #include "nvSurfaceField.h"
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <sstream>
+#include <utility>
 
 namespace nv
 {
@@ -58,13 +62,9 @@ bool ContourDense(
   const Reconstruction& run, float* phi, SurfaceSink& sink, Monitor* monitor, std::int64_t& cavities)
 {
   const Grid& grid = run.GetGrid();
-  bool done = false;
-  WithThreads(run.GetSettings().NumberOfThreads, [&]() {
-    cavities = KeepSheets(grid, phi, run.GetSettings().Sheets);
-    const DenseField field(grid, phi, 0, grid.Dims[2], run.GetParameters());
-    done = ContourBricks(grid, field, sink, 0, -1, monitor);
-  });
-  return done;
+  cavities = KeepSheets(grid, phi, run.GetSettings().Sheets);
+  const DenseField field(grid, phi, 0, grid.Dims[2], run.GetParameters());
+  return ContourBricks(grid, field, sink, 0, -1, monitor);
 }
 
 /// Whether the chosen sheets left nothing because the shell encloses no
@@ -306,9 +306,76 @@ std::vector<SummaryArray> RunSummary(const Reconstruction& run, const RemovedPie
   };
 }
 
-/// Steps 3 and 4: the surface of this process's piece into the sink, and
-/// its small pieces removed. Returns false if the monitor stopped it.
+/// The run's results (the property table's RESULTS): one line per result.
+Results ResultsOf(const Reconstruction& run)
+{
+  const Grid& grid = run.GetGrid();
+  Results chosen;
+  chosen.OffsetDistanceUsed = run.GetParameters().OffsetDistance;
+  chosen.ClosingRadiusUsed = run.GetPlan().ClosingRadius;
+  chosen.SampleSpacingUsed = grid.Spacing;
+  chosen.GridUsed = std::to_string(grid.Dims[0]) + " x " + std::to_string(grid.Dims[1]) + " x " +
+    std::to_string(grid.Dims[2]);
+  chosen.GridDimensionsUsed = { static_cast<int>(grid.Dims[0]), static_cast<int>(grid.Dims[1]),
+    static_cast<int>(grid.Dims[2]) };
+  return chosen;
+}
+
+/// Step 7, printing: the part (nvPrintPart.h), from a copy of the dense phi
+/// whose cavities KeepSheets fills. Returns false if the monitor stopped it.
+bool MakePrintPart(Reconstruction& run, SurfaceSink& sink, const VolumeArrays& dense, Outcome& outcome)
+{
+  const Settings& settings = run.GetSettings();
+  const Grid& grid = run.GetGrid();
+  std::vector<float> outer(dense.Phi, dense.Phi + grid.NumberOfNodes());
+  const bool done = run.GetStageTimes().Time("part", [&]() {
+    KeepSheets(grid, outer.data(), Sheets::Outer);
+    return MakePart(grid, run.GetParameters(), outer.data(), settings.WallThickness, settings.MinimumCavityVolume,
+      settings.NumberOfDrainHoles, settings.DrainHoleDiameter, settings.DrainHoleAxis, sink, run.GetMonitor(),
+      outcome.Print);
+  });
+  outcome.Printed = done;
+  outcome.Removed.Pieces = outcome.Print.RemovedPieces;
+  outcome.Removed.Voids = outcome.Print.RemovedCavities;
+  outcome.Removed.Cavities = outcome.Print.KeptCavities;
+  return done;
+}
+
+/// Step 7, the shell: the sheets the settings keep, from the band or from a
+/// copy of the dense phi. Returns false if the monitor stopped it.
 /// noInnerSheet: a warning said why the surface is empty.
+bool MakeShell(Reconstruction& run, SurfaceSink& sink, const VolumeArrays& dense, bool distributed,
+  Outcome& outcome, bool& noInnerSheet)
+{
+  const Settings& settings = run.GetSettings();
+  if (!SurfaceFromDenseCopy(settings, distributed))
+  {
+    if (settings.Sheets != Sheets::Both)
+    {
+      outcome.Warnings.push_back(OneSheetDistributedWarning());
+    }
+    return run.GetStageTimes().Time("surface", [&]() { return run.ExtractSurface(sink); });
+  }
+  // From a copy of the dense phi (phi stays phi), which KeepSheets rewrites.
+  if (!settings.OutputVolume)
+  {
+    outcome.Warnings.push_back(OneSheetNeedsGridWarning());
+  }
+  std::vector<float> phi(dense.Phi, dense.Phi + run.GetGrid().NumberOfNodes());
+  std::int64_t cavities = 0;
+  const bool done = run.GetStageTimes().Time(
+    "surface", [&]() { return ContourDense(run, phi.data(), sink, run.GetMonitor(), cavities); });
+  noInnerSheet = NoInnerSheet(settings, cavities);
+  if (noInnerSheet)
+  {
+    outcome.Warnings.push_back(NoInnerSheetWarning());
+  }
+  return done;
+}
+
+/// Steps 7 and 8: the surface of this process's piece into the sink, and
+/// its small pieces removed (phi follows in the same regions). Returns false
+/// if the monitor stopped it. noInnerSheet: as MakeShell's.
 bool MakeSurface(Reconstruction& run, SurfaceSink& sink, const VolumeArrays& dense, bool distributed,
   Outcome& outcome, bool& noInnerSheet)
 {
@@ -318,70 +385,216 @@ bool MakeSurface(Reconstruction& run, SurfaceSink& sink, const VolumeArrays& den
   {
     monitor->Stage(OutputStage[0], OutputStage[1]);
   }
-  bool done = true;
-  if (Printing(settings))
-  {
-    // The part, from a copy of the dense phi whose cavities KeepSheets fills.
-    const Grid& grid = run.GetGrid();
-    std::vector<float> outer(dense.Phi, dense.Phi + grid.NumberOfNodes());
-    done = run.GetStageTimes().Time("part", [&]() {
-      bool made = false;
-      WithThreads(settings.NumberOfThreads, [&]() {
-        KeepSheets(grid, outer.data(), Sheets::Outer);
-        made = MakePart(grid, run.GetParameters(), outer.data(), settings.WallThickness,
-          settings.MinimumCavityVolume, settings.NumberOfDrainHoles, settings.DrainHoleDiameter, settings.DrainHoleAxis,
-          sink, monitor,
-          outcome.Print);
-      });
-      return made;
-    });
-    outcome.Printed = done;
-    outcome.Removed.Pieces = outcome.Print.RemovedPieces;
-    outcome.Removed.Voids = outcome.Print.RemovedCavities;
-    outcome.Removed.Cavities = outcome.Print.KeptCavities;
-    run.ReleaseBand();
-    return done && !(monitor && monitor->Aborted());
-  }
-  if (!SurfaceFromDenseCopy(settings, distributed))
-  {
-    if (settings.Sheets != Sheets::Both)
-    {
-      outcome.Warnings.push_back(OneSheetDistributedWarning());
-    }
-    done = run.GetStageTimes().Time("surface", [&]() { return run.ExtractSurface(sink); });
-  }
-  else
-  {
-    // From a copy of the dense phi (phi stays phi), which KeepSheets rewrites.
-    if (!settings.OutputVolume)
-    {
-      outcome.Warnings.push_back(OneSheetNeedsGridWarning());
-    }
-    const std::int64_t nodes = run.GetGrid().NumberOfNodes();
-    std::vector<float> phi(dense.Phi, dense.Phi + nodes);
-    std::int64_t cavities = 0;
-    done = run.GetStageTimes().Time("surface", [&]() { return ContourDense(run, phi.data(), sink, monitor, cavities); });
-    noInnerSheet = NoInnerSheet(settings, cavities);
-    if (noInnerSheet)
-    {
-      outcome.Warnings.push_back(NoInnerSheetWarning());
-    }
-  }
+  const bool printing = Printing(settings);
+  const bool done = printing ? MakePrintPart(run, sink, dense, outcome)
+                             : MakeShell(run, sink, dense, distributed, outcome, noInnerSheet);
   run.ReleaseBand(); // the surface is made: what follows needs neither
   const bool stopped = monitor && monitor->Aborted();
-  if (done && settings.RemoveSmallPieces && !distributed && !stopped)
+  if (done && !printing && settings.RemoveSmallPieces && !distributed && !stopped)
   {
-    // The surface's small parts go, and phi follows in the same regions.
     const auto start = StageTimes::Clock::now();
-    WithThreads(settings.NumberOfThreads, [&]() {
-      outcome.Removed = RemoveSmallPieces(sink, run.GetParameters().OffsetDistance, run.GetGrid(),
-        outcome.DenseArrays ? dense.Phi : nullptr, outcome.VolumeBegin, outcome.VolumeEnd - outcome.VolumeBegin);
-    });
+    outcome.Removed = RemoveSmallPieces(sink, run.GetParameters().OffsetDistance, run.GetGrid(),
+      outcome.DenseArrays ? dense.Phi : nullptr, outcome.VolumeBegin, outcome.VolumeEnd - outcome.VolumeBegin);
     run.GetStageTimes().Add("small pieces", start);
   }
   return done && !(monitor && monitor->Aborted());
 }
+
+/// Step 9, on the first process: the warnings about the whole result, in
+/// the order they are given. surfacePoints: all processes'; explained: a
+/// warning said already why the surface is empty.
+void WarnAboutResult(const Reconstruction& run, bool distributed, double surfacePoints, bool explained,
+  Outcome& outcome)
+{
+  const Settings& settings = run.GetSettings();
+  const Plan& plan = run.GetPlan();
+  const double offset = run.GetParameters().OffsetDistance;
+  if (plan.Diagonal > 0.0 && offset > plan.Diagonal)
+  {
+    outcome.Warnings.push_back(OffsetOverCloudWarning(offset, plan.Diagonal));
+  }
+  if (plan.CoarsenedFrom > 0.0)
+  {
+    outcome.Warnings.push_back(CoarsenedGridWarning(run));
+  }
+  if (offset < LeastCellsPerOffset * run.GetGrid().Spacing)
+  {
+    outcome.Warnings.push_back(CoarseGridWarning(run));
+  }
+  for (std::string& warning : GapWarnings(run.GetGaps(), plan.ClosingRadius, offset))
+  {
+    outcome.Warnings.push_back(std::move(warning));
+  }
+  // The cavities are counted with the small pieces, on the whole surface
+  // of both sheets.
+  const bool counted =
+    settings.RemoveSmallPieces && !distributed && settings.Sheets == Sheets::Both && !Printing(settings);
+  if (counted && surfacePoints > 0 && outcome.Removed.Cavities == 0 && plan.Diagonal > 0.0 &&
+    !(offset > plan.Diagonal))
+  {
+    outcome.Warnings.push_back(OpenShellWarning(run.GetGaps(), plan.ClosingRadius, offset));
+  }
+  if (surfacePoints == 0 && Printing(settings))
+  {
+    outcome.Warnings.push_back(EmptyPartWarning());
+  }
+  else if (surfacePoints == 0 && !explained)
+  {
+    outcome.Warnings.push_back(EmptySurfaceWarning(offset, run.GetGrid().Spacing));
+  }
+}
+
+/// Step 9: the figures of the part to print, in the volume's field data
+/// before StageSeconds.
+std::vector<SummaryArray> PartSummary(const Settings& settings, const PrintReport& print)
+{
+  return {
+    { "WallThickness", SummaryArray::Double, 1, { settings.WallThickness } },
+    { "MaterialVolume", SummaryArray::Double, 1, { print.MaterialVolume } },
+    { "CavityVolume", SummaryArray::Double, 1, { print.CavityVolume } },
+    { "MinimumWallThickness", SummaryArray::Double, 1, { print.MinimumWallThickness } },
+    { "KeptCavities", SummaryArray::Double, 1, { static_cast<double>(print.KeptCavities) } },
+    { "RemovedCavities", SummaryArray::Double, 1, { static_cast<double>(print.RemovedCavities) } },
+    { "MinimumCavityVolume", SummaryArray::Double, 1, { print.MinimumCavityVolume } },
+    { "PartBounds", SummaryArray::Double, 6, { print.Bounds.begin(), print.Bounds.end() } },
+    { "DrainHoles", SummaryArray::Double, 1, { static_cast<double>(print.DrainHoles) } },
+  };
+}
+
+/// Steps 1-9 (Reconstruct, in its thread scope).
+Outcome ReconstructSteps(Reconstruction& run, std::vector<double> xyz, std::shared_ptr<const Sampling> sampling,
+  SurfaceSink& sink, const VolumeRequest& volume, bool distributed)
+{
+  Outcome outcome;
+  if (Printing(run.GetSettings()) && distributed)
+  {
+    outcome.Error = PrintDistributedError();
+    return outcome;
+  }
+  // Step 5's dense arrays, which the run fills: for output 0, or for
+  // keeping one sheet (KeepSheets works on the whole grid, so not when
+  // distributed) or printing.
+  VolumeArrays dense;
+  if (NeedsDenseVolume(run.GetSettings(), distributed))
+  {
+    const std::int64_t ghosts = run.GetSettings().OutputVolume ? volume.GhostLayers : 0;
+    run.RequestVolume(ghosts, [&](std::int64_t kBegin, std::int64_t kEnd) {
+      dense = volume.Allocate(kBegin, kEnd);
+      outcome.DenseArrays = true;
+      return dense;
+    });
+  }
+  // Steps 1-6.
+  if (!run.Run(std::move(xyz), std::move(sampling)))
+  {
+    outcome.Error = run.Error();
+    return outcome;
+  }
+  outcome.Ran = true;
+  outcome.Chosen = ResultsOf(run);
+  // Steps 7 and 8: the surface of this process's piece, its small pieces removed.
+  const auto start = std::chrono::steady_clock::now();
+  bool done = true;
+  bool explained = false;
+  if (!run.EmptyPiece())
+  {
+    outcome.VolumeBegin = outcome.DenseArrays ? run.VolumeBegin() : run.PieceBegin();
+    outcome.VolumeEnd = outcome.DenseArrays ? run.VolumeEnd() : run.PieceEnd();
+    done = MakeSurface(run, sink, dense, distributed, outcome, explained);
+  }
+  outcome.OutputSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  // Step 9. Every process agrees whether the run is done, whatever stage it
+  // stopped in; the first speaks for the whole result.
+  outcome.Done = !run.Anywhere(!done);
+  const double surfacePoints = run.SumAll(static_cast<double>(sink.View().NumberOfPoints));
+  if (!outcome.Done)
+  {
+    return outcome;
+  }
+  if (run.FirstProcess())
+  {
+    WarnAboutResult(run, distributed, surfacePoints, explained, outcome);
+  }
+  outcome.Summary = RunSummary(run, outcome.Removed);
+  if (outcome.Printed)
+  {
+    const std::vector<SummaryArray> part = PartSummary(run.GetSettings(), outcome.Print);
+    outcome.Summary.insert(outcome.Summary.end() - 1, part.begin(), part.end()); // StageSeconds stays last
+  }
+  return outcome;
+}
 } // namespace
+
+std::shared_ptr<const Sampling> SamplingCache::Get(const Key& key,
+  const std::function<std::vector<double>()>& points, Communicator* communicator, Monitor& monitor, int threads,
+  bool* measured)
+{
+  bool stale = !this->Measured || !(key == this->MeasuredKey) || (communicator != nullptr) != this->MeasuredShared;
+  if (communicator)
+  {
+    stale = communicator->MaxAll(stale ? 1.0 : 0.0) > 0.0; // all measure, or none
+  }
+  if (measured)
+  {
+    *measured = stale;
+  }
+  if (!stale)
+  {
+    return this->Measured;
+  }
+  this->Measured = nullptr; // until this measurement is complete
+  struct Clock // the seconds count even when the measurement throws
+  {
+    double& Seconds;
+    const std::chrono::steady_clock::time_point Start = std::chrono::steady_clock::now();
+    ~Clock() { this->Seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - this->Start).count(); }
+  } clock{ this->Unreported };
+  monitor.Stage(0.0, SamplingStage);
+  auto sampling = std::make_shared<Sampling>();
+  bool complete = false;
+  WithThreads(threads, [&]() { complete = sampling->Measure(points(), communicator, &monitor); });
+  if (!complete)
+  {
+    return nullptr;
+  }
+  this->Measured = sampling;
+  this->MeasuredKey = key;
+  this->MeasuredShared = communicator != nullptr;
+  return sampling;
+}
+
+double SamplingCache::TakeSeconds()
+{
+  const double seconds = this->Unreported;
+  this->Unreported = 0.0;
+  return seconds;
+}
+
+std::string InPanelWords(std::string message)
+{
+  static const std::pair<const char*, const char*> labels[] = {
+#define NV_LABEL(Name, Label) { #Name, Label },
+    NV_PANEL_LABELS(NV_LABEL)
+#undef NV_LABEL
+  };
+  const auto inWord = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  for (const auto& label : labels)
+  {
+    const std::string name = label.first;
+    for (std::size_t at = message.find(name); at != std::string::npos; at = message.find(name, at))
+    {
+      const std::size_t end = at + name.size();
+      if ((at > 0 && inWord(message[at - 1])) || (end < message.size() && inWord(message[end])))
+      {
+        at = end;
+        continue;
+      }
+      message.replace(at, name.size(), label.second);
+      at += std::strlen(label.second);
+    }
+  }
+  return message;
+}
 
 std::string TableInputError()
 {
@@ -393,106 +606,11 @@ std::string TableInputError()
 Outcome Reconstruct(Reconstruction& run, std::vector<double> xyz, std::shared_ptr<const Sampling> sampling,
   SurfaceSink& sink, const VolumeRequest& volume, bool distributed)
 {
+  // One thread scope for the whole call (the run's own, nested, has the same count).
   Outcome outcome;
-  if (Printing(run.GetSettings()) && distributed)
-  {
-    outcome.Error = PrintDistributedError();
-    return outcome;
-  }
-  // 1. The dense arrays, filled by the run: for output 0, or for keeping
-  // one sheet (KeepSheets works on the whole grid, so not when distributed).
-  VolumeArrays dense;
-  if (NeedsDenseVolume(run.GetSettings(), distributed))
-  {
-    const std::int64_t ghosts = run.GetSettings().OutputVolume ? volume.GhostLayers : 0;
-    run.RequestVolume(ghosts, [&](std::int64_t kBegin, std::int64_t kEnd) {
-      dense = volume.Allocate(kBegin, kEnd);
-      outcome.DenseArrays = true;
-      return dense;
-    });
-  }
-  // 2. Steps 1-6.
-  if (!run.Run(std::move(xyz), std::move(sampling)))
-  {
-    outcome.Error = run.Error();
-    return outcome;
-  }
-  outcome.Ran = true;
-  // 3, 4. The surface of this process's piece, its small pieces removed.
-  const auto start = std::chrono::steady_clock::now();
-  bool done = true;
-  bool explained = false;
-  if (!run.EmptyPiece())
-  {
-    outcome.VolumeBegin = outcome.DenseArrays ? run.VolumeBegin() : run.PieceBegin();
-    outcome.VolumeEnd = outcome.DenseArrays ? run.VolumeEnd() : run.PieceEnd();
-    done = MakeSurface(run, sink, dense, distributed, outcome, explained);
-  }
-  outcome.OutputSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  // 5. Every process agrees whether the run is done, whatever stage it
-  // stopped in; the first speaks for the whole result.
-  outcome.Done = !run.Anywhere(!done);
-  const double surfacePoints = run.SumAll(static_cast<double>(sink.View().NumberOfPoints));
-  if (!outcome.Done)
-  {
-    return outcome;
-  }
-  if (run.FirstProcess())
-  {
-    const Settings& settings = run.GetSettings();
-    const Plan& plan = run.GetPlan();
-    const double offset = run.GetParameters().OffsetDistance;
-    if (plan.Diagonal > 0.0 && offset > plan.Diagonal)
-    {
-      outcome.Warnings.push_back(OffsetOverCloudWarning(offset, plan.Diagonal));
-    }
-    if (plan.CoarsenedFrom > 0.0)
-    {
-      outcome.Warnings.push_back(CoarsenedGridWarning(run));
-    }
-    if (offset < LeastCellsPerOffset * run.GetGrid().Spacing)
-    {
-      outcome.Warnings.push_back(CoarseGridWarning(run));
-    }
-    for (std::string& warning : GapWarnings(run.GetGaps(), plan.ClosingRadius, offset))
-    {
-      outcome.Warnings.push_back(std::move(warning));
-    }
-    // The cavities are counted with the small pieces, on the whole surface
-    // of both sheets.
-    const bool counted =
-      settings.RemoveSmallPieces && !distributed && settings.Sheets == Sheets::Both && !Printing(settings);
-    if (counted && surfacePoints > 0 && outcome.Removed.Cavities == 0 &&
-      plan.Diagonal > 0.0 && !(offset > plan.Diagonal))
-    {
-      outcome.Warnings.push_back(OpenShellWarning(run.GetGaps(), plan.ClosingRadius, offset));
-    }
-    if (surfacePoints == 0 && Printing(settings))
-    {
-      outcome.Warnings.push_back(EmptyPartWarning());
-    }
-    else if (surfacePoints == 0 && !explained)
-    {
-      outcome.Warnings.push_back(EmptySurfaceWarning(offset, run.GetGrid().Spacing));
-    }
-  }
-  outcome.Summary = RunSummary(run, outcome.Removed);
-  if (outcome.Printed)
-  {
-    const PrintReport& print = outcome.Print;
-    const std::vector<SummaryArray> part = {
-      { "WallThickness", SummaryArray::Double, 1, { run.GetSettings().WallThickness } },
-      { "MaterialVolume", SummaryArray::Double, 1, { print.MaterialVolume } },
-      { "CavityVolume", SummaryArray::Double, 1, { print.CavityVolume } },
-      { "MinimumWallThickness", SummaryArray::Double, 1, { print.MinimumWallThickness } },
-      { "KeptCavities", SummaryArray::Double, 1, { static_cast<double>(print.KeptCavities) } },
-      { "RemovedCavities", SummaryArray::Double, 1, { static_cast<double>(print.RemovedCavities) } },
-      { "MinimumCavityVolume", SummaryArray::Double, 1, { print.MinimumCavityVolume } },
-      { "PartBounds", SummaryArray::Double, 6, { print.Bounds.begin(), print.Bounds.end() } },
-      { "DrainHoles", SummaryArray::Double, 1, { static_cast<double>(print.DrainHoles) } },
-    };
-    outcome.Summary.insert(outcome.Summary.end() - 1, part.begin(), part.end()); // StageSeconds stays last
-  }
+  WithThreads(run.GetSettings().NumberOfThreads, [&]() {
+    outcome = ReconstructSteps(run, std::move(xyz), std::move(sampling), sink, volume, distributed);
+  });
   return outcome;
 }
 
