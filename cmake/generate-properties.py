@@ -47,14 +47,16 @@ number = SERVERMANAGER_MODULE.number
 
 
 def write(path, text):
-    """Writes text unless the file already holds it (so that builds do not redo what depends on it)."""
+    """Writes text unless the file already holds it (so that builds do not redo what depends on it).
+    Whether it wrote."""
     if os.path.exists(path):
         with open(path, encoding="utf-8") as old:
             if old.read() == text:
-                return
+                return False
     os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
     with open(path, "w", encoding="utf-8") as new:
         new.write(text)
+    return True
 
 
 # --- The core: NV_SETTINGS(X), one X(Type, Name, Default) per property.
@@ -343,8 +345,14 @@ def main():
                       "    python3 cmake/generate-properties.py --header %s" % (args.header, args.header))
                 return 1
         print("generate-properties: %s is the property table's (%d properties)" % (args.header, len(table.PROPERTIES)))
-    elif args.header:
-        write(args.header, header(table))
+    elif args.header and write(args.header, header(table)):
+        # VTK's wrappers read the filter's header, which expands the table's
+        # macros (NV_SETTINGS, NV_RESULTS), but their build rules know only
+        # that header: touching it makes the next build wrap the class again.
+        vtk_header = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Filters",
+                                  "vtkNarrowVolumeReconstruction.h")
+        if os.path.exists(vtk_header):
+            os.utime(vtk_header)
     if args.xml:
         write(args.xml, xml(table))
     if args.markdown:

@@ -14,6 +14,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <iomanip>
 #include <sstream>
 #include <utility>
 
@@ -321,6 +322,19 @@ Results ResultsOf(const Reconstruction& run)
   return chosen;
 }
 
+/// The part's size against the cloud's: "0.836 x 0.996 x 0.749 (the cloud
+/// 0.838 x 0.998 x 0.753)", 4 significant digits.
+std::string PartSize(const double part[6], const double cloud[6])
+{
+  auto size = [](const double bounds[6]) {
+    std::ostringstream text;
+    text << std::setprecision(4) << bounds[1] - bounds[0] << " x " << bounds[3] - bounds[2] << " x "
+         << bounds[5] - bounds[4];
+    return text.str();
+  };
+  return size(part) + " (the cloud " + size(cloud) + ")";
+}
+
 /// Step 7, printing: the part (nvPrintPart.h), from a copy of the dense phi
 /// whose cavities KeepSheets fills. Returns false if the monitor stopped it.
 bool MakePrintPart(Reconstruction& run, SurfaceSink& sink, const VolumeArrays& dense, Outcome& outcome)
@@ -335,6 +349,7 @@ bool MakePrintPart(Reconstruction& run, SurfaceSink& sink, const VolumeArrays& d
       outcome.Print);
   });
   outcome.Printed = done;
+  outcome.Chosen.PartSizeUsed = PartSize(outcome.Print.Bounds.data(), run.GetPlan().PointsBounds.data());
   outcome.Removed.Pieces = outcome.Print.RemovedPieces;
   outcome.Removed.Voids = outcome.Print.RemovedCavities;
   outcome.Removed.Cavities = outcome.Print.KeptCavities;

@@ -248,6 +248,7 @@ Plan MakePlan(const Settings& chosen, const double bounds[6], const SamplingStat
   plan.TheGrid = MakeGrid(bounds, parameters.Spacing, padding);
   plan.Diagonal = std::sqrt(std::pow(bounds[1] - bounds[0], 2) + std::pow(bounds[3] - bounds[2], 2) +
     std::pow(bounds[5] - bounds[4], 2));
+  std::copy(bounds, bounds + 6, plan.PointsBounds.begin());
   if (settings.CloseGaps)
   {
     plan.ClosingRadius = settings.ClosingRadius > 0.0 ? settings.ClosingRadius

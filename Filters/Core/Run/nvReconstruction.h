@@ -23,6 +23,7 @@
 #include "nvStageTimes.h"
 #include "nvVolume.h"
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -51,6 +52,7 @@ struct Plan
   double CoarsenedFrom = 0.0;
   double OffsetBeforeCoarsening = 0.0;
   double Diagonal = 0.0; ///< the diagonal of the points' bounding box
+  std::array<double, 6> PointsBounds{ { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 } }; ///< that box: xmin, xmax, ymin, ...
   std::string Error; ///< why there is no grid; empty when there is one
   bool Valid() const { return this->Error.empty(); }
 };

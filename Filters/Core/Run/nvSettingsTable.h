@@ -99,6 +99,7 @@
   X(double, ClosingRadiusUsed, 1) \
   X(double, SampleSpacingUsed, 1) \
   X(Text, GridUsed, 1) \
-  X(int, GridDimensionsUsed, 3)
+  X(int, GridDimensionsUsed, 3) \
+  X(Text, PartSizeUsed, 1)
 
 #endif

@@ -300,6 +300,22 @@ def test_drain_hole_axis(axis, down):
     assert np.hypot(offset[bottom, 0], offset[bottom, 1]).min() < 0.5 * w, "the -z pole keeps its material"
 
 
+def test_part_size_in_the_panel():
+    # PartSizeUsed, the panel's read-only text beside WallThickness: the
+    # part's size against the cloud's, from the part's bounds; empty for the
+    # shell.
+    h, l, w = 0.01, 0.1, 0.05
+    xyz = nvshapes.sphere_points(h)
+    f, figures, _ = nvtesting.run_filter(nvclouds.cloud(xyz), OffsetDistance=l, SampleSpacing=h, WallThickness=w)
+    bounds = figures["PartBounds"]
+    low, high = xyz.min(axis=0), xyz.max(axis=0)
+    size = " x ".join("%.4g" % (bounds[2 * a + 1] - bounds[2 * a]) for a in range(3))
+    cloud = " x ".join("%.4g" % (high[a] - low[a]) for a in range(3))
+    assert f.GetPartSizeUsed() == "%s (the cloud %s)" % (size, cloud)
+    shell, _, _ = nvtesting.run_filter(nvclouds.cloud(xyz), OffsetDistance=l, SampleSpacing=h)
+    assert shell.GetPartSizeUsed() == ""
+
+
 def test_open_scan_warns():
     h, l, w = 0.01, 0.04, 0.03
     xyz = nvshapes.sphere_points(0.006)

@@ -172,7 +172,8 @@ def test_panel_shows_the_grid_in_one_field(gui):
         "the panel draws the grid as one read-only text field: %s" % grid
     assert (result.get("panel_used") or {}).get("GridUsed") == " x ".join(
         str(n) for n in result.get("volume_dimensions") or ()), "the panel's grid text is the volume's"
-    assert set(shown) == {"OffsetDistanceUsed", "ClosingRadiusUsed", "SampleSpacingUsed", "GridUsed"}, \
+    assert set(shown) == {"OffsetDistanceUsed", "ClosingRadiusUsed", "SampleSpacingUsed", "GridUsed",
+                          "PartSizeUsed"}, \
         "the panel's read-only values: %s" % sorted(shown)
 
 
