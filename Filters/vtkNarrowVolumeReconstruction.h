@@ -264,11 +264,9 @@ public:
   ///@{
   /**
    * What the last run chose, which ParaView's panel shows read-only: one Get
-   * method per row of the property table's RESULTS (the parameter reference
-   * says what each is): GetOffsetDistanceUsed, GetClosingRadiusUsed,
-   * GetSampleSpacingUsed, GetGridUsed (the grid's nodes as one text, "221 x
-   * 260 x 200"; "" before a run) and GetGridDimensionsUsed (the same as
-   * three integers). 0 (or "") before a run or after one that failed.
+   * method per row of the property table's RESULTS, GetOffsetDistanceUsed
+   * and the others (the parameter reference says what each is). 0 (or "")
+   * before a run or after one that failed.
    */
   NV_RESULTS(vtkNarrowVolumeResultMacro)
   ///@}
