@@ -68,34 +68,10 @@ nb::tuple ReadLAS(const std::string& path)
   const std::uint64_t n = header.NumberOfPoints;
   const int format = header.PointFormat;
   nb::dict arrays;
-  arrays["Intensity"] = Adopt(read.Intensity, n);
-  arrays["Classification"] = Adopt(read.Classification, n);
-  arrays["ReturnNumber"] = Adopt(read.ReturnNumber, n);
-  arrays["NumberOfReturns"] = Adopt(read.NumberOfReturns, n);
-  arrays["ClassificationFlags"] = Adopt(read.ClassificationFlags, n);
-  arrays["ScanDirectionFlag"] = Adopt(read.ScanDirectionFlag, n);
-  arrays["EdgeOfFlightLine"] = Adopt(read.EdgeOfFlightLine, n);
-  arrays["UserData"] = Adopt(read.UserData, n);
-  arrays["ScanAngle"] = Adopt(read.ScanAngle, n);
-  arrays["PointSourceId"] = Adopt(read.PointSourceId, n);
-  if (nv::las::IsExtendedFormat(format))
-  {
-    arrays["ScannerChannel"] = Adopt(read.ScannerChannel, n);
-  }
-  if (nv::las::HasGpsTime(format))
-  {
-    arrays["GpsTime"] = Adopt(read.GpsTime, n);
-  }
-  if (nv::las::HasNearInfrared(format))
-  {
-    arrays["NearInfrared"] = Adopt(read.NearInfrared, n);
-  }
-  nb::object scalars = nb::none();
-  if (nv::las::HasColor(format))
-  {
-    arrays["Colors"] = Adopt(read.Colors, n, 3);
-    scalars = nb::str("Colors");
-  }
+  nv::las::ForEachArray(format, read, [&](const char* name, auto& column, int components) {
+    arrays[name] = Adopt(column, n, static_cast<std::size_t>(components));
+  });
+  const nb::object scalars = nv::las::HasColor(format) ? nb::object(nb::str("Colors")) : nb::none();
   return nb::make_tuple(Adopt(read.XYZ, n, 3), arrays, scalars);
 }
 

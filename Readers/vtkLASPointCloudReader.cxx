@@ -18,13 +18,40 @@
 #include "vtkUnsignedShortArray.h"
 
 #include <algorithm>
+#include <cstdint>
+#include <cstring>
 #include <fstream>
 #include <string>
+#include <type_traits>
 
 vtkStandardNewMacro(vtkLASPointCloudReader);
 
 namespace
 {
+/// The VTK array class of a column's values.
+template <typename T>
+struct ArrayOf;
+template <>
+struct ArrayOf<std::uint8_t>
+{
+  using Type = vtkUnsignedCharArray;
+};
+template <>
+struct ArrayOf<std::uint16_t>
+{
+  using Type = vtkUnsignedShortArray;
+};
+template <>
+struct ArrayOf<float>
+{
+  using Type = vtkFloatArray;
+};
+template <>
+struct ArrayOf<double>
+{
+  using Type = vtkDoubleArray;
+};
+
 /// A named VTK array of n tuples that takes over a column of nv::las::Points
 /// (no copy: VTK frees it with delete[], as the column would have).
 template <typename ArrayT, typename T>
@@ -84,32 +111,18 @@ int vtkLASPointCloudReader::RequestData(
   output->SetPoints(points);
   output->SetVerts(nv::VertexCells(n));
   vtkPointData* pd = output->GetPointData();
-  pd->AddArray(Adopt<vtkUnsignedShortArray>("Intensity", read.Intensity));
-  pd->AddArray(Adopt<vtkUnsignedCharArray>("Classification", read.Classification));
-  pd->AddArray(Adopt<vtkUnsignedCharArray>("ReturnNumber", read.ReturnNumber));
-  pd->AddArray(Adopt<vtkUnsignedCharArray>("NumberOfReturns", read.NumberOfReturns));
-  pd->AddArray(Adopt<vtkUnsignedCharArray>("ClassificationFlags", read.ClassificationFlags));
-  pd->AddArray(Adopt<vtkUnsignedCharArray>("ScanDirectionFlag", read.ScanDirectionFlag));
-  pd->AddArray(Adopt<vtkUnsignedCharArray>("EdgeOfFlightLine", read.EdgeOfFlightLine));
-  pd->AddArray(Adopt<vtkUnsignedCharArray>("UserData", read.UserData));
-  pd->AddArray(Adopt<vtkFloatArray>("ScanAngle", read.ScanAngle));
-  pd->AddArray(Adopt<vtkUnsignedShortArray>("PointSourceId", read.PointSourceId));
-  if (nv::las::IsExtendedFormat(header.PointFormat))
-  {
-    pd->AddArray(Adopt<vtkUnsignedCharArray>("ScannerChannel", read.ScannerChannel));
-  }
-  if (nv::las::HasGpsTime(header.PointFormat))
-  {
-    pd->AddArray(Adopt<vtkDoubleArray>("GpsTime", read.GpsTime));
-  }
-  if (nv::las::HasNearInfrared(header.PointFormat))
-  {
-    pd->AddArray(Adopt<vtkUnsignedShortArray>("NearInfrared", read.NearInfrared));
-  }
-  if (nv::las::HasColor(header.PointFormat))
-  {
-    pd->SetScalars(Adopt<vtkUnsignedCharArray>("Colors", read.Colors, 3));
-  }
+  nv::las::ForEachArray(header.PointFormat, read, [pd](const char* name, auto& column, int components) {
+    using ArrayT = typename ArrayOf<typename std::decay_t<decltype(column)>::Value>::Type;
+    auto array = Adopt<ArrayT>(name, column, components);
+    if (std::strcmp(name, "Colors") == 0)
+    {
+      pd->SetScalars(array);
+    }
+    else
+    {
+      pd->AddArray(array);
+    }
+  });
   return 1;
 }
 

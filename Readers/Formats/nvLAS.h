@@ -99,6 +99,7 @@ void DecodePoint(const std::uint8_t* record, int format, Point& point);
 template <class T>
 struct Column
 {
+  using Value = T;
   std::unique_ptr<T[]> Values;
   std::size_t Size = 0; ///< values; 0: the file's point format lacks the field
 
@@ -134,6 +135,41 @@ struct Points
   /// unless no value exceeds 255: the file stores 8-bit values already).
   Column<std::uint8_t> Colors;
 };
+
+/// The point arrays of a file of point format `format`, in the readers'
+/// order: fn(name, column, components) for each (Colors last, r g b). The
+/// one list of them, which the VTK reader and the wheel's read_las both
+/// walk.
+template <class Fn>
+void ForEachArray(int format, Points& points, Fn&& fn)
+{
+  fn("Intensity", points.Intensity, 1);
+  fn("Classification", points.Classification, 1);
+  fn("ReturnNumber", points.ReturnNumber, 1);
+  fn("NumberOfReturns", points.NumberOfReturns, 1);
+  fn("ClassificationFlags", points.ClassificationFlags, 1);
+  fn("ScanDirectionFlag", points.ScanDirectionFlag, 1);
+  fn("EdgeOfFlightLine", points.EdgeOfFlightLine, 1);
+  fn("UserData", points.UserData, 1);
+  fn("ScanAngle", points.ScanAngle, 1);
+  fn("PointSourceId", points.PointSourceId, 1);
+  if (IsExtendedFormat(format))
+  {
+    fn("ScannerChannel", points.ScannerChannel, 1);
+  }
+  if (HasGpsTime(format))
+  {
+    fn("GpsTime", points.GpsTime, 1);
+  }
+  if (HasNearInfrared(format))
+  {
+    fn("NearInfrared", points.NearInfrared, 1);
+  }
+  if (HasColor(format))
+  {
+    fn("Colors", points.Colors, 3);
+  }
+}
 
 enum class ReadResult
 {
