@@ -25,6 +25,7 @@ import time
 
 import clouds
 from clouds import nvclouds, nvshapes
+from held_memory import peak_mb, reset_peak, resident_mb
 
 CASES = [("sphere", "Table 1 sphere, h 0.01, l 0.1, w 0.05"), ("armadillo", "armadillo"),
          ("dragon", "dragon"), ("teapot", "teapot")]
@@ -49,14 +50,6 @@ def case_settings(name):
     return xyz, dict(WallThickness=0.02 * float(np.linalg.norm(xyz.max(axis=0) - xyz.min(axis=0))))
 
 
-def status_mb(key):
-    with open("/proc/self/status") as status:
-        for line in status:
-            if line.startswith(key + ":"):
-                return int(line.split()[1]) / 1024.0
-    return float("nan")
-
-
 def child(name, threads, wall):
     """One Update in this process: prints {"seconds", "peak_mb", "triangles"} as JSON."""
     from narrowvolume import vtkNarrowVolumeReconstruction
@@ -70,13 +63,12 @@ def child(name, threads, wall):
         getattr(f, "Set" + key)(value)
     f.SetNumberOfThreads(threads)
     f.SetOutputVolume(False)
-    with open("/proc/self/clear_refs", "w") as clear:  # VmHWM from here on
-        clear.write("5")
-    before = status_mb("VmRSS")
+    reset_peak()
+    before = resident_mb()
     start = time.perf_counter()
     f.Update()
     seconds = time.perf_counter() - start
-    print(json.dumps(dict(seconds=seconds, peak_mb=status_mb("VmHWM") - before,
+    print(json.dumps(dict(seconds=seconds, peak_mb=peak_mb() - before,
                           triangles=f.GetOutput(1).GetNumberOfPolys())))
 
 
