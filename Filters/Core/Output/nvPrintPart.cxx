@@ -14,6 +14,7 @@
 #include <cstring>
 #include <limits>
 #include <mutex>
+#include <utility>
 #include <vector>
 
 namespace nv
@@ -590,10 +591,18 @@ std::vector<Drill> DrainHoles(const Grid& grid, const float* outer, const std::v
       grid.Ijk(n, ijk);
       return -sign * (grid.Origin[axis] + static_cast<double>(ijk[axis]) * h) - (distance[n] - deep);
     };
-    std::stable_sort(region.begin(), region.end(), [&](std::int64_t u, std::int64_t v) { return height(u) < height(v); });
-    std::vector<std::array<double, 3>> tops;
+    std::vector<std::pair<double, std::int64_t>> lowest; // (height, node), each height made once
+    lowest.reserve(region.size());
     for (std::int64_t n : region)
     {
+      lowest.emplace_back(height(n), n);
+    }
+    std::stable_sort(lowest.begin(), lowest.end(),
+      [](const std::pair<double, std::int64_t>& u, const std::pair<double, std::int64_t>& v) { return u.first < v.first; });
+    std::vector<std::array<double, 3>> tops;
+    for (const auto& entry : lowest)
+    {
+      const std::int64_t n = entry.second;
       if (static_cast<int>(tops.size()) == count)
       {
         break;
