@@ -390,15 +390,19 @@ void CompareDistance(
   NV_CHECK(differ == 0);
   NV_CHECK(coverDiffer == 0);
 
-  // The band with its nodes picked on the device (BandCountKernel,
-  // BandCompactKernel), and with a visitor (no brick skipped, each brick's
-  // distances handed over, the nodes picked on the host), against the CPU's.
+  // The band built on the device (steps 1 to 3: BandCountKernel,
+  // BandCompactKernel, StoreBand's joins, AdjacentBricksKernel,
+  // NeighboursKernel; its distances and neighbour table brought back here),
+  // and with a visitor (no brick skipped, each brick's distances handed
+  // over, the band built on the host), against the CPU's.
   const nv::NarrowBand cpuBand = nv::BuildNarrowBand(distance, parameters);
   nv::NarrowBand deviceBand;
   {
     nv::device::LauncherDistance device(distance, *launcher, 777);
     deviceBand = nv::BuildNarrowBand(distance, parameters, nullptr, nullptr, nullptr, nullptr, &device);
   }
+  NV_CHECK(deviceBand.Distance.empty() && deviceBand.Neighbor.empty()); // held by the launcher
+  nv::device::DownloadBand(*launcher, deviceBand);
   const bool same = deviceBand.Size() == cpuBand.Size() && deviceBand.RedCount == cpuBand.RedCount &&
     SameValues(deviceBand.Offset, cpuBand.Offset) && SameValues(deviceBand.Distance, cpuBand.Distance) &&
     SameValues(deviceBand.Neighbor, cpuBand.Neighbor) && SameValues(deviceBand.Bricks, cpuBand.Bricks) &&
@@ -423,7 +427,7 @@ void CompareDistance(
   const bool sameVisited = cpuVisited == deviceVisited && !cpuVisited.empty() &&
     SameValues(deviceVisitedBand.Inside, cpuVisitedBand.Inside) &&
     SameValues(deviceVisitedBand.Distance, cpuVisitedBand.Distance);
-  std::printf("%s, the band picked on the device: %lld nodes, the CPU's array for array: %s; from the "
+  std::printf("%s, the band built on the device: %lld nodes, the CPU's array for array: %s; from the "
               "device's distances with a visitor (%zu bricks): %s\n",
     what, static_cast<long long>(deviceBand.Size()), same ? "yes" : "NO", deviceVisited.size(),
     sameVisited ? "yes" : "NO");

@@ -197,59 +197,6 @@ bool CollectBandNodes(const TruncatedDistance& distance, const Parameters& param
   });
 }
 
-/// Step 1, continued, with the band's nodes picked by `source` (the device
-/// back end) batch by batch: perBrick and band.Inside as CollectBandNodes
-/// makes them. False if the monitor stopped it.
-bool CollectPickedNodes(BrickDistanceSource& source, const TruncatedDistance& distances,
-  const Parameters& parameters, Monitor* monitor, NarrowBand& band, std::vector<BrickBand>& perBrick, std::int64_t batch, double coverRadius)
-{
-  const std::int64_t numberOfBricks = static_cast<std::int64_t>(band.Bricks.size());
-  const double lower = parameters.OffsetDistance - parameters.HalfBandWidth();
-  const bool whole = parameters.Domain == Domain::WholeDomain;
-  std::vector<std::int32_t> red(static_cast<std::size_t>(batch)), black(static_cast<std::size_t>(batch));
-  std::vector<std::int64_t> first(static_cast<std::size_t>(batch));
-  UninitializedVector<std::uint16_t> offset;
-  UninitializedVector<double> distance;
-  for (std::int64_t done = 0; done < numberOfBricks; done += batch)
-  {
-    if (monitor && monitor->Aborted())
-    {
-      return false;
-    }
-    const std::int64_t count = std::min(batch, numberOfBricks - done);
-    source.CollectNodes(&band.Bricks[done], count, coverRadius, lower, distances.GetReach(), whole, red.data(),
-      black.data(), &band.Inside[done * BrickNodes / 64], offset, distance);
-    std::int64_t total = 0;
-    for (std::int64_t c = 0; c < count; ++c)
-    {
-      first[c] = total;
-      total += red[c] + black[c];
-    }
-    ParallelFor(0, count, 64, [&](std::int64_t begin, std::int64_t end) {
-      for (std::int64_t c = begin; c < end; ++c)
-      {
-        BrickBand& out = perBrick[done + c];
-        for (int colour = 0; colour < 2; ++colour)
-        {
-          std::vector<BandEntry>& list = colour == 0 ? out.Red : out.Black;
-          const std::int64_t from = first[c] + (colour == 0 ? 0 : red[c]);
-          const std::int64_t size = colour == 0 ? red[c] : black[c];
-          list.resize(static_cast<std::size_t>(size));
-          for (std::int64_t e = 0; e < size; ++e)
-          {
-            list[e] = BandEntry{ offset[from + e], distance[from + e] };
-          }
-        }
-      }
-    });
-    if (monitor)
-    {
-      monitor->Progress(static_cast<double>(done + count) / numberOfBricks);
-    }
-  }
-  return !(monitor && monitor->Aborted());
-}
-
 /// Step 1, continued, with the distances from `source` (the device back
 /// end), batch by batch: the same band nodes and Inside bits as
 /// CollectBandNodes when the source gives ComputeBrick's and BrickWithin's
@@ -264,10 +211,6 @@ bool CollectBandNodesFrom(BrickDistanceSource& source, const TruncatedDistance& 
   const double lower = parameters.OffsetDistance - parameters.HalfBandWidth();
   const double coverRadius = SkipsCoveredBricks(parameters, visitor) ? lower : 0.0;
   const std::int64_t batch = std::max<std::int64_t>(1, std::min(source.BatchSize(), numberOfBricks));
-  if (source.PicksNodes() && !visitor)
-  {
-    return CollectPickedNodes(source, distance, parameters, monitor, band, perBrick, batch, coverRadius);
-  }
   UninitializedVector<double> d(static_cast<std::size_t>(batch * BrickNodes));
   std::vector<std::uint8_t> covered(static_cast<std::size_t>(batch));
   for (std::int64_t done = 0; done < numberOfBricks; done += batch)
@@ -308,6 +251,34 @@ bool CollectBandNodesFrom(BrickDistanceSource& source, const TruncatedDistance& 
   return !(monitor && monitor->Aborted());
 }
 
+/// Step 2's tables from each brick's counts of red and black band nodes
+/// (red(a), black(a)): band.RedCount, band.RedStart and band.BlackStart,
+/// the black nodes after all the red ones. Returns the band's size.
+template <typename Red, typename Black>
+std::int64_t SetStarts(std::int64_t numberOfBricks, const Red& red, const Black& black, NarrowBand& band)
+{
+  band.RedStart.assign(static_cast<std::size_t>(numberOfBricks + 1), 0);
+  band.BlackStart.assign(static_cast<std::size_t>(numberOfBricks + 1), 0);
+  for (std::int64_t a = 0; a < numberOfBricks; ++a)
+  {
+    band.RedStart[a + 1] = band.RedStart[a] + red(a);
+    band.BlackStart[a + 1] = band.BlackStart[a] + black(a);
+  }
+  band.RedCount = band.RedStart[numberOfBricks];
+  for (std::int64_t& start : band.BlackStart)
+  {
+    start += band.RedCount;
+  }
+  return band.BlackStart[numberOfBricks];
+}
+
+/// Whether a band of `size` nodes is over the limits (32-bit neighbour
+/// indices, Parameters::MaximumBandNodes).
+bool TooLarge(std::int64_t size, const Parameters& parameters)
+{
+  return size > MaximumBandSize || (parameters.MaximumBandNodes >= 0 && size > parameters.MaximumBandNodes);
+}
+
 /// Step 2: the band nodes stored compactly, red ones first, in brick order
 /// (band.Offset, band.Distance, band.RedStart, band.BlackStart), perBrick
 /// emptied. Returns 0; or, when the band is over the limit, its size, and
@@ -315,23 +286,15 @@ bool CollectBandNodesFrom(BrickDistanceSource& source, const TruncatedDistance& 
 std::int64_t StoreBandNodes(std::vector<BrickBand>& perBrick, const Parameters& parameters, NarrowBand& band)
 {
   const std::int64_t numberOfBricks = static_cast<std::int64_t>(perBrick.size());
-  std::vector<std::int64_t> redStart(static_cast<std::size_t>(numberOfBricks + 1), 0);
-  std::vector<std::int64_t> blackStart(static_cast<std::size_t>(numberOfBricks + 1), 0);
-  for (std::int64_t a = 0; a < numberOfBricks; ++a)
-  {
-    redStart[a + 1] = redStart[a] + static_cast<std::int64_t>(perBrick[a].Red.size());
-    blackStart[a + 1] = blackStart[a] + static_cast<std::int64_t>(perBrick[a].Black.size());
-  }
-  band.RedCount = redStart[numberOfBricks];
-  const std::int64_t size = band.RedCount + blackStart[numberOfBricks];
-  if (size > MaximumBandSize || (parameters.MaximumBandNodes >= 0 && size > parameters.MaximumBandNodes))
+  const std::int64_t size = SetStarts(
+    numberOfBricks, [&](std::int64_t a) { return static_cast<std::int64_t>(perBrick[a].Red.size()); },
+    [&](std::int64_t a) { return static_cast<std::int64_t>(perBrick[a].Black.size()); }, band);
+  if (TooLarge(size, parameters))
   {
     return size;
   }
-  for (std::int64_t a = 0; a <= numberOfBricks; ++a)
-  {
-    blackStart[a] += band.RedCount;
-  }
+  const std::vector<std::int64_t>& redStart = band.RedStart;
+  const std::vector<std::int64_t>& blackStart = band.BlackStart;
   band.Offset.resize(static_cast<std::size_t>(size));
   band.Distance.resize(static_cast<std::size_t>(size));
   ParallelFor(0, numberOfBricks, 64, [&](std::int64_t begin, std::int64_t end) {
@@ -354,8 +317,6 @@ std::int64_t StoreBandNodes(std::vector<BrickBand>& perBrick, const Parameters& 
     }
   });
   std::vector<BrickBand>().swap(perBrick);
-  band.RedStart = std::move(redStart);
-  band.BlackStart = std::move(blackStart);
   return 0;
 }
 
@@ -471,14 +432,112 @@ void ConnectNeighbours(const BrickIndex& index, const Parameters& parameters, Na
   });
 }
 
+/// Steps 1 to 3 where `source` builds the band (the device back end): step
+/// 1's counts and Inside bits come back batch by batch, step 2's tables are
+/// made here from the counts and the source stores the nodes (band.Offset
+/// comes back), step 3 is the source's. band.Distance and band.Neighbor stay
+/// empty. Returns false if the monitor stopped it; sets band.RefusedSize,
+/// and stores nothing, when the band is over the limit.
+bool BuildBandOnSource(BrickDistanceSource& source, const TruncatedDistance& distance,
+  const Parameters& parameters, Monitor* monitor, StageTimes& times, NarrowBand& band)
+{
+  const std::int64_t numberOfBricks = static_cast<std::int64_t>(band.Bricks.size());
+  band.Inside.resize(static_cast<std::size_t>(numberOfBricks * BrickNodes / 64));
+  std::vector<std::int32_t> red(static_cast<std::size_t>(numberOfBricks));
+  std::vector<std::int32_t> black(static_cast<std::size_t>(numberOfBricks));
+  const double lower = parameters.OffsetDistance - parameters.HalfBandWidth();
+  const bool whole = parameters.Domain == Domain::WholeDomain;
+  const double coverRadius = SkipsCoveredBricks(parameters, nullptr) ? lower : 0.0;
+  const std::int64_t batch = std::max<std::int64_t>(1, std::min(source.BatchSize(), numberOfBricks));
+  // Step 1: the distances and each brick's band nodes, counted.
+  const bool collected = times.Time("band: collect", [&]() {
+    for (std::int64_t done = 0; done < numberOfBricks; done += batch)
+    {
+      if (monitor && monitor->Aborted())
+      {
+        return false;
+      }
+      const std::int64_t count = std::min(batch, numberOfBricks - done);
+      source.CountNodes(&band.Bricks[done], count, coverRadius, lower, distance.GetReach(), whole, &red[done],
+        &black[done], &band.Inside[done * BrickNodes / 64]);
+      if (monitor)
+      {
+        monitor->Progress(static_cast<double>(done + count) / numberOfBricks);
+      }
+    }
+    return !(monitor && monitor->Aborted());
+  });
+  if (!collected)
+  {
+    return false;
+  }
+  // Step 2: stored compactly, unless the band is too large.
+  const std::int64_t size = times.Time("band: store", [&]() {
+    const std::int64_t nodes = SetStarts(
+      numberOfBricks, [&](std::int64_t a) { return red[a]; }, [&](std::int64_t a) { return black[a]; }, band);
+    if (!TooLarge(nodes, parameters))
+    {
+      band.Offset.resize(static_cast<std::size_t>(nodes));
+      source.StoreNodes(band.RedCount, nodes, band.Offset.data());
+    }
+    return nodes;
+  });
+  if (TooLarge(size, parameters))
+  {
+    band.RefusedSize = size;
+    return true;
+  }
+  // Step 3: each node's six neighbours.
+  times.Time("band: neighbours", [&]() { source.ConnectNeighbours(band, parameters.OffsetDistance); });
+  return true;
+}
+
+/// Steps 1 to 3 on the host, from the distances computed here (or taken
+/// from `source`, batch by batch). Returns false if the monitor stopped it;
+/// sets band.RefusedSize, and stores nothing, when the band is over the
+/// limit.
+bool BuildBandOnHost(const TruncatedDistance& distance, const Parameters& parameters, Monitor* monitor,
+  const BrickVisitor& visitor, BrickDistanceSource* source, StageTimes& times, NarrowBand& band)
+{
+  std::vector<BrickBand> perBrick;
+  if (!times.Time("band: collect", [&]() {
+        return source ? CollectBandNodesFrom(*source, distance, parameters, monitor, visitor, band, perBrick)
+                      : CollectBandNodes(distance, parameters, monitor, visitor, band, perBrick);
+      }))
+  {
+    return false;
+  }
+  // Step 2: stored compactly, unless the band is too large.
+  band.RefusedSize = times.Time("band: store", [&]() { return StoreBandNodes(perBrick, parameters, band); });
+  if (band.RefusedSize > 0)
+  {
+    return true;
+  }
+  ReleaseFreedMemory(); // before the neighbour indices, the band's largest array
+  // Step 3: each node's six neighbours.
+  const BrickIndex index = times.Time("band: index bricks", [&]() { return IndexBricks(distance, band); });
+  times.Time("band: neighbours", [&]() { ConnectNeighbours(index, parameters, band); });
+  return true;
+}
+
 } // namespace
 
 BrickDistanceSource::~BrickDistanceSource() = default;
 
-void BrickDistanceSource::CollectNodes(const std::int64_t*, std::int64_t, double, double, double, bool,
-  std::int32_t*, std::int32_t*, std::uint64_t*, UninitializedVector<std::uint16_t>&, UninitializedVector<double>&)
+void BrickDistanceSource::CountNodes(
+  const std::int64_t*, std::int64_t, double, double, double, bool, std::int32_t*, std::int32_t*, std::uint64_t*)
 {
-  throw std::logic_error("BrickDistanceSource::CollectNodes: this source does not pick the band's nodes");
+  throw std::logic_error("BrickDistanceSource::CountNodes: this source does not build the band");
+}
+
+void BrickDistanceSource::StoreNodes(std::int64_t, std::int64_t, std::uint16_t*)
+{
+  throw std::logic_error("BrickDistanceSource::StoreNodes: this source does not build the band");
+}
+
+void BrickDistanceSource::ConnectNeighbours(const NarrowBand&, double)
+{
+  throw std::logic_error("BrickDistanceSource::ConnectNeighbours: this source does not build the band");
 }
 
 NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& parameters, Monitor* monitor,
@@ -493,28 +552,21 @@ NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& 
   {
     part = &whole;
   }
-  // Step 1: the bricks to visit and their band nodes.
+  // Step 1: the bricks to visit; then their band nodes (steps 1-3).
   band.Bricks = BricksToVisit(distance, parameters, *part);
-  std::vector<BrickBand> perBrick;
-  if (!times->Time("band: collect", [&]() {
-        return source ? CollectBandNodesFrom(*source, distance, parameters, monitor, visitor, band, perBrick)
-                      : CollectBandNodes(distance, parameters, monitor, visitor, band, perBrick);
-      }))
+  const bool built = source && source->BuildsBand() && !visitor
+    ? BuildBandOnSource(*source, distance, parameters, monitor, *times, band)
+    : BuildBandOnHost(distance, parameters, monitor, visitor, source, *times, band);
+  if (!built)
   {
     return NarrowBand{};
   }
-  // Step 2: stored compactly, unless the band is too large.
-  const std::int64_t tooLarge = times->Time("band: store", [&]() { return StoreBandNodes(perBrick, parameters, band); });
-  if (tooLarge > 0)
+  if (band.RefusedSize > 0)
   {
     NarrowBand refused;
-    refused.RefusedSize = tooLarge;
+    refused.RefusedSize = band.RefusedSize;
     return refused;
   }
-  ReleaseFreedMemory(); // before the neighbour indices, the band's largest array
-  // Step 3: each node's six neighbours.
-  const BrickIndex index = times->Time("band: index bricks", [&]() { return IndexBricks(distance, band); });
-  times->Time("band: neighbours", [&]() { ConnectNeighbours(index, parameters, band); });
   band.OwnedLayers = part->Owned;
   if (monitor)
   {

@@ -121,22 +121,32 @@ public:
   virtual void Compute(const std::int64_t* bricks, std::int64_t count, double coverRadius, double* distance,
     std::uint8_t* covered) = 0;
 
-  /// Whether the source also picks the band's nodes (CollectNodes), so that
-  /// only they, not every distance, come back (the band uses it where no
-  /// visitor wants the distances).
-  virtual bool PicksNodes() const { return false; }
+  /**
+   * Whether the source builds the band's arrays itself, where its distances
+   * are (CountNodes, StoreNodes, ConnectNeighbours: steps 1 to 3 on the
+   * device): only the counts, the Inside bits and Offset come to the band,
+   * whose Distance and Neighbor then stay empty, held by the source's
+   * device for the evolution (nvDeviceEvolution.h). Used where no visitor
+   * wants the distances.
+   */
+  virtual bool BuildsBand() const { return false; }
   /**
    * Step 1 for the `count` bricks `bricks`, as CollectBandNodes does it from
-   * Compute's distances: `red[a]`, `black[a]`: batch brick a's band nodes
-   * of each colour; `offset` and `distance` (resized): the band nodes, brick
-   * after brick, each brick's red ones then its black ones in ascending
-   * place in the brick; `inside`: 8 words a brick, NarrowBand::Inside's.
-   * lower, upper: the band's bounds l -/+ eta/2; whole: every node of the
-   * grid is a band node (Domain::WholeDomain).
+   * Compute's distances, the band's nodes kept by the source: `red[a]`,
+   * `black[a]`: brick a's band nodes of each colour; `inside`: 8 words a
+   * brick, NarrowBand::Inside's. lower, upper: the band's bounds l -/+
+   * eta/2; whole: every node of the grid is a band node
+   * (Domain::WholeDomain).
    */
-  virtual void CollectNodes(const std::int64_t* bricks, std::int64_t count, double coverRadius, double lower,
-    double upper, bool whole, std::int32_t* red, std::int32_t* black, std::uint64_t* inside,
-    UninitializedVector<std::uint16_t>& offset, UninitializedVector<double>& distance);
+  virtual void CountNodes(const std::int64_t* bricks, std::int64_t count, double coverRadius, double lower,
+    double upper, bool whole, std::int32_t* red, std::int32_t* black, std::uint64_t* inside);
+  /// Step 2: the nodes CountNodes kept stored as NarrowBand's Offset and
+  /// Distance (`size` nodes, the `redCount` red ones first); Offset into
+  /// `offset` (size values).
+  virtual void StoreNodes(std::int64_t redCount, std::int64_t size, std::uint16_t* offset);
+  /// Step 3: the band's neighbour table (as NarrowBand::Neighbor), from
+  /// `band`'s Bricks, RedStart and BlackStart; l is `offsetDistance`.
+  virtual void ConnectNeighbours(const NarrowBand& band, double offsetDistance);
 };
 
 /**
@@ -147,9 +157,13 @@ public:
  * (nvPartition.h); null for the whole grid. visitor: if set, also called
  * with the distances of every reached brick (none is skipped then). times:
  * if set, gets the seconds of steps 1 ("band: collect", the distances), 2
- * ("band: store"), and 3 ("band: index bricks", "band: neighbours").
+ * ("band: store"), and 3 ("band: index bricks", "band: neighbours"; by a
+ * source that builds the band, "band: neighbours" only).
  * source: if set, step 1 takes the distances from it, batch by batch,
- * instead of computing them on the host (the same band, bit for bit).
+ * instead of computing them on the host (the same band, bit for bit); and
+ * where it builds the band (BuildsBand) and no visitor is set, steps 1 to 3
+ * run there: the band's Distance and Neighbor are then the source's, not
+ * the returned band's.
  */
 NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& parameters,
   Monitor* monitor = nullptr, const Subdomain* part = nullptr, const BrickVisitor& visitor = nullptr,

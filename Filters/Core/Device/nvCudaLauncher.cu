@@ -3,11 +3,12 @@
 // The CUDA launcher: the kernels of nvDeviceKernels.h on the GPU. This file
 // only allocates, copies and launches; what a node computes is in the
 // kernels, which the host launcher runs too, and the loops around them are
-// in nvDeviceEvolution.cxx (the evolution) and nvDeviceDistance.cxx (the
-// truncated distance and the band's nodes, batch by batch of bricks: only
-// each batch's band nodes come back to the host, or all its distances where
-// the dense volume wants them) and Output/nvDeviceSurface.cxx (the surface:
-// the band and phi go up, the vertices and triangles come back).
+// in nvDeviceEvolution.cxx (the evolution), nvDeviceDistance.cxx (the
+// truncated distance and the band, batch by batch of bricks: only each
+// batch's counts and Inside bits come back to the host, then the band's
+// Offset; its distances and neighbour table stay here for the evolution)
+// and Output/nvDeviceSurface.cxx (the surface: the band and phi go up, the
+// vertices and triangles come back).
 //
 // Compiled where CMake finds a CUDA compiler (NARROWVOLUME_CUDA): the suite
 // compiles and links it on machines without a GPU (scripts/test.sh, nvcc
@@ -134,11 +135,16 @@ public:
            static_cast<void*>(this->A.Coupling), static_cast<void*>(this->A.Decay), static_cast<void*>(this->Points),
            static_cast<void*>(this->BucketStart), static_cast<void*>(this->Bricks),
            static_cast<void*>(this->BrickDistance), static_cast<void*>(this->Covered),
-           static_cast<void*>(this->RedCount), static_cast<void*>(this->BlackCount), static_cast<void*>(this->First),
-           static_cast<void*>(this->Inside), static_cast<void*>(this->NodeOffset),
-           static_cast<void*>(this->NodeDistance) })
+           static_cast<void*>(this->RedCount), static_cast<void*>(this->BlackCount),
+           static_cast<void*>(this->RedFirst), static_cast<void*>(this->BlackFirst),
+           static_cast<void*>(this->Inside), static_cast<void*>(this->BandOffset) })
     {
       cudaFree(memory);
+    }
+    for (const BatchNodes& batch : this->Batches)
+    {
+      cudaFree(batch.Offset);
+      cudaFree(batch.Distance);
     }
   }
 
@@ -148,19 +154,34 @@ public:
   void Upload(std::int64_t size, const std::uint32_t* neighbor, const double* distance, double inside,
     double outside) override
   {
+    const bool held = !neighbor && !distance && size > 0; // the band built here (StoreBand, ConnectBand)
+    if (held && (this->BandSize != size || !this->Neighbor || !this->Distance))
+    {
+      throw DeviceError("The GPU holds no band of " + std::to_string(size) + " nodes to evolve.");
+    }
+    if (held)
+    {
+      Release(this->BandOffset, size, this->Bytes); // the host has its copy
+    }
     this->A.Size = size;
-    this->Neighbor = Allocate<std::uint32_t>(6 * size, this->Bytes, this->Peak, "the neighbour table");
-    this->Distance = Allocate<double>(size, this->Bytes, this->Peak, "the distances");
+    if (!held)
+    {
+      this->Neighbor = Allocate<std::uint32_t>(6 * size, this->Bytes, this->Peak, "the neighbour table");
+      this->Distance = Allocate<double>(size, this->Bytes, this->Peak, "the distances");
+    }
     this->A.Phi = Allocate<double>(size + 2, this->Bytes, this->Peak, "phi");
     this->A.Previous = Allocate<double>(size, this->Bytes, this->Peak, "phi^n");
     this->A.Coupling = Allocate<double>(size, this->Bytes, this->Peak, "the coupling");
     this->A.Decay = Allocate<float>(size, this->Bytes, this->Peak, "the decay");
     this->A.Neighbor = this->Neighbor;
     this->A.Distance = this->Distance;
-    Check(cudaMemcpy(this->Neighbor, neighbor, sizeof(std::uint32_t) * 6 * size, cudaMemcpyHostToDevice),
-      "copying the neighbour table");
-    Check(cudaMemcpy(this->Distance, distance, sizeof(double) * size, cudaMemcpyHostToDevice),
-      "copying the distances");
+    if (!held)
+    {
+      Check(cudaMemcpy(this->Neighbor, neighbor, sizeof(std::uint32_t) * 6 * size, cudaMemcpyHostToDevice),
+        "copying the neighbour table");
+      Check(cudaMemcpy(this->Distance, distance, sizeof(double) * size, cudaMemcpyHostToDevice),
+        "copying the distances");
+    }
     const double slots[2] = { inside, outside };
     Check(cudaMemcpy(this->A.Phi + size, slots, sizeof(slots), cudaMemcpyHostToDevice), "copying eq. (5)'s values");
   }
@@ -248,23 +269,20 @@ public:
     }
   }
   void BandNodes(std::int64_t count, const BandNodeConstants& constants, std::int32_t* red, std::int32_t* black,
-    std::uint64_t* inside, UninitializedVector<std::uint16_t>& offset, UninitializedVector<double>& distance) override
+    std::uint64_t* inside) override
   {
     if (count <= 0)
     {
-      offset.clear();
-      distance.clear();
       return;
     }
-    if (count > this->NodeCapacity) // the band nodes' buffers, kept from batch to batch
+    if (count > this->NodeCapacity) // the counts' buffers, kept from batch to batch
     {
       this->ReleaseNodes();
       this->RedCount = Allocate<std::int32_t>(count, this->Bytes, this->Peak, "the red counts of a batch");
       this->BlackCount = Allocate<std::int32_t>(count, this->Bytes, this->Peak, "the black counts of a batch");
-      this->First = Allocate<std::int64_t>(count, this->Bytes, this->Peak, "the band nodes' places in a batch");
+      this->RedFirst = Allocate<std::int64_t>(count, this->Bytes, this->Peak, "the red nodes' places in a batch");
+      this->BlackFirst = Allocate<std::int64_t>(count, this->Bytes, this->Peak, "the black nodes' places in a batch");
       this->Inside = Allocate<std::uint64_t>(8 * count, this->Bytes, this->Peak, "the inside bits of a batch");
-      this->NodeOffset = Allocate<std::uint16_t>(512 * count, this->Bytes, this->Peak, "the band nodes of a batch");
-      this->NodeDistance = Allocate<double>(512 * count, this->Bytes, this->Peak, "the band nodes' distances");
       this->NodeCapacity = count;
     }
     BandNodeArrays arrays;
@@ -273,35 +291,91 @@ public:
     arrays.Covered = this->Covered;
     arrays.RedCount = this->RedCount;
     arrays.BlackCount = this->BlackCount;
-    arrays.First = this->First;
-    arrays.NodeOffset = this->NodeOffset;
-    arrays.NodeDistance = this->NodeDistance;
+    arrays.RedFirst = this->RedFirst;
+    arrays.BlackFirst = this->BlackFirst;
     arrays.Inside = this->Inside;
     this->For(0, count, BandCountKernel{ arrays, constants });
     Check(cudaMemcpy(red, this->RedCount, sizeof(std::int32_t) * count, cudaMemcpyDeviceToHost),
       "copying the red counts back");
     Check(cudaMemcpy(black, this->BlackCount, sizeof(std::int32_t) * count, cudaMemcpyDeviceToHost),
       "copying the black counts back");
-    std::vector<std::int64_t> first(static_cast<std::size_t>(count));
-    std::int64_t total = 0;
-    for (std::int64_t c = 0; c < count; ++c)
-    {
-      first[c] = total;
-      total += red[c] + black[c];
-    }
-    Check(cudaMemcpy(this->First, first.data(), sizeof(std::int64_t) * count, cudaMemcpyHostToDevice),
-      "copying the band nodes' places");
-    this->For(0, count, BandCompactKernel{ arrays, constants });
-    offset.resize(static_cast<std::size_t>(total));
-    distance.resize(static_cast<std::size_t>(total));
     Check(cudaMemcpy(inside, this->Inside, sizeof(std::uint64_t) * 8 * count, cudaMemcpyDeviceToHost),
       "copying the inside bits back");
-    if (total > 0)
+    std::vector<std::int64_t> redFirst, blackFirst;
+    FirstNodes(red, black, count, redFirst, blackFirst);
+    Check(cudaMemcpy(this->RedFirst, redFirst.data(), sizeof(std::int64_t) * count, cudaMemcpyHostToDevice),
+      "copying the red nodes' places");
+    Check(cudaMemcpy(this->BlackFirst, blackFirst.data(), sizeof(std::int64_t) * count, cudaMemcpyHostToDevice),
+      "copying the black nodes' places");
+    // The batch's list of band nodes, kept until StoreBand.
+    BatchNodes batch;
+    batch.Red = redFirst[count];
+    batch.Size = blackFirst[count];
+    batch.Offset = Allocate<std::uint16_t>(batch.Size, this->Bytes, this->Peak, "the band nodes of a batch");
+    batch.Distance = Allocate<double>(batch.Size, this->Bytes, this->Peak, "the band nodes' distances");
+    this->Batches.push_back(batch);
+    arrays.NodeOffset = batch.Offset;
+    arrays.NodeDistance = batch.Distance;
+    this->For(0, count, BandCompactKernel{ arrays, constants });
+  }
+  void StoreBand(std::int64_t redCount, std::int64_t size, std::uint16_t* offset) override
+  {
+    this->ReleaseBand();
+    this->BandSize = size;
+    this->BandRedCount = redCount;
+    this->BandOffset = Allocate<std::uint16_t>(size, this->Bytes, this->Peak, "the band's node places");
+    this->Distance = Allocate<double>(size, this->Bytes, this->Peak, "the distances");
+    // Each batch's red nodes after the batches' before it, its black ones
+    // likewise after all the red ones: two copies a batch and array.
+    std::int64_t red = 0, black = redCount;
+    for (BatchNodes& batch : this->Batches)
     {
-      Check(cudaMemcpy(offset.data(), this->NodeOffset, sizeof(std::uint16_t) * total, cudaMemcpyDeviceToHost),
-        "copying the band nodes back");
-      Check(cudaMemcpy(distance.data(), this->NodeDistance, sizeof(double) * total, cudaMemcpyDeviceToHost),
-        "copying the band nodes' distances back");
+      const std::int64_t blacks = batch.Size - batch.Red;
+      this->CopyOnDevice(this->BandOffset + red, batch.Offset, batch.Red);
+      this->CopyOnDevice(this->BandOffset + black, batch.Offset + batch.Red, blacks);
+      this->CopyOnDevice(this->Distance + red, batch.Distance, batch.Red);
+      this->CopyOnDevice(this->Distance + black, batch.Distance + batch.Red, blacks);
+      red += batch.Red;
+      black += blacks;
+    }
+    this->ReleaseBatchNodes();
+    if (size > 0)
+    {
+      Check(cudaMemcpy(offset, this->BandOffset, sizeof(std::uint16_t) * size, cudaMemcpyDeviceToHost),
+        "copying the band's node places back");
+    }
+  }
+  void ConnectBand(const std::int64_t* bricks, const std::int64_t* redStart, const std::int64_t* blackStart,
+    std::int64_t numberOfBricks, const NeighbourConstants& constants) override
+  {
+    NeighbourArrays band;
+    band.NumberOfBricks = numberOfBricks;
+    band.RedCount = this->BandRedCount;
+    band.Size = this->BandSize;
+    band.Bricks = this->ToDevice(bricks, numberOfBricks, "the band's bricks");
+    band.RedStart = this->ToDevice(redStart, numberOfBricks + 1, "the band's red starts");
+    band.BlackStart = this->ToDevice(blackStart, numberOfBricks + 1, "the band's black starts");
+    band.Offset = this->BandOffset;
+    band.Distance = this->Distance;
+    std::int32_t* adjacent = Allocate<std::int32_t>(6 * numberOfBricks, this->Bytes, this->Peak, "the adjacent bricks");
+    this->ContourMemory.push_back(
+      { adjacent, static_cast<std::size_t>(std::max<std::int64_t>(6 * numberOfBricks, 1)) * sizeof(std::int32_t) });
+    band.Adjacent = adjacent;
+    this->Neighbor = Allocate<std::uint32_t>(6 * this->BandSize, this->Bytes, this->Peak, "the neighbour table");
+    band.Neighbor = this->Neighbor;
+    this->For(0, numberOfBricks, AdjacentBricksKernel{ band, constants });
+    this->For(0, this->BandSize, NeighboursKernel{ band, constants });
+    Check(cudaDeviceSynchronize(), "the neighbour table");
+    this->ReleaseContour(); // the copies above
+  }
+  void DownloadBand(double* distance, std::uint32_t* neighbor) override
+  {
+    if (this->BandSize > 0)
+    {
+      Check(cudaMemcpy(distance, this->Distance, sizeof(double) * this->BandSize, cudaMemcpyDeviceToHost),
+        "copying the band's distances back");
+      Check(cudaMemcpy(neighbor, this->Neighbor, sizeof(std::uint32_t) * 6 * this->BandSize, cudaMemcpyDeviceToHost),
+        "copying the neighbour table back");
     }
   }
   void FreePoints() override
@@ -310,6 +384,7 @@ public:
     Release(this->BucketStart, this->NumberOfBricks + 1, this->Bytes);
     this->ReleaseBatch();
     this->ReleaseNodes();
+    this->ReleaseBatchNodes();
   }
 
   void ContourCounts(const ContourArrays& band, std::int64_t numberOfNodes, const ContourConstants& constants,
@@ -483,11 +558,35 @@ private:
   {
     Release(this->RedCount, this->NodeCapacity, this->Bytes);
     Release(this->BlackCount, this->NodeCapacity, this->Bytes);
-    Release(this->First, this->NodeCapacity, this->Bytes);
+    Release(this->RedFirst, this->NodeCapacity, this->Bytes);
+    Release(this->BlackFirst, this->NodeCapacity, this->Bytes);
     Release(this->Inside, 8 * this->NodeCapacity, this->Bytes);
-    Release(this->NodeOffset, 512 * this->NodeCapacity, this->Bytes);
-    Release(this->NodeDistance, 512 * this->NodeCapacity, this->Bytes);
     this->NodeCapacity = 0;
+  }
+  void ReleaseBatchNodes()
+  {
+    for (BatchNodes& batch : this->Batches)
+    {
+      Release(batch.Offset, batch.Size, this->Bytes);
+      Release(batch.Distance, batch.Size, this->Bytes);
+    }
+    this->Batches.clear();
+  }
+  /// A band built before (StoreBand, ConnectBand) and not evolved.
+  void ReleaseBand()
+  {
+    Release(this->BandOffset, this->BandSize, this->Bytes);
+    Release(this->Distance, this->BandSize, this->Bytes);
+    Release(this->Neighbor, 6 * this->BandSize, this->Bytes);
+    this->BandSize = 0;
+  }
+  template <typename T>
+  void CopyOnDevice(T* to, const T* from, std::int64_t count)
+  {
+    if (count > 0)
+    {
+      Check(cudaMemcpy(to, from, sizeof(T) * count, cudaMemcpyDeviceToDevice), "joining the band's batches");
+    }
   }
   template <typename Kernel>
   void For(std::int64_t begin, std::int64_t end, const Kernel& kernel)
@@ -530,14 +629,28 @@ private:
   std::int64_t* Bricks = nullptr;
   double* BrickDistance = nullptr;
   std::uint8_t* Covered = nullptr;
-  // The band nodes of a batch (BandNodeArrays).
+  // The band nodes of a batch (BandNodeArrays): the counts' buffers, and
+  // each batch's list until StoreBand.
   std::int64_t NodeCapacity = 0;
   std::int32_t* RedCount = nullptr;
   std::int32_t* BlackCount = nullptr;
-  std::int64_t* First = nullptr;
+  std::int64_t* RedFirst = nullptr;
+  std::int64_t* BlackFirst = nullptr;
   std::uint64_t* Inside = nullptr;
-  std::uint16_t* NodeOffset = nullptr;
-  double* NodeDistance = nullptr;
+  struct BatchNodes
+  {
+    std::int64_t Red = 0;  ///< its red nodes first
+    std::int64_t Size = 0; ///< all of them
+    std::uint16_t* Offset = nullptr;
+    double* Distance = nullptr;
+  };
+  std::vector<BatchNodes> Batches;
+  // The band built here (StoreBand, ConnectBand): its Offset until the
+  // evolution's Upload; Distance and Neighbor below, until InitialField and
+  // the launcher's end.
+  std::int64_t BandSize = 0;
+  std::int64_t BandRedCount = 0;
+  std::uint16_t* BandOffset = nullptr;
   // The dense volume (DenseArrays): on the device in V, the host's in
   // HostDense, until DenseDownload.
   DenseArrays V;

@@ -60,9 +60,8 @@ void LauncherDistance::Compute(
   }
 }
 
-void LauncherDistance::CollectNodes(const std::int64_t* bricks, std::int64_t count, double coverRadius,
-  double lower, double upper, bool whole, std::int32_t* red, std::int32_t* black, std::uint64_t* inside,
-  UninitializedVector<std::uint16_t>& offset, UninitializedVector<double>& distance)
+void LauncherDistance::CountNodes(const std::int64_t* bricks, std::int64_t count, double coverRadius, double lower,
+  double upper, bool whole, std::int32_t* red, std::int32_t* black, std::uint64_t* inside)
 {
   BandNodeConstants constants;
   constants.Grid = DistanceConstantsOf(this->Distance, this->Dense ? 0.0 : coverRadius);
@@ -74,7 +73,31 @@ void LauncherDistance::CollectNodes(const std::int64_t* bricks, std::int64_t cou
   {
     this->Launcher.DenseBricks(count); // phi0 and d of eq. (2), (6) into the dense arrays
   }
-  this->Launcher.BandNodes(count, constants, red, black, inside, offset, distance);
+  this->Launcher.BandNodes(count, constants, red, black, inside);
+}
+
+void LauncherDistance::StoreNodes(std::int64_t redCount, std::int64_t size, std::uint16_t* offset)
+{
+  this->Launcher.StoreBand(redCount, size, offset);
+}
+
+void LauncherDistance::ConnectNeighbours(const NarrowBand& band, double offsetDistance)
+{
+  NeighbourConstants constants;
+  for (int a = 0; a < 3; ++a)
+  {
+    constants.BrickDims[a] = this->Distance.GetBrickDims()[a];
+  }
+  constants.Offset = offsetDistance;
+  this->Launcher.ConnectBand(band.Bricks.data(), band.RedStart.data(), band.BlackStart.data(),
+    static_cast<std::int64_t>(band.Bricks.size()), constants);
+}
+
+void DownloadBand(EvolutionLauncher& launcher, NarrowBand& band)
+{
+  band.Distance.resize(static_cast<std::size_t>(band.Size()));
+  band.Neighbor.resize(static_cast<std::size_t>(6 * band.Size()));
+  launcher.DownloadBand(band.Distance.data(), band.Neighbor.data());
 }
 
 } // namespace device

@@ -9,12 +9,16 @@
 // are written to be on the GPU too (not yet run there), so the band is the
 // CPU's.
 //
-// The band's nodes of each batch are picked on the device too (CollectNodes):
-// only they come back. The dense volume, when asked for, is filled from
-// each batch's distances on the device too (FillDense, nvVolumeKernels.h). What stays on the
-// host for now: the points' sort into bricks (TruncatedDistance's
-// constructor), the bricks to visit (ReachedBricks), the band's arrays
-// stored in order and its neighbours (nvNarrowBand.cxx, steps 2 and 3).
+// The band is built on the device too (BuildsBand: steps 1 to 3): each
+// batch's band nodes are picked there and kept, only their counts and
+// Inside bits come back; step 2 joins the batches there and sends Offset
+// back (2 bytes a node), step 3 makes the neighbour table there. The
+// distances and the neighbour table stay on the device for the evolution
+// (nvDeviceEvolution.h). The dense volume, when asked for, is filled from
+// each batch's distances on the device too (FillDense, nvVolumeKernels.h).
+// What stays on the host for now: the points' sort into bricks
+// (TruncatedDistance's constructor), the bricks to visit (ReachedBricks),
+// and step 2's tables from the counts (one sum over the bricks).
 #ifndef nvDeviceDistance_h
 #define nvDeviceDistance_h
 
@@ -57,12 +61,13 @@ public:
   /// Throws DeviceError when the device fails.
   void Compute(const std::int64_t* bricks, std::int64_t count, double coverRadius, double* distance,
     std::uint8_t* covered) override;
-  /// The band's nodes picked on the device too (BandCountKernel,
-  /// BandCompactKernel): only they come back. Throws DeviceError.
-  bool PicksNodes() const override { return true; }
-  void CollectNodes(const std::int64_t* bricks, std::int64_t count, double coverRadius, double lower, double upper,
-    bool whole, std::int32_t* red, std::int32_t* black, std::uint64_t* inside,
-    UninitializedVector<std::uint16_t>& offset, UninitializedVector<double>& distance) override;
+  /// Steps 1 to 3 on the device (BandNodes, StoreBand, ConnectBand), the
+  /// band held there for the launcher's evolution. Throw DeviceError.
+  bool BuildsBand() const override { return true; }
+  void CountNodes(const std::int64_t* bricks, std::int64_t count, double coverRadius, double lower, double upper,
+    bool whole, std::int32_t* red, std::int32_t* black, std::uint64_t* inside) override;
+  void StoreNodes(std::int64_t redCount, std::int64_t size, std::uint16_t* offset) override;
+  void ConnectNeighbours(const NarrowBand& band, double offsetDistance) override;
 
 private:
   const TruncatedDistance& Distance;
@@ -70,6 +75,11 @@ private:
   std::int64_t Batch;
   bool Dense = false;
 };
+
+/// The distances and neighbour table of the band that `launcher` built
+/// (BuildNarrowBand with a LauncherDistance) into `band`, as the CPU's band
+/// holds them: for the checks against it. Throws DeviceError.
+void DownloadBand(EvolutionLauncher& launcher, NarrowBand& band);
 
 } // namespace device
 } // namespace nv

@@ -68,7 +68,11 @@ BandValues Evolve(const NarrowBand& band, const Parameters& parameters, Evolutio
 {
   const std::int64_t size = band.Size();
   const EvolutionConstants constants = ConstantsOf(parameters);
-  launcher.Upload(size, band.Neighbor.data(), band.Distance.data(), 1.0 - parameters.Delta, -1.0 + parameters.Delta);
+  // A band built by the launcher (BuildNarrowBand with a LauncherDistance)
+  // has its distances and neighbour table there only: null arrays say so.
+  const bool held = band.Neighbor.empty() && size > 0;
+  launcher.Upload(size, held ? nullptr : band.Neighbor.data(), held ? nullptr : band.Distance.data(),
+    1.0 - parameters.Delta, -1.0 + parameters.Delta);
   launcher.InitialField(constants); // eq. (2)
   launcher.Coefficients(constants); // g of eq. (4) or (3), the coefficients of (10) and (12)
   double omega = parameters.Relaxation > 0.0 ? parameters.Relaxation : 1.0;

@@ -29,8 +29,9 @@ namespace device
 EvolutionConstants ConstantsOf(const Parameters& parameters);
 
 /**
- * Evolves phi on `band` (its distances and neighbour table, unchanged) with
- * `launcher`: phi^0, then time steps until the relative change drops below
+ * Evolves phi on `band` (its distances and neighbour table, unchanged; or,
+ * where the launcher built the band and `band` has no neighbour table, the
+ * launcher's) with `launcher`: phi^0, then time steps until the relative change drops below
  * ConvergenceTolerance (if > 0) or MaximumNumberOfIterations steps are done,
  * or the monitor asks to stop. Returns phi at the band's nodes and the two
  * Dirichlet slots (L + 2 values, as AllenCahnSolver::GetPhi); `reports`

@@ -443,9 +443,11 @@ struct DistanceKernel
  * - Distance, Covered, Bricks: DistanceArrays' (read here).
  * - RedCount, BlackCount: int32, a brick: its band nodes of each colour
  *   (at most 512).
- * - First: int64, a brick: where its nodes go in NodeOffset and
- *   NodeDistance, its red ones first, then its black ones (the host's sums
- *   of the counts over the bricks before it in the batch).
+ * - RedFirst, BlackFirst: int64, a brick: where its red and its black
+ *   nodes go in NodeOffset and NodeDistance, which hold the batch's red
+ *   nodes first, brick after brick, then its black ones (the host's sums of
+ *   the counts over the bricks before it), so that step 2 joins the batches
+ *   by two copies each (StoreBand).
  * - NodeOffset: uint16, a band node: i + 8 (j + 8 k) in its brick, as
  *   NarrowBand::Offset.
  * - NodeDistance: double, a band node: its d, as NarrowBand::Distance.
@@ -459,7 +461,8 @@ struct BandNodeArrays
   const std::uint8_t* Covered = nullptr;
   std::int32_t* RedCount = nullptr;
   std::int32_t* BlackCount = nullptr;
-  const std::int64_t* First = nullptr;
+  const std::int64_t* RedFirst = nullptr;
+  const std::int64_t* BlackFirst = nullptr;
   std::uint16_t* NodeOffset = nullptr;
   double* NodeDistance = nullptr;
   std::uint64_t* Inside = nullptr;
@@ -524,8 +527,9 @@ struct BandCountKernel
   }
 };
 
-/// Writes batch brick c's band nodes from First[c] on, red ones then black
-/// ones, each in ascending node order (as CollectBandNodes' lists).
+/// Writes batch brick c's red band nodes from RedFirst[c] on and its black
+/// ones from BlackFirst[c] on, each in ascending node order (as
+/// CollectBandNodes' lists).
 struct BandCompactKernel
 {
   BandNodeArrays A;
@@ -539,7 +543,7 @@ struct BandCompactKernel
     std::int64_t first[3], last[3];
     BrickNodeRange(C.Grid, A.Bricks[c], first, last);
     const double* d = A.Distance + 512 * c;
-    std::int64_t red = A.First[c], black = A.First[c] + A.RedCount[c];
+    std::int64_t red = A.RedFirst[c], black = A.BlackFirst[c];
     for (int n = 0; n < 512; ++n)
     {
       bool isRed = false;
@@ -549,6 +553,150 @@ struct BandCompactKernel
         A.NodeOffset[s] = static_cast<std::uint16_t>(n);
         A.NodeDistance[s] = d[n];
       }
+    }
+  }
+};
+
+// ---------------------------------------------------------------------------
+// The band's neighbour table of step 3 (nvNarrowBand.cxx's IndexBricks and
+// ConnectNeighbours), built where the band's nodes are, so that neither it
+// nor the distances cross to the host and back before the evolution.
+
+/**
+ * The band after step 2, as both sides hold it. Precision, array by array:
+ *
+ * - Bricks: int64, NumberOfBricks, ascending: NarrowBand::Bricks.
+ * - RedStart, BlackStart: int64, NumberOfBricks + 1: NarrowBand's (a
+ *   brick's red nodes are [RedStart[a], RedStart[a + 1]), the black ones
+ *   likewise, the black ones after all the red ones).
+ * - Offset: uint16, Size: NarrowBand::Offset, ascending within a brick's
+ *   nodes of one colour.
+ * - Distance: double, Size: NarrowBand::Distance (only its side of l is
+ *   read here, for the Dirichlet slot).
+ * - Adjacent: int32, 6 a brick: the slot in Bricks of the brick across each
+ *   face (-x, +x, -y, +y, -z, +z), -1 for none (IndexBricks').
+ * - Neighbor: uint32, 6 a node: NarrowBand::Neighbor, the same values.
+ */
+struct NeighbourArrays
+{
+  std::int64_t NumberOfBricks = 0;
+  std::int64_t RedCount = 0;
+  std::int64_t Size = 0;
+  const std::int64_t* Bricks = nullptr;
+  const std::int64_t* RedStart = nullptr;
+  const std::int64_t* BlackStart = nullptr;
+  const std::uint16_t* Offset = nullptr;
+  const double* Distance = nullptr;
+  std::int32_t* Adjacent = nullptr;
+  std::uint32_t* Neighbor = nullptr;
+};
+
+struct NeighbourConstants
+{
+  std::int64_t BrickDims[3] = { 0, 0, 0 };
+  double Offset = 0.0; ///< l: phi0 > 0 exactly when d < l (eq. 2)
+};
+
+/// The index of `value` in the ascending values [begin, end) of `sorted`,
+/// or -1 when it is not there (a binary search: std::lower_bound is not
+/// device code).
+template <typename T>
+NV_HD inline std::int64_t IndexOf(const T* sorted, std::int64_t begin, std::int64_t end, T value)
+{
+  const std::int64_t last = end;
+  while (begin < end) // the first index whose value is not below `value`
+  {
+    const std::int64_t middle = begin + (end - begin) / 2;
+    if (sorted[middle] < value)
+    {
+      begin = middle + 1;
+    }
+    else
+    {
+      end = middle;
+    }
+  }
+  return begin < last && sorted[begin] == value ? begin : -1;
+}
+
+/// The last index i < count with sorted[i] <= value, or -1 (sorted
+/// ascending).
+NV_HD inline std::int64_t LastAtOrBelow(const std::int64_t* sorted, std::int64_t count, std::int64_t value)
+{
+  std::int64_t begin = 0, end = count; // the answer is begin - 1 once they meet
+  while (begin < end)
+  {
+    const std::int64_t middle = begin + (end - begin) / 2;
+    if (sorted[middle] <= value)
+    {
+      begin = middle + 1;
+    }
+    else
+    {
+      end = middle;
+    }
+  }
+  return begin - 1;
+}
+
+/// Brick slot a's six adjacent slots, as IndexBricks (a brick off the band
+/// or the grid: -1).
+struct AdjacentBricksKernel
+{
+  NeighbourArrays A;
+  NeighbourConstants C;
+  NV_HD void operator()(std::int64_t a) const
+  {
+    const std::int64_t b = A.Bricks[a];
+    const std::int64_t at[3] = { b % C.BrickDims[0], (b / C.BrickDims[0]) % C.BrickDims[1],
+      b / (C.BrickDims[0] * C.BrickDims[1]) };
+    for (int direction = 0; direction < 6; ++direction)
+    {
+      std::int64_t next[3] = { at[0], at[1], at[2] };
+      next[direction / 2] += (direction % 2) ? 1 : -1;
+      const bool inGrid = next[direction / 2] >= 0 && next[direction / 2] < C.BrickDims[direction / 2];
+      A.Adjacent[6 * a + direction] = inGrid
+        ? static_cast<std::int32_t>(IndexOf(A.Bricks, 0, A.NumberOfBricks,
+            next[0] + C.BrickDims[0] * (next[1] + C.BrickDims[1] * next[2])))
+        : -1;
+    }
+  }
+};
+
+/**
+ * Band node s's six neighbours, as ConnectNeighbours: the neighbour at place
+ * q of brick slot b (its own brick, or the one across the face it lies on)
+ * is the band node with that place among b's nodes of the other colour,
+ * found by a binary search there (ConnectNeighbours reads a rank table
+ * instead: the same node, so the same index); a neighbour off the band is
+ * the Dirichlet slot of s's side (eq. 5). s's brick is found by a binary
+ * search of its colour's starts.
+ */
+struct NeighboursKernel
+{
+  NeighbourArrays A;
+  NeighbourConstants C;
+  NV_HD void operator()(std::int64_t s) const
+  {
+    const bool red = s < A.RedCount;
+    const std::int64_t* other = red ? A.BlackStart : A.RedStart;
+    const std::int64_t a = LastAtOrBelow(red ? A.RedStart : A.BlackStart, A.NumberOfBricks, s);
+    const int n = A.Offset[s];
+    const int ijk[3] = { n & 7, (n >> 3) & 7, n >> 6 };
+    const int step[3] = { 1, 8, 64 };
+    const std::uint32_t dirichlet =
+      static_cast<std::uint32_t>(A.Distance[s] < C.Offset ? A.Size : A.Size + 1);
+    for (int direction = 0; direction < 6; ++direction)
+    {
+      // Place n -/+ 1, 8 or 64 in this brick, or a side's length back in
+      // the brick across the face the node lies on.
+      const int axis = direction / 2;
+      const bool up = direction % 2 == 1;
+      const bool across = up ? ijk[axis] == 7 : ijk[axis] == 0;
+      const std::int64_t b = across ? A.Adjacent[6 * a + direction] : a;
+      const int q = n + (up ? step[axis] : -step[axis]) * (across ? -7 : 1);
+      const std::int64_t t = b >= 0 ? IndexOf(A.Offset, other[b], other[b + 1], static_cast<std::uint16_t>(q)) : -1;
+      A.Neighbor[6 * s + direction] = t >= 0 ? static_cast<std::uint32_t>(t) : dirichlet;
     }
   }
 };

@@ -23,6 +23,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace nv
 {
@@ -47,7 +48,9 @@ public:
   /// Holds the arrays of a band of `size` nodes (EvolutionArrays) and copies
   /// the neighbour table (6 per node) and the distances there; phi's two
   /// Dirichlet slots (eq. 5) get `inside` and `outside`. The host launcher
-  /// reads the band's arrays in place, which must then outlive it.
+  /// reads the band's arrays in place, which must then outlive it. Both
+  /// null: the band this launcher built (StoreBand, ConnectBand), already
+  /// there; a DeviceError if it holds none of `size` nodes.
   virtual void Upload(std::int64_t size, const std::uint32_t* neighbor, const double* distance, double inside,
     double outside) = 0;
   /// phi^0 (InitialPhiKernel) on all nodes, then the distances are freed.
@@ -84,16 +87,29 @@ public:
   /// them back, unless null (then they stay on the device for BandNodes).
   virtual void DistanceBricks(const std::int64_t* bricks, std::int64_t count, const DistanceConstants& constants,
     double* distance, std::uint8_t* covered) = 0;
-  /// After DistanceBricks on the same `count` bricks: BandCountKernel, the
-  /// sums of the counts (BandNodeArrays::First), BandCompactKernel; back
-  /// into host memory come the counts (`red`, `black`: count each), the
-  /// Inside bits (8 words a brick) and the band's nodes (`offset`,
-  /// `distance`: brick after brick, each brick's red nodes then its black
-  /// ones).
+  /// Step 1, after DistanceBricks on the same `count` bricks:
+  /// BandCountKernel, the sums of the counts (BandNodeArrays' RedFirst,
+  /// BlackFirst), BandCompactKernel into a list of the batch's band nodes,
+  /// kept here for StoreBand. Back into host memory come the counts (`red`,
+  /// `black`: count each) and the Inside bits (8 words a brick).
   virtual void BandNodes(std::int64_t count, const BandNodeConstants& constants, std::int32_t* red,
-    std::int32_t* black, std::uint64_t* inside, UninitializedVector<std::uint16_t>& offset,
-    UninitializedVector<double>& distance) = 0;
-  /// Lets the points go (their device memory freed).
+    std::int32_t* black, std::uint64_t* inside) = 0;
+  /// Step 2: the batches' lists joined into the band's Offset and Distance
+  /// (`size` nodes, the `redCount` red ones first, each colour in brick
+  /// order), held here for the evolution; the lists freed. Offset into host
+  /// memory `offset` (size values), which the outputs read.
+  virtual void StoreBand(std::int64_t redCount, std::int64_t size, std::uint16_t* offset) = 0;
+  /// Step 3, after StoreBand: the band's bricks and starts (host memory,
+  /// NarrowBand's, of `numberOfBricks` bricks) copied here,
+  /// AdjacentBricksKernel and NeighboursKernel: the neighbour table, held
+  /// here for the evolution (Upload with null arrays).
+  virtual void ConnectBand(const std::int64_t* bricks, const std::int64_t* redStart, const std::int64_t* blackStart,
+    std::int64_t numberOfBricks, const NeighbourConstants& constants) = 0;
+  /// The held band's distances (size values) and neighbour table (6 size)
+  /// into host memory, for the checks against the CPU's band.
+  virtual void DownloadBand(double* distance, std::uint32_t* neighbor) = 0;
+  /// Lets the points go (their device memory freed), with the batches'
+  /// lists of band nodes that StoreBand did not take; the held band stays.
   virtual void FreePoints() = 0;
 
   // The surface (nvSurfaceKernels.h), after the evolution:
@@ -137,6 +153,13 @@ public:
   /// The dense arrays into the host memory given to DenseBegin; then freed.
   virtual void DenseDownload() = 0;
 };
+
+/// Where each brick of a batch puts its band nodes (BandNodeArrays'
+/// RedFirst, BlackFirst) from its counts: the batch's red nodes first,
+/// brick after brick, then its black ones. count + 1 values each: the last
+/// red one is the batch's number of red nodes, the last black one of all.
+void FirstNodes(const std::int32_t* red, const std::int32_t* black, std::int64_t count,
+  std::vector<std::int64_t>& redFirst, std::vector<std::int64_t>& blackFirst);
 
 /// The host launcher: the kernels over nv::ParallelFor and its reductions.
 std::unique_ptr<EvolutionLauncher> MakeHostLauncher();

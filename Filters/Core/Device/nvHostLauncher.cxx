@@ -18,6 +18,23 @@ namespace device
 {
 EvolutionLauncher::~EvolutionLauncher() = default;
 
+void FirstNodes(const std::int32_t* red, const std::int32_t* black, std::int64_t count,
+  std::vector<std::int64_t>& redFirst, std::vector<std::int64_t>& blackFirst)
+{
+  redFirst.resize(static_cast<std::size_t>(count + 1));
+  blackFirst.resize(static_cast<std::size_t>(count + 1));
+  redFirst[0] = 0;
+  for (std::int64_t c = 0; c < count; ++c)
+  {
+    redFirst[c + 1] = redFirst[c] + red[c];
+  }
+  blackFirst[0] = redFirst[count];
+  for (std::int64_t c = 0; c < count; ++c)
+  {
+    blackFirst[c + 1] = blackFirst[c] + black[c];
+  }
+}
+
 namespace
 {
 constexpr std::int64_t Grain = 4096;
@@ -78,6 +95,16 @@ public:
     this->A.Size = size;
     this->A.Neighbor = neighbor;
     this->A.Distance = distance;
+    if (!neighbor && !distance && size > 0) // the band built here (StoreBand, ConnectBand)
+    {
+      if (this->Band.Size != size || !this->Band.Neighbor)
+      {
+        throw DeviceError("The host launcher holds no band of " + std::to_string(size) + " nodes to evolve.");
+      }
+      this->A.Neighbor = this->Band.Neighbor;
+      this->A.Distance = this->Band.Distance;
+      Free(this->BandOffset); // the host has its copy
+    }
     this->A.Phi = this->Phi.data();
     this->A.Previous = this->Previous.data();
     this->A.Coupling = this->Coupling.data();
@@ -87,6 +114,8 @@ public:
   {
     For(0, this->A.Size, InitialPhiKernel{ this->A, constants });
     this->A.Distance = nullptr; // the band's: its owner frees it
+    Free(this->BandDistance); // if the band was built here
+    this->Band.Distance = nullptr;
   }
   void Coefficients(const EvolutionConstants& constants) override
   {
@@ -110,6 +139,8 @@ public:
   {
     phi.swap(this->Phi); // already in host memory
     this->A = EvolutionArrays();
+    Free(this->BandNeighbor); // if the band was built here
+    this->Band = NeighbourArrays();
   }
 
   void UploadPoints(const double* points, std::int64_t, const std::int64_t* bucketStart, std::int64_t) override
@@ -139,7 +170,7 @@ public:
     For(0, count * 512, DistanceKernel{ arrays, constants }, 8 * 512);
   }
   void BandNodes(std::int64_t count, const BandNodeConstants& constants, std::int32_t* red, std::int32_t* black,
-    std::uint64_t* inside, UninitializedVector<std::uint16_t>& offset, UninitializedVector<double>& distance) override
+    std::uint64_t* inside) override
   {
     BandNodeArrays arrays;
     arrays.Bricks = this->D.Bricks;
@@ -149,25 +180,74 @@ public:
     arrays.BlackCount = black;
     arrays.Inside = inside;
     For(0, count, BandCountKernel{ arrays, constants }, 8);
-    std::vector<std::int64_t> first(static_cast<std::size_t>(count));
-    std::int64_t total = 0;
-    for (std::int64_t c = 0; c < count; ++c)
-    {
-      first[c] = total;
-      total += red[c] + black[c];
-    }
-    offset.resize(static_cast<std::size_t>(total));
-    distance.resize(static_cast<std::size_t>(total));
-    arrays.First = first.data();
-    arrays.NodeOffset = offset.data();
-    arrays.NodeDistance = distance.data();
+    std::vector<std::int64_t> redFirst, blackFirst;
+    this->Batches.emplace_back();
+    BatchNodes& batch = this->Batches.back();
+    FirstNodes(red, black, count, redFirst, blackFirst);
+    batch.Red = redFirst[count];
+    batch.Offset.resize(static_cast<std::size_t>(blackFirst[count]));
+    batch.Distance.resize(batch.Offset.size());
+    arrays.RedFirst = redFirst.data();
+    arrays.BlackFirst = blackFirst.data();
+    arrays.NodeOffset = batch.Offset.data();
+    arrays.NodeDistance = batch.Distance.data();
     For(0, count, BandCompactKernel{ arrays, constants }, 8);
+  }
+  void StoreBand(std::int64_t redCount, std::int64_t size, std::uint16_t* offset) override
+  {
+    this->BandOffset.resize(static_cast<std::size_t>(size));
+    this->BandDistance.resize(static_cast<std::size_t>(size));
+    // Each batch's red nodes after the batches' before it, its black ones
+    // likewise after all the red ones.
+    std::int64_t red = 0, black = redCount;
+    for (BatchNodes& batch : this->Batches)
+    {
+      const std::int64_t blacks = static_cast<std::int64_t>(batch.Offset.size()) - batch.Red;
+      std::copy(batch.Offset.begin(), batch.Offset.begin() + batch.Red, this->BandOffset.begin() + red);
+      std::copy(batch.Offset.begin() + batch.Red, batch.Offset.end(), this->BandOffset.begin() + black);
+      std::copy(batch.Distance.begin(), batch.Distance.begin() + batch.Red, this->BandDistance.begin() + red);
+      std::copy(batch.Distance.begin() + batch.Red, batch.Distance.end(), this->BandDistance.begin() + black);
+      red += batch.Red;
+      black += blacks;
+      Free(batch.Offset);
+      Free(batch.Distance);
+    }
+    std::vector<BatchNodes>().swap(this->Batches);
+    std::copy(this->BandOffset.begin(), this->BandOffset.end(), offset);
+    this->Band = NeighbourArrays();
+    this->Band.Size = size;
+    this->Band.RedCount = redCount;
+    this->Band.Offset = this->BandOffset.data();
+    this->Band.Distance = this->BandDistance.data();
+  }
+  void ConnectBand(const std::int64_t* bricks, const std::int64_t* redStart, const std::int64_t* blackStart,
+    std::int64_t numberOfBricks, const NeighbourConstants& constants) override
+  {
+    this->Adjacent.resize(static_cast<std::size_t>(6 * numberOfBricks));
+    this->BandNeighbor.resize(static_cast<std::size_t>(6 * this->Band.Size));
+    this->Band.NumberOfBricks = numberOfBricks;
+    this->Band.Bricks = bricks; // the host's, read in place
+    this->Band.RedStart = redStart;
+    this->Band.BlackStart = blackStart;
+    this->Band.Adjacent = this->Adjacent.data();
+    this->Band.Neighbor = this->BandNeighbor.data();
+    For(0, numberOfBricks, AdjacentBricksKernel{ this->Band, constants }, 64);
+    For(0, this->Band.Size, NeighboursKernel{ this->Band, constants });
+    std::vector<std::int32_t>().swap(this->Adjacent);
+    this->Band.Bricks = this->Band.RedStart = this->Band.BlackStart = nullptr;
+    this->Band.Adjacent = nullptr;
+  }
+  void DownloadBand(double* distance, std::uint32_t* neighbor) override
+  {
+    std::copy(this->BandDistance.begin(), this->BandDistance.end(), distance);
+    std::copy(this->BandNeighbor.begin(), this->BandNeighbor.end(), neighbor);
   }
   void FreePoints() override
   {
     this->D = DistanceArrays();
     Free(this->BatchDistance);
     std::vector<std::uint8_t>().swap(this->BatchCovered);
+    std::vector<BatchNodes>().swap(this->Batches);
   }
 
   void ContourCounts(const ContourArrays& band, std::int64_t, const ContourConstants& constants,
@@ -220,6 +300,19 @@ public:
   void DenseDownload() override { this->V = DenseArrays(); } // already in host memory
 
 private:
+  /// One batch's band nodes (BandNodes), its Red red ones first.
+  struct BatchNodes
+  {
+    std::int64_t Red = 0;
+    UninitializedVector<std::uint16_t> Offset;
+    UninitializedVector<double> Distance;
+  };
+  std::vector<BatchNodes> Batches;
+  NeighbourArrays Band; ///< the band built here, until the evolution
+  UninitializedVector<std::uint16_t> BandOffset;
+  UninitializedVector<double> BandDistance;
+  UninitializedVector<std::uint32_t> BandNeighbor;
+  std::vector<std::int32_t> Adjacent;
   DenseArrays V;
   DenseConstants VC;
   ContourArrays K;

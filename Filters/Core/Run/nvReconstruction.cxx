@@ -597,11 +597,11 @@ bool Reconstruction::BuildBand(std::vector<double> xyz)
     this->Stages.Add("distance", sorting);
     if (this->Launcher)
     {
-      // Device GPU: the distances of eq. (6) and the band's nodes among
-      // them by the device's kernels, the CPU's bit for bit
-      // (nvDeviceDistance.h), and the dense arrays, if asked for, from each
-      // batch's distances on the device (nvVolumeKernels.h); the band's
-      // arrays and neighbours (steps 2 and 3) on the host.
+      // Device GPU: the distances of eq. (6) and the band built from them
+      // (steps 1 to 3) by the device's kernels, the CPU's bit for bit
+      // (nvDeviceDistance.h), its distances and neighbour table left there
+      // for the evolution; and the dense arrays, if asked for, from each
+      // batch's distances on the device (nvVolumeKernels.h).
       try
       {
         device::LauncherDistance onDevice(distance, *this->Launcher);
@@ -715,7 +715,7 @@ bool Reconstruction::EvolveOnDevice()
   // 6, with Device GPU: phi^0, g and the time steps by the device back end
   // (one process: ChooseDevice refused a distributed run), the same scheme
   // and stopping rule as the CPU's solver. The band's distances and
-  // neighbour table go to the device, phi comes back.
+  // neighbour table are on the device already (BuildBand), phi comes back.
   const auto start = std::chrono::steady_clock::now();
   std::vector<StepReport> reports;
   try
