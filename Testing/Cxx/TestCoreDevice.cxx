@@ -331,8 +331,10 @@ nv::Grid GridOf(const std::vector<double>& xyz, const nv::Parameters& parameters
 void CompareDistance(
   const char* what, const std::vector<double>& xyz, const nv::Parameters& parameters, bool someCovered)
 {
-  const nv::TruncatedDistance distance(
-    GridOf(xyz, parameters), xyz.data(), static_cast<std::int64_t>(xyz.size() / 3), parameters.Reach());
+  const nv::Grid grid = GridOf(xyz, parameters);
+  const std::int64_t numberOfPoints = static_cast<std::int64_t>(xyz.size() / 3);
+  const nv::TruncatedDistance distance(grid, xyz.data(), numberOfPoints, parameters.Reach());
+  const nv::TruncatedDistance gridOnly(grid, parameters.Reach()); // the device sorts the points
   std::unique_ptr<nv::device::EvolutionLauncher> launcher = Launcher();
   if (!launcher)
   {
@@ -345,7 +347,9 @@ void CompareDistance(
   double largest = 0.0;
   {
     // 1000 bricks a batch: several batches, the last one short.
-    nv::device::LauncherDistance device(distance, *launcher, 1000);
+    nv::device::LauncherDistance device(gridOnly, xyz.data(), numberOfPoints, *launcher, 1000);
+    // The points sorted on the device reach the CPU's bricks.
+    NV_CHECK(device.ReachedBricks() && *device.ReachedBricks() == bricks);
     // Bricks deep inside the shell tested here (covered, their distances
     // not computed); every brick's distances, none skipped, in the band's
     // check with a visitor below.
@@ -398,8 +402,8 @@ void CompareDistance(
   const nv::NarrowBand cpuBand = nv::BuildNarrowBand(distance, parameters);
   nv::NarrowBand deviceBand;
   {
-    nv::device::LauncherDistance device(distance, *launcher, 777);
-    deviceBand = nv::BuildNarrowBand(distance, parameters, nullptr, nullptr, nullptr, nullptr, &device);
+    nv::device::LauncherDistance device(gridOnly, xyz.data(), numberOfPoints, *launcher, 777);
+    deviceBand = nv::BuildNarrowBand(gridOnly, parameters, nullptr, nullptr, nullptr, nullptr, &device);
   }
   NV_CHECK(deviceBand.Distance.empty() && deviceBand.Neighbor.empty()); // held by the launcher
   nv::device::DownloadBand(*launcher, deviceBand);
@@ -420,9 +424,9 @@ void CompareDistance(
     nv::BuildNarrowBand(distance, parameters, nullptr, nullptr, visitor(cpuVisited));
   nv::NarrowBand deviceVisitedBand;
   {
-    nv::device::LauncherDistance device(distance, *launcher);
+    nv::device::LauncherDistance device(gridOnly, xyz.data(), numberOfPoints, *launcher);
     deviceVisitedBand =
-      nv::BuildNarrowBand(distance, parameters, nullptr, nullptr, visitor(deviceVisited), nullptr, &device);
+      nv::BuildNarrowBand(gridOnly, parameters, nullptr, nullptr, visitor(deviceVisited), nullptr, &device);
   }
   const bool sameVisited = cpuVisited == deviceVisited && !cpuVisited.empty() &&
     SameValues(deviceVisitedBand.Inside, cpuVisitedBand.Inside) &&

@@ -148,10 +148,11 @@ struct BrickBand
   std::vector<BandEntry> Red, Black;
 };
 
-/// Step 1: the bricks to visit, in the computed layers. Whole domain mode
-/// visits all of them.
-std::vector<std::int64_t> BricksToVisit(
-  const TruncatedDistance& distance, const Parameters& parameters, const Subdomain& part)
+/// Step 1: the bricks to visit, in the computed layers: those the points
+/// reach (as `source` found them, where it sorted the points, else as
+/// `distance` finds them). Whole domain mode visits all of them.
+std::vector<std::int64_t> BricksToVisit(const TruncatedDistance& distance, const Parameters& parameters,
+  const Subdomain& part, const BrickDistanceSource* source)
 {
   const std::int64_t bricksPerLayer = distance.GetBrickDims()[0] * distance.GetBrickDims()[1];
   std::vector<std::int64_t> bricks;
@@ -164,7 +165,14 @@ std::vector<std::int64_t> BricksToVisit(
   }
   else
   {
-    for (std::int64_t b : distance.ReachedBricks())
+    std::vector<std::int64_t> found;
+    const std::vector<std::int64_t>* reached = source ? source->ReachedBricks() : nullptr;
+    if (!reached)
+    {
+      found = distance.ReachedBricks();
+      reached = &found;
+    }
+    for (std::int64_t b : *reached)
     {
       if (part.Computed.Contains(b / bricksPerLayer))
       {
@@ -553,7 +561,7 @@ NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& 
     part = &whole;
   }
   // Step 1: the bricks to visit; then their band nodes (steps 1-3).
-  band.Bricks = BricksToVisit(distance, parameters, *part);
+  band.Bricks = BricksToVisit(distance, parameters, *part, source);
   const bool built = source && source->BuildsBand() && !visitor
     ? BuildBandOnSource(*source, distance, parameters, monitor, *times, band)
     : BuildBandOnHost(distance, parameters, monitor, visitor, source, *times, band);

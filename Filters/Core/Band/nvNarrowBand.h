@@ -112,6 +112,10 @@ public:
   virtual ~BrickDistanceSource();
   /// The most bricks a call of Compute takes.
   virtual std::int64_t BatchSize() const = 0;
+  /// Where the source sorted the points itself (the TruncatedDistance then
+  /// has none): the bricks they reach, as TruncatedDistance::ReachedBricks.
+  /// Null otherwise.
+  virtual const std::vector<std::int64_t>* ReachedBricks() const { return nullptr; }
   /**
    * For the `count` bricks `bricks` (grid brick indices): covered[a] =
    * BrickWithin(bricks[a], coverRadius), or 0 for all when coverRadius is 0;

@@ -9,8 +9,7 @@
 namespace nv
 {
 
-TruncatedDistance::TruncatedDistance(
-  const Grid& grid, const double* points, std::int64_t numberOfPoints, double reach)
+TruncatedDistance::TruncatedDistance(const Grid& grid, double reach)
   : GridNodes(grid)
   , Reach(reach)
 {
@@ -18,6 +17,12 @@ TruncatedDistance::TruncatedDistance(
   {
     this->BrickDims[a] = (grid.Dims[a] + BrickSize - 1) / BrickSize;
   }
+}
+
+TruncatedDistance::TruncatedDistance(
+  const Grid& grid, const double* points, std::int64_t numberOfPoints, double reach)
+  : TruncatedDistance(grid, reach)
+{
   const std::int64_t bricks = this->GetNumberOfBricks();
 
   // Counting sort of the points by brick. Coordinates are kept relative to the

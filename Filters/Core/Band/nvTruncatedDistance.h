@@ -43,6 +43,13 @@ public:
    * grid's box. reach: l + eta/2; distances at or beyond it are truncated.
    */
   TruncatedDistance(const Grid& grid, const double* points, std::int64_t numberOfPoints, double reach);
+  /**
+   * The grid and the reach only, without points: for a source that sorts and
+   * holds the points itself (the device back end, nvDeviceDistance.h), which
+   * gives the distances and the bricks reached. ComputeBrick, BrickWithin
+   * and ReachedBricks must not be called on it.
+   */
+  TruncatedDistance(const Grid& grid, double reach);
 
   const Grid& GetGrid() const { return this->GridNodes; }
   double GetReach() const { return this->Reach; }
@@ -71,13 +78,6 @@ public:
    * brick's own points first.
    */
   bool BrickWithin(std::int64_t brick, double radius) const;
-
-  /// The points as ComputeBrick reads them, for the device back end
-  /// (nvDeviceDistance.h): xyz triples relative to the grid's origin, in
-  /// cells ((x - origin) / h), sorted by brick; the points of brick b are
-  /// [GetBucketStart()[b], GetBucketStart()[b + 1]).
-  const std::vector<double>& GetSortedPoints() const { return this->Points; }
-  const std::vector<std::int64_t>& GetBucketStart() const { return this->BucketStart; }
 
 private:
   std::int64_t BrickOfPoint(const double p[3], int axis) const;

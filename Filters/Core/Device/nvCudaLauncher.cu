@@ -219,18 +219,51 @@ public:
       "copying phi back");
   }
 
-  void UploadPoints(const double* points, std::int64_t numberOfPoints, const std::int64_t* bucketStart,
-    std::int64_t numberOfBricks) override
+  void SortPoints(const double* cloud, std::int64_t numberOfPoints, const PointConstants& constants,
+    std::vector<std::int64_t>& reached) override
   {
+    PointArrays a;
+    a.NumberOfPoints = numberOfPoints;
+    a.NumberOfBricks = constants.BrickDims[0] * constants.BrickDims[1] * constants.BrickDims[2];
+    const std::int64_t chunks = (a.NumberOfBricks + ChunkBricks - 1) / ChunkBricks;
     this->NumberOfPoints = numberOfPoints;
-    this->NumberOfBricks = numberOfBricks;
+    this->NumberOfBricks = a.NumberOfBricks;
+    // Held until FreePoints: the sorted points and their buckets.
     this->Points = Allocate<double>(3 * numberOfPoints, this->Bytes, this->Peak, "the points");
-    this->BucketStart = Allocate<std::int64_t>(numberOfBricks + 1, this->Bytes, this->Peak, "the points' bricks");
-    Check(cudaMemcpy(this->Points, points, sizeof(double) * 3 * numberOfPoints, cudaMemcpyHostToDevice),
-      "copying the points");
-    Check(cudaMemcpy(this->BucketStart, bucketStart, sizeof(std::int64_t) * (numberOfBricks + 1),
-            cudaMemcpyHostToDevice),
-      "copying the points' bricks");
+    this->BucketStart = Allocate<std::int64_t>(a.NumberOfBricks + 1, this->Bytes, this->Peak, "the points' bricks");
+    // Freed below, through ScratchMemory: the cloud, each point's brick,
+    // the buckets' free slots, the marks of the reached bricks, the chunks.
+    a.Cloud = this->ToDevice(cloud, 3 * numberOfPoints, "the cloud");
+    a.BrickOf = this->Scratch<std::int64_t>(numberOfPoints, "each point's brick");
+    a.Next = this->Scratch<std::int64_t>(a.NumberOfBricks, "the buckets' free slots");
+    a.Reached = this->Scratch<std::uint8_t>(a.NumberOfBricks, "the reached bricks' marks");
+    a.ChunkCount = this->Scratch<std::int64_t>(chunks, "the chunks' sums");
+    std::int64_t* chunkFirst = this->Scratch<std::int64_t>(chunks, "the chunks' starts");
+    a.ChunkFirst = chunkFirst;
+    a.BucketStart = this->BucketStart;
+    a.Points = this->Points;
+    Check(cudaMemset(this->BucketStart, 0, sizeof(std::int64_t) * (a.NumberOfBricks + 1)), "clearing the counts");
+    Check(cudaMemset(a.Reached, 0, static_cast<std::size_t>(a.NumberOfBricks)), "clearing the marks");
+    std::vector<std::int64_t> sums(static_cast<std::size_t>(chunks)), firsts;
+    // The counting sort: counts, their sums chunk by chunk, the points placed.
+    this->For(0, numberOfPoints, BucketPointsKernel{ a, constants });
+    this->For(0, chunks, ChunkSumKernel{ a });
+    this->ChunkFirsts(a.ChunkCount, chunkFirst, sums, firsts);
+    this->For(0, chunks, ChunkScanKernel{ a });
+    this->For(0, numberOfPoints, ScatterPointsKernel{ a, constants });
+    // The bricks reached, marked and listed in order.
+    this->For(0, numberOfPoints, ReachKernel{ a, constants });
+    this->For(0, chunks, ReachCountKernel{ a });
+    const std::int64_t total = this->ChunkFirsts(a.ChunkCount, chunkFirst, sums, firsts);
+    a.ReachList = this->Scratch<std::int64_t>(total, "the reached bricks");
+    this->For(0, chunks, ReachListKernel{ a });
+    reached.resize(static_cast<std::size_t>(total));
+    if (total > 0)
+    {
+      Check(cudaMemcpy(reached.data(), a.ReachList, sizeof(std::int64_t) * total, cudaMemcpyDeviceToHost),
+        "copying the reached bricks back");
+    }
+    this->ReleaseScratch(); // the arrays above but the sorted points and their buckets
   }
   void DistanceBricks(const std::int64_t* bricks, std::int64_t count, const DistanceConstants& constants,
     double* distance, std::uint8_t* covered) override
@@ -357,16 +390,13 @@ public:
     band.BlackStart = this->ToDevice(blackStart, numberOfBricks + 1, "the band's black starts");
     band.Offset = this->BandOffset;
     band.Distance = this->Distance;
-    std::int32_t* adjacent = Allocate<std::int32_t>(6 * numberOfBricks, this->Bytes, this->Peak, "the adjacent bricks");
-    this->ContourMemory.push_back(
-      { adjacent, static_cast<std::size_t>(std::max<std::int64_t>(6 * numberOfBricks, 1)) * sizeof(std::int32_t) });
-    band.Adjacent = adjacent;
+    band.Adjacent = this->Scratch<std::int32_t>(6 * numberOfBricks, "the adjacent bricks");
     this->Neighbor = Allocate<std::uint32_t>(6 * this->BandSize, this->Bytes, this->Peak, "the neighbour table");
     band.Neighbor = this->Neighbor;
     this->For(0, numberOfBricks, AdjacentBricksKernel{ band, constants });
     this->For(0, this->BandSize, NeighboursKernel{ band, constants });
     Check(cudaDeviceSynchronize(), "the neighbour table");
-    this->ReleaseContour(); // the copies above
+    this->ReleaseScratch(); // the copies above
   }
   void DownloadBand(double* distance, std::uint32_t* neighbor) override
   {
@@ -486,7 +516,7 @@ public:
                                                                 : this->ToDevice(band.Phi, numberOfNodes, "phi");
     this->For(0, numberOfBricks, DenseBandKernel{ onDevice, this->V, this->VC });
     Check(cudaDeviceSynchronize(), "the dense volume's band");
-    this->ReleaseContour(); // the band's copies
+    this->ReleaseScratch(); // the band's copies
   }
   void DenseDownload() override
   {
@@ -516,26 +546,55 @@ private:
     Release(this->V.Band, nodes, this->Bytes);
     this->HostDense = DenseArrays();
   }
-  /// A device copy of `count` values of host memory (freed by ReleaseContour).
+  /// A device copy of `count` values of host memory (freed by ReleaseScratch).
   template <typename T>
   T* ToDevice(const T* host, std::int64_t count, const char* what)
   {
-    T* memory = Allocate<T>(count, this->Bytes, this->Peak, what);
-    this->ContourMemory.push_back({ memory, static_cast<std::size_t>(std::max<std::int64_t>(count, 1)) * sizeof(T) });
+    T* memory = this->Scratch<T>(count, what);
     if (count > 0)
     {
       Check(cudaMemcpy(memory, host, sizeof(T) * count, cudaMemcpyHostToDevice), what);
     }
     return memory;
   }
-  void ReleaseContour()
+  /// Device memory for `count` values, freed by ReleaseScratch.
+  template <typename T>
+  T* Scratch(std::int64_t count, const char* what)
   {
-    for (const auto& held : this->ContourMemory)
+    T* memory = Allocate<T>(count, this->Bytes, this->Peak, what);
+    this->ScratchMemory.push_back({ memory, static_cast<std::size_t>(std::max<std::int64_t>(count, 1)) * sizeof(T) });
+    return memory;
+  }
+  /// The chunks' sums (`sums` on the device) to the host, where each
+  /// chunk's part begins (ChunkStarts) back to `first` on the device;
+  /// returns the total.
+  std::int64_t ChunkFirsts(const std::int64_t* sums, std::int64_t* first, std::vector<std::int64_t>& hostSums,
+    std::vector<std::int64_t>& hostFirst)
+  {
+    if (hostSums.empty())
+    {
+      return 0;
+    }
+    Check(cudaMemcpy(hostSums.data(), sums, sizeof(std::int64_t) * hostSums.size(), cudaMemcpyDeviceToHost),
+      "copying the chunks' sums back");
+    const std::int64_t total = ChunkStarts(hostSums, hostFirst);
+    Check(cudaMemcpy(first, hostFirst.data(), sizeof(std::int64_t) * hostFirst.size(), cudaMemcpyHostToDevice),
+      "copying the chunks' starts");
+    return total;
+  }
+  /// Frees what Scratch and ToDevice gave.
+  void ReleaseScratch()
+  {
+    for (const auto& held : this->ScratchMemory)
     {
       cudaFree(held.first);
       this->Bytes -= static_cast<double>(held.second);
     }
-    this->ContourMemory.clear();
+    this->ScratchMemory.clear();
+  }
+  void ReleaseContour()
+  {
+    this->ReleaseScratch();
     const std::int64_t bricks = this->K.NumberOfBricks, cut = this->K.NumberOfCutBricks;
     Release(this->K.Psi, 512 * bricks, this->Bytes);
     Release(this->K.Cut, CutWords * cut, this->Bytes);
@@ -657,13 +716,15 @@ private:
   DenseArrays HostDense;
   DenseConstants VC;
   // The surface's arrays (ContourArrays): the uploaded ones in
-  // ContourMemory, the others in K, until ContourGeometry ends.
+  // ScratchMemory, the others in K, until ContourGeometry ends.
   ContourArrays K;
   ContourConstants KC;
   std::int64_t ContourNodes = 0;
   std::int64_t NumberOfVertices = 0;
   std::int64_t NumberOfTriangles = 0;
-  std::vector<std::pair<void*, std::size_t>> ContourMemory;
+  /// Copies and work arrays of one call (the sort's, the neighbour table's,
+  /// the surface's uploads): pointer and bytes, freed by ReleaseScratch.
+  std::vector<std::pair<void*, std::size_t>> ScratchMemory;
   EvolutionArrays A;
   std::uint32_t* Neighbor = nullptr;
   double* Distance = nullptr;

@@ -34,14 +34,24 @@ DistanceConstants DistanceConstantsOf(const TruncatedDistance& distance, double 
   return c;
 }
 
-LauncherDistance::LauncherDistance(
-  const TruncatedDistance& distance, EvolutionLauncher& launcher, std::int64_t batch)
-  : Distance(distance)
+LauncherDistance::LauncherDistance(const TruncatedDistance& grid, const double* cloud, std::int64_t numberOfPoints,
+  EvolutionLauncher& launcher, std::int64_t batch)
+  : Distance(grid)
   , Launcher(launcher)
   , Batch(std::max<std::int64_t>(1, batch))
+  , Sorted(true)
 {
-  launcher.UploadPoints(distance.GetSortedPoints().data(), distance.GetNumberOfPoints(),
-    distance.GetBucketStart().data(), distance.GetNumberOfBricks());
+  const Grid& nodes = grid.GetGrid();
+  PointConstants constants;
+  for (int a = 0; a < 3; ++a)
+  {
+    constants.Origin[a] = nodes.Origin[a];
+    constants.GridDims[a] = nodes.Dims[a];
+    constants.BrickDims[a] = grid.GetBrickDims()[a];
+  }
+  constants.Spacing = nodes.Spacing;
+  constants.Reach = grid.GetReach() / nodes.Spacing; // as ReachedBricks
+  launcher.SortPoints(cloud, numberOfPoints, constants, this->Reached);
 }
 
 LauncherDistance::~LauncherDistance()

@@ -16,9 +16,11 @@
 // distances and the neighbour table stay on the device for the evolution
 // (nvDeviceEvolution.h). The dense volume, when asked for, is filled from
 // each batch's distances on the device too (FillDense, nvVolumeKernels.h).
-// What stays on the host for now: the points' sort into bricks
-// (TruncatedDistance's constructor), the bricks to visit (ReachedBricks),
-// and step 2's tables from the counts (one sum over the bricks).
+// The points are sorted into bricks there too, and the bricks they reach
+// listed (SortPoints): the cloud goes up as it is, the list comes back.
+// What stays on the host: step 2's tables from the counts (one sum over
+// the band's bricks) and the sums over chunks of 256 bricks between the
+// sort's passes.
 #ifndef nvDeviceDistance_h
 #define nvDeviceDistance_h
 
@@ -44,9 +46,14 @@ public:
   /// Bricks a batch by default: 16 MiB of distances (double, 512 a brick).
   static constexpr std::int64_t DefaultBatch = 4096;
 
-  /// Hands the points of `distance` to `launcher` (UploadPoints); both must
-  /// outlive this object, which lets the points go (FreePoints).
-  LauncherDistance(const TruncatedDistance& distance, EvolutionLauncher& launcher, std::int64_t batch = DefaultBatch);
+  /// Sorts the points `cloud` (numberOfPoints xyz triples, world
+  /// coordinates in the grid's box; host memory, read during this call
+  /// only) into bricks on `launcher`'s device (SortPoints), with the bricks
+  /// they reach: `grid` is a TruncatedDistance of the grid and the reach
+  /// only, made without points. `grid` and `launcher` must outlive this
+  /// object, which lets the points go (FreePoints).
+  LauncherDistance(const TruncatedDistance& grid, const double* cloud, std::int64_t numberOfPoints,
+    EvolutionLauncher& launcher, std::int64_t batch = DefaultBatch);
   ~LauncherDistance() override;
   LauncherDistance(const LauncherDistance&) = delete;
   LauncherDistance& operator=(const LauncherDistance&) = delete;
@@ -58,6 +65,11 @@ public:
   void FillDense() { this->Dense = true; }
 
   std::int64_t BatchSize() const override { return this->Batch; }
+  /// The bricks the points reach, where this object sorted them.
+  const std::vector<std::int64_t>* ReachedBricks() const override
+  {
+    return this->Sorted ? &this->Reached : nullptr;
+  }
   /// Throws DeviceError when the device fails.
   void Compute(const std::int64_t* bricks, std::int64_t count, double coverRadius, double* distance,
     std::uint8_t* covered) override;
@@ -74,6 +86,8 @@ private:
   EvolutionLauncher& Launcher;
   std::int64_t Batch;
   bool Dense = false;
+  bool Sorted = false;
+  std::vector<std::int64_t> Reached;
 };
 
 /// The distances and neighbour table of the band that `launcher` built

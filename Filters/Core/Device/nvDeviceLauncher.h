@@ -75,12 +75,15 @@ public:
   // The truncated distance of eq. (6) (DistanceKernel, CoveredKernel), used
   // before the evolution: nvDeviceDistance.h calls these.
 
-  /// Holds the points sorted into bricks: `points` (3 per point, in cells
-  /// from the grid's origin) and `bucketStart` (numberOfBricks + 1), copied
-  /// to the device; the host launcher reads them in place, and they must
-  /// then outlive it (until FreePoints).
-  virtual void UploadPoints(
-    const double* points, std::int64_t numberOfPoints, const std::int64_t* bucketStart, std::int64_t numberOfBricks) = 0;
+  /// Sorts the points on the device: `cloud` (host memory, 3 a point, world
+  /// coordinates, all in the grid's box) copied to the device and sorted
+  /// into the grid's bricks as TruncatedDistance's constructor does
+  /// (BucketPointsKernel, ChunkSumKernel, ChunkScanKernel,
+  /// ScatterPointsKernel), the sorted points held until FreePoints; the
+  /// bricks they reach (ReachKernel, ReachCountKernel, ReachListKernel) into
+  /// `reached`, ascending: TruncatedDistance::ReachedBricks'.
+  virtual void SortPoints(const double* cloud, std::int64_t numberOfPoints, const PointConstants& constants,
+    std::vector<std::int64_t>& reached) = 0;
   /// CoveredKernel on the `count` bricks `bricks` (host memory, kept until
   /// the next batch), then DistanceKernel on their nodes; `distance`
   /// (BrickNodes per brick) and `covered` (one per brick), host memory, get
@@ -160,6 +163,10 @@ public:
 /// red one is the batch's number of red nodes, the last black one of all.
 void FirstNodes(const std::int32_t* red, const std::int32_t* black, std::int64_t count,
   std::vector<std::int64_t>& redFirst, std::vector<std::int64_t>& blackFirst);
+
+/// Where each chunk's part begins (PointArrays::ChunkFirst) from the
+/// chunks' sums; returns their total.
+std::int64_t ChunkStarts(const std::vector<std::int64_t>& sums, std::vector<std::int64_t>& first);
 
 /// The host launcher: the kernels over nv::ParallelFor and its reductions.
 std::unique_ptr<EvolutionLauncher> MakeHostLauncher();

@@ -588,43 +588,46 @@ bool Reconstruction::BuildBand(std::vector<double> xyz)
       writeBrick = [writer](std::int64_t brick, const double* d) { writer->WriteBrick(brick, d); };
     }
   }
+  const double reach = this->ThePlan.Scheme.Reach();
+  if (this->Launcher)
+  {
+    // Device GPU: the points sorted into bricks, the distances of eq. (6)
+    // and the band built from them (steps 1 to 3) by the device's kernels,
+    // the CPU's bit for bit (nvDeviceDistance.h), its distances and
+    // neighbour table left there for the evolution; and the dense arrays,
+    // if asked for, from each batch's distances on the device
+    // (nvVolumeKernels.h).
+    try
+    {
+      const auto sorting = StageTimes::Clock::now();
+      const TruncatedDistance gridOnly(grid, reach); // the points are the device's
+      device::LauncherDistance onDevice(gridOnly, xyz.data(), static_cast<std::int64_t>(xyz.size() / 3), *this->Launcher);
+      std::vector<double>().swap(xyz);
+      this->Stages.Add("distance", sorting);
+      if (this->DenseOnDevice)
+      {
+        this->Launcher->DenseBegin(DenseArraysOf(dense), DenseConstantsOf(grid, this->ThePlan.Scheme,
+                                                           this->Volume[0], this->Volume[1]));
+        onDevice.FillDense();
+      }
+      this->Band = BuildNarrowBand(
+        gridOnly, this->ThePlan.Scheme, this->TheMonitor, &this->Part, nullptr, &this->Stages, &onDevice);
+    }
+    catch (const device::DeviceError& error)
+    {
+      this->Launcher.reset();
+      return this->Fail(error.what());
+    }
+  }
+  else
   {
     // The points sorted into bricks, for the band only: gone once it is built.
     const auto sorting = StageTimes::Clock::now();
-    const TruncatedDistance distance(
-      grid, xyz.data(), static_cast<std::int64_t>(xyz.size() / 3), this->ThePlan.Scheme.Reach());
+    const TruncatedDistance distance(grid, xyz.data(), static_cast<std::int64_t>(xyz.size() / 3), reach);
     std::vector<double>().swap(xyz);
     this->Stages.Add("distance", sorting);
-    if (this->Launcher)
-    {
-      // Device GPU: the distances of eq. (6) and the band built from them
-      // (steps 1 to 3) by the device's kernels, the CPU's bit for bit
-      // (nvDeviceDistance.h), its distances and neighbour table left there
-      // for the evolution; and the dense arrays, if asked for, from each
-      // batch's distances on the device (nvVolumeKernels.h).
-      try
-      {
-        device::LauncherDistance onDevice(distance, *this->Launcher);
-        if (this->DenseOnDevice)
-        {
-          this->Launcher->DenseBegin(DenseArraysOf(dense), DenseConstantsOf(grid, this->ThePlan.Scheme,
-                                                             this->Volume[0], this->Volume[1]));
-          onDevice.FillDense();
-        }
-        this->Band = BuildNarrowBand(
-          distance, this->ThePlan.Scheme, this->TheMonitor, &this->Part, nullptr, &this->Stages, &onDevice);
-      }
-      catch (const device::DeviceError& error)
-      {
-        this->Launcher.reset();
-        return this->Fail(error.what());
-      }
-    }
-    else
-    {
-      this->Band =
-        BuildNarrowBand(distance, this->ThePlan.Scheme, this->TheMonitor, &this->Part, writeBrick, &this->Stages);
-    }
+    this->Band =
+      BuildNarrowBand(distance, this->ThePlan.Scheme, this->TheMonitor, &this->Part, writeBrick, &this->Stages);
   }
   ReleaseFreedMemory();
   this->SetupTime = Seconds(start);
