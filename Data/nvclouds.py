@@ -109,9 +109,49 @@ def read(path):
 
 
 def points_of_file(path):
-    """The points of a .ply or .vtp file, as an (n, 3) float array."""
-    from vtkmodules.util.numpy_support import vtk_to_numpy
+    """The points of a .ply or .vtp file, as an (n, 3) float array. Without
+    VTK (a GPU machine's Python), a binary little-endian .ply is read with
+    numpy (ply_points)."""
+    try:
+        from vtkmodules.util.numpy_support import vtk_to_numpy
+    except ImportError:
+        if path.endswith(".ply"):
+            return ply_points(path)
+        raise
     return vtk_to_numpy(read(path).GetPoints().GetData()).astype(float)
+
+
+PLY_TYPES = {"char": "i1", "uchar": "u1", "short": "<i2", "ushort": "<u2", "int": "<i4", "uint": "<u4",
+             "float": "<f4", "double": "<f8", "int8": "i1", "uint8": "u1", "int16": "<i2", "uint16": "<u2",
+             "int32": "<i4", "uint32": "<u4", "float32": "<f4", "float64": "<f8"}
+
+
+def ply_points(path):
+    """x, y, z of the vertices of a binary little-endian .ply whose first
+    element is the vertices, with scalar properties only (as the scans of
+    ../shared), by numpy: for machines without VTK."""
+    with open(path, "rb") as f:
+        header = []
+        while not header or header[-1] != "end_header":
+            line = f.readline()
+            if not line:
+                raise ValueError("%s: no end_header" % path)
+            header.append(line.decode("ascii").strip())
+        if "format binary_little_endian 1.0" not in header:
+            raise ValueError("%s: only binary little-endian PLY is read without VTK" % path)
+        count, fields = None, []
+        for line in header:
+            words = line.split()
+            if words[:2] == ["element", "vertex"]:
+                count = int(words[2])
+            elif words[:1] == ["element"] and count is not None:
+                break
+            elif words[:1] == ["property"] and count is not None:
+                if words[1] == "list":
+                    raise ValueError("%s: a list property among the vertices" % path)
+                fields.append((words[2], PLY_TYPES[words[1]]))
+        data = np.fromfile(f, dtype=np.dtype(fields), count=count)
+    return np.stack([data["x"], data["y"], data["z"]], axis=1).astype(float)
 
 
 def have_scans(names=SCANS, folder=None):

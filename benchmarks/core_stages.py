@@ -60,6 +60,20 @@ def load_core():
     return module
 
 
+def set_device(core, settings, device):
+    """Settings.Device (and DeviceOnHost) for "cpu", "gpu" or "gpu-host"."""
+    settings.Device = core.ComputeDevice.CPU if device == "cpu" else core.ComputeDevice.GPU
+    settings.DeviceOnHost = device == "gpu-host"
+
+
+def stage_seconds(outcome):
+    """{stage: seconds} of a run's Outcome (its StageSeconds field data)."""
+    for name, kind, components, values, names in outcome.Summary:
+        if name == "StageSeconds":
+            return dict(zip(names, values))
+    return {}
+
+
 def sphere(grid):
     """The sphere of radius 0.45 in the unit box (clouds.load's "sphere1024"
     at 1024³), with as many points at other sizes as keep their spacing."""
@@ -80,8 +94,7 @@ def child(args):
     settings.OutputVolume = False
     settings.NumberOfThreads = args.threads
     settings.MemoryLimit = 0.0
-    settings.Device = core.ComputeDevice.CPU if args.device == "cpu" else core.ComputeDevice.GPU
-    settings.DeviceOnHost = args.device == "gpu-host"
+    set_device(core, settings, args.device)
     run = core.Reconstruction(settings)
     sink = core.MeshSink()
     start = time.perf_counter()
@@ -89,10 +102,7 @@ def child(args):
     whole = time.perf_counter() - start
     if outcome.Error:
         sys.exit("core_stages.py: the run failed: %s" % outcome.Error)
-    stages = {}
-    for name, kind, components, values, names in outcome.Summary:
-        if name == "StageSeconds":
-            stages = dict(zip(names, values))
+    stages = stage_seconds(outcome)
     record = dict(grid=args.grid, points=len(xyz), threads=args.threads, device=args.device,
                   device_used=run.DeviceUsed(), band_nodes=run.NumberOfBandNodes(),
                   stages=stages, whole=whole,

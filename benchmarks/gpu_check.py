@@ -4,7 +4,7 @@
 (narrowvolume._core, no VTK): the check scripts/test-gpu.sh runs on a
 machine with a GPU.
 
-    venv/bin/python benchmarks/gpu_check.py [--device gpu | gpu-host]
+    venv/bin/python benchmarks/gpu_check.py [--device gpu | gpu-host] [--scans-dir DIR]
 
 For the Table 1 sphere (diameter 1, l = 0.1) at h = 0.01 and 0.005, and a
 torus, it runs the whole reconstruction with Device CPU and Device GPU and
@@ -18,7 +18,10 @@ made on the device (SurfaceDeviceError empty); for the sphere, the inner
 sheet's error against the radius 0.4 at or below the paper's Table 1 (max
 1.307e-3 and 3.723e-4, average 9.938e-4 and 2.173e-4); and, for the torus,
 with the Volume output, the dense phi (filled on the device) within 1e-6 of
-the CPU's. Each line gives the stages' seconds, device and CPU: the
+the CPU's. Then three scans of ../shared/data/scans (armadillo, dragon,
+teapot; --scans-dir elsewhere, skipped with a line when absent) with their
+default offset and spacing, as a user runs them: the same checks, the
+surfaces' Euler characteristic the CPU's. Each line gives the stages' seconds, device and CPU: the
 distance and band nodes, the evolution, the surface (and the volume).
 One line per case, then PASSED or FAILED; exit 1 on a failure.
 gpu-host runs the GPU back end's kernels through the host launcher: the
@@ -33,7 +36,7 @@ import time
 import numpy as np
 
 import clouds  # the benchmarks' clouds (numpy only)
-from core_stages import load_core
+from core_stages import load_core, set_device, stage_seconds
 
 # Table 1 (sphere, l = 0.1): h -> (max error, average error) on the inner sheet.
 TABLE1 = {0.01: (1.307e-3, 9.938e-4), 0.005: (3.723e-4, 2.173e-4)}
@@ -50,13 +53,19 @@ def torus_points(n, big, small):
     return np.ascontiguousarray(np.stack([x.ravel(), y.ravel(), z.ravel()], axis=1))
 
 
+# The scans checked: closed and open, thick and thin parts.
+SCANS = ("armadillo", "dragon", "teapot")
+
+
 def run(core, xyz, offset, spacing, device, volume=False):
+    """A whole run on `device`; offset and spacing None: the defaults."""
     settings = core.Settings()
-    settings.OffsetDistance = offset
-    settings.SampleSpacing = spacing
+    if offset is not None:
+        settings.OffsetDistance = offset
+    if spacing is not None:
+        settings.SampleSpacing = spacing
     settings.OutputVolume = volume
-    settings.Device = core.ComputeDevice.CPU if device == "cpu" else core.ComputeDevice.GPU
-    settings.DeviceOnHost = device == "gpu-host"
+    set_device(core, settings, device)
     reconstruction = core.Reconstruction(settings)
     sink = core.MeshSink()
     start = time.perf_counter()
@@ -65,10 +74,7 @@ def run(core, xyz, offset, spacing, device, volume=False):
     if outcome.Error:
         raise RuntimeError("%s: %s" % (device, outcome.Error))
     points, _, triangles = sink.Take()
-    stages = {}
-    for name, kind, components, values, names in outcome.Summary:
-        if name == "StageSeconds":
-            stages = dict(zip(names, values))
+    stages = stage_seconds(outcome)
     stages["dense phi"] = np.asarray(reconstruction.TakeVolume().get("phi", [])) if volume else None
     return reconstruction, np.asarray(points), np.asarray(triangles), seconds, stages
 
@@ -80,7 +86,8 @@ def euler(points, triangles):
     return bool(len(counts) and np.all(counts == 2)), len(points) - len(unique) + len(triangles)
 
 
-def check(core, name, xyz, offset, spacing, device, chi, radius=None, volume=False):
+def check(core, name, xyz, offset, spacing, device, chi=None, radius=None, volume=False):
+    """compare()'s checks, False on a failure; chi None: the CPU's surface's."""
     try:
         return compare(core, name, xyz, offset, spacing, device, chi, radius, volume)
     except RuntimeError as error:
@@ -92,6 +99,9 @@ def compare(core, name, xyz, offset, spacing, device, chi, radius, volume):
     failures = []
     cpu_run, cpu_points, cpu_triangles, cpu_seconds, cpu_stages = run(core, xyz, offset, spacing, "cpu", volume)
     gpu_run, gpu_points, gpu_triangles, gpu_seconds, gpu_stages = run(core, xyz, offset, spacing, device, volume)
+    h = cpu_run.GetParameters().Spacing  # used (chosen by the run where not given)
+    if chi is None:
+        chi = euler(cpu_points, cpu_triangles)[1]
     expected = {"gpu": "GPU", "gpu-host": "GPU on the host"}[device]
     if gpu_run.DeviceUsed() != expected:
         failures.append("DeviceUsed %r, not %r" % (gpu_run.DeviceUsed(), expected))
@@ -119,7 +129,7 @@ def compare(core, name, xyz, offset, spacing, device, chi, radius, volume):
         failures.append("%d vertices and %d triangles, the CPU's %d and %d" % (
             len(gpu_points), len(gpu_triangles), len(cpu_points), len(cpu_triangles)))
     else:
-        apart = float(np.max(np.linalg.norm(gpu_points - cpu_points, axis=1))) / spacing if len(cpu_points) else 0.0
+        apart = float(np.max(np.linalg.norm(gpu_points - cpu_points, axis=1))) / h if len(cpu_points) else 0.0
         if not apart <= 0.05:
             failures.append("a vertex %.3g h from the CPU's" % apart)
     for who, points, triangles in (("GPU", gpu_points, gpu_triangles), ("CPU", cpu_points, cpu_triangles)):
@@ -152,9 +162,23 @@ def compare(core, name, xyz, offset, spacing, device, chi, radius, volume):
     return not failures
 
 
+def check_scans(core, device, folder=None, names=SCANS):
+    """check() on the scans `names` with their defaults; True, with a line,
+    when they are not in `folder`."""
+    if not clouds.nvclouds.have_scans(names, folder):
+        print("the scans: skipped, not in %s" % (folder or clouds.SCANS_DIR), flush=True)
+        return True
+    ok = True
+    for name in names:
+        xyz = np.ascontiguousarray(clouds.nvclouds.scan_points(name, folder))
+        ok &= check(core, "%s (defaults)" % name, xyz, None, None, device)
+    return ok
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--device", default="gpu", choices=["gpu", "gpu-host"])
+    parser.add_argument("--scans-dir", default=clouds.SCANS_DIR, help="the scans (default ../shared/data/scans)")
     args = parser.parse_args()
     core = load_core()
     center = (0.0, 0.0, 0.0)
@@ -166,6 +190,7 @@ def main():
     ok &= check(core, "torus", torus_points(40000, 0.6, 0.25), 0.08, 0.01, args.device, chi=0)
     ok &= check(core, "torus, the Volume output", torus_points(40000, 0.6, 0.25), 0.08, 0.01, args.device,
                 chi=0, volume=True)
+    ok &= check_scans(core, args.device, args.scans_dir)
     print("gpu_check.py: %s" % ("PASSED" if ok else "FAILED"), flush=True)
     sys.exit(0 if ok else 1)
 

@@ -8,7 +8,9 @@
 # CPU's (the distance on the GPU is written to be the CPU's bit for bit),
 # the surface made on the GPU, every vertex within 0.05 h of the CPU's, both
 # sheets closed, Table 1's errors, and the torus's dense phi with the Volume
-# output, filled on the GPU, within 1e-6 of the CPU's; the distance, band,
+# output, filled on the GPU, within 1e-6 of the CPU's; three scans of
+# ../shared/data/scans with their defaults, when that folder is beside the
+# source tree (skipped with a line otherwise); the distance, band,
 # evolution, surface and volume stages' seconds beside the CPU's), and
 # times the stages on
 # the benchmarks' sphere, the GPU beside the machine's CPU threads in the

@@ -497,6 +497,25 @@ def test_ctrl_c_while_the_core_runs():
 
 
 @only_wheel
+def test_gpu_back_end_through_the_host_launcher_on_scans():
+    """Device GPU's back end (the points' sort, the distance, the band, the
+    evolution, the surface: the GPU's kernels) through its host launcher,
+    against the CPU core on three scans with their defaults, as
+    benchmarks/gpu_check.py checks a GPU: the same band, every vertex within
+    0.05 h of the CPU's (here the same bits), both surfaces closed with the
+    same Euler characteristic, the surface made by the kernels."""
+    if not nvclouds.have_scans():
+        pytest.skip("the scans are not in %s (../shared/data/scans)" % nvclouds.SCANS_DIR)
+    sys.path.insert(0, os.path.join(SOURCE, "benchmarks"))
+    try:
+        import gpu_check
+    finally:
+        sys.path.pop(0)
+    from narrowvolume import _core
+    assert gpu_check.check_scans(_core, "gpu-host")
+
+
+@only_wheel
 def test_ctrl_c_during_update():
     """Ctrl-C during the filter's Update(): the run stops, the outputs are
     empty, an error says so, and Update() returns."""
