@@ -7,8 +7,9 @@
 // truncated distance and the band, batch by batch of bricks: only each
 // batch's counts and Inside bits come back to the host, then the band's
 // Offset; its distances and neighbour table stay here for the evolution)
-// and Output/nvDeviceSurface.cxx (the surface: the band and phi go up, the
-// vertices and triangles come back).
+// and Output/nvDeviceSurface.cxx (the surface: the band's tables go up,
+// phi is the evolution's, still here, the vertices and triangles come
+// back).
 //
 // Compiled where CMake finds a CUDA compiler (NARROWVOLUME_CUDA): the suite
 // compiles and links it on machines without a GPU (scripts/test.sh, nvcc
@@ -219,6 +220,19 @@ public:
       "copying phi back");
   }
 
+  void ReleaseEvolution() override
+  {
+    const std::int64_t size = this->A.Size;
+    Release(this->A.Previous, size, this->Bytes);
+    Release(this->A.Coupling, size, this->Bytes);
+    Release(this->A.Decay, size, this->Bytes);
+    Release(this->Neighbor, 6 * size, this->Bytes);
+    Release(this->Distance, size, this->Bytes);
+    Release(this->BandOffset, this->BandSize, this->Bytes);
+    this->A.Neighbor = nullptr;
+    this->A.Distance = nullptr;
+    this->BandSize = 0;
+  }
   void SortPoints(const double* cloud, std::int64_t numberOfPoints, const PointConstants& constants,
     std::vector<std::int64_t>& reached) override
   {
@@ -432,7 +446,9 @@ public:
     k.BlackStart = this->ToDevice(band.BlackStart, bricks + 1, "the band's black starts");
     k.Inside = this->ToDevice(band.Inside, 8 * bricks, "the band's inside bits");
     k.Offset = this->ToDevice(band.Offset, numberOfNodes, "the band's node places");
-    k.Phi = this->ToDevice(band.Phi, numberOfNodes, "phi for the surface");
+    // The evolution's phi, still here (ReleaseEvolution kept it), or a copy.
+    k.Phi = this->A.Phi && this->A.Size == numberOfNodes ? this->A.Phi
+                                                         : this->ToDevice(band.Phi, numberOfNodes, "phi for the surface");
     k.CutBricks = this->ToDevice(band.CutBricks, cut, "the cut bricks");
     k.Cases = this->ToDevice(band.Cases, 1, "the case table");
     k.Psi = Allocate<float>(512 * bricks, this->Bytes, this->Peak, "psi");

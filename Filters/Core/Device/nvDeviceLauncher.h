@@ -68,6 +68,10 @@ public:
   virtual double NormSquared(std::int64_t begin, std::int64_t end) = 0;
   /// phi's size + 2 values into `phi` (host memory), after the last kernel.
   virtual void Download(UninitializedVector<double>& phi) = 0;
+  /// After Download: the evolution's arrays freed but phi, which stays on
+  /// the device for the dense volume (DenseBand) and the surface
+  /// (ContourCounts), so that it does not go up again.
+  virtual void ReleaseEvolution() = 0;
   /// The most bytes the launcher has held on its device at once (0 for the
   /// host launcher).
   virtual double DeviceBytes() const { return 0.0; }
@@ -122,7 +126,8 @@ public:
   /// Bricks, RedStart, BlackStart, Inside of NumberOfBricks bricks, Offset
   /// and Phi of `numberOfNodes` nodes, CutBricks, Cases; the host launcher
   /// reads them in place, and they must then outlive it until
-  /// ContourGeometry), runs PsiKernel on the band's bricks and
+  /// ContourGeometry; the CUDA launcher takes the evolution's phi where it
+  /// still holds it, ReleaseEvolution, instead of copying Phi), runs PsiKernel on the band's bricks and
   /// CutCellsKernel on the cut bricks; `vertices` and `triangles` (host
   /// memory, one a cut brick) get their counts back.
   virtual void ContourCounts(const ContourArrays& band, std::int64_t numberOfNodes, const ContourConstants& constants,

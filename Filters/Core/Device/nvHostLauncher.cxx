@@ -155,6 +155,13 @@ public:
     this->Band = NeighbourArrays();
   }
 
+  void ReleaseEvolution() override
+  {
+    // phi went to the caller (Download); the host launcher reads it there.
+    Free(this->Previous);
+    Free(this->Coupling);
+    Free(this->Decay);
+  }
   void SortPoints(const double* cloud, std::int64_t numberOfPoints, const PointConstants& constants,
     std::vector<std::int64_t>& reached) override
   {

@@ -766,7 +766,9 @@ bool Reconstruction::EvolveOnDevice()
     this->Stages.Add("volume", writing);
   }
   this->DevicePeakBytes = this->Launcher->DeviceBytes();
-  this->Launcher.reset(); // the device's memory freed
+  // The device's memory freed but phi's, which the surface takes there
+  // (SurfaceOnDevice); the launcher goes with the band (ReleaseBand).
+  this->Launcher->ReleaseEvolution();
   // The outputs need the band's nodes and phi only.
   Free(this->Band.Distance);
   Free(this->Band.Neighbor);
@@ -819,6 +821,7 @@ void Reconstruction::ReleaseBand()
 {
   this->TheHalo.reset();
   this->Solver.reset();
+  this->Launcher.reset();
   BandValues().swap(this->DevicePhi);
   this->Band = NarrowBand{};
   ReleaseFreedMemory();
@@ -853,10 +856,12 @@ bool Reconstruction::ExtractSurface(SurfaceSink& sink) const
 bool Reconstruction::SurfaceOnDevice(SurfaceSink& sink) const
 {
   // 7, with Device GPU: the surface by the device back end's kernels
-  // (nvDeviceSurface.h), the CPU's through the host launcher. The band and
-  // phi go to the device, the vertices and triangles come back. Should the
-  // device fail here, the part of the surface it gave is dropped and the CPU
-  // makes it (false; the error in SurfaceDeviceError).
+  // (nvDeviceSurface.h), the CPU's through the host launcher, on the
+  // evolution's launcher, whose device still holds phi (or a new one, where
+  // the evolution's failed). The band's tables go to the device, the
+  // vertices and triangles come back. Should the device fail here, the part
+  // of the surface it gave is dropped and the CPU makes it (false; the
+  // error in SurfaceDeviceError).
   this->SurfaceError.clear();
   if (this->Used.empty() || this->Used == "CPU" || this->Comm)
   {
@@ -866,8 +871,13 @@ bool Reconstruction::SurfaceOnDevice(SurfaceSink& sink) const
   try
   {
     std::string why;
-    std::unique_ptr<device::EvolutionLauncher> launcher =
-      this->TheSettings.DeviceOnHost ? device::MakeHostLauncher() : device::MakeCudaLauncher(why);
+    std::unique_ptr<device::EvolutionLauncher> fresh;
+    device::EvolutionLauncher* launcher = this->Launcher.get();
+    if (!launcher)
+    {
+      fresh = this->TheSettings.DeviceOnHost ? device::MakeHostLauncher() : device::MakeCudaLauncher(why);
+      launcher = fresh.get();
+    }
     if (!launcher)
     {
       this->SurfaceError = why;

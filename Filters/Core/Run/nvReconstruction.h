@@ -204,7 +204,9 @@ private:
   NarrowBand Band;
   std::unique_ptr<Halo> TheHalo;
   std::unique_ptr<AllenCahnSolver> Solver;
-  std::unique_ptr<device::EvolutionLauncher> Launcher; ///< with Device GPU, until the evolution ends
+  /// With Device GPU, until the band is released (ReleaseBand): after the
+  /// evolution its device holds phi only, for the surface.
+  std::unique_ptr<device::EvolutionLauncher> Launcher;
   BandValues DevicePhi; ///< phi from the device back end (no Solver then)
   std::string Used;
   mutable std::string SurfaceError; ///< SurfaceDeviceError
