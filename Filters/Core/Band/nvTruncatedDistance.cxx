@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "nvTruncatedDistance.h"
 
+#include "nvPointSort.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -23,45 +25,13 @@ TruncatedDistance::TruncatedDistance(
   const Grid& grid, const double* points, std::int64_t numberOfPoints, double reach)
   : TruncatedDistance(grid, reach)
 {
-  const std::int64_t bricks = this->GetNumberOfBricks();
-
-  // Counting sort of the points by brick. Coordinates are kept relative to the
-  // grid origin, in cells (x - origin) / h, so that far-from-origin clouds
-  // keep their precision and the inner loops need no division.
-  std::vector<std::int64_t> brickOf(static_cast<std::size_t>(numberOfPoints));
-  this->BucketStart.assign(static_cast<std::size_t>(bricks + 1), 0);
-  for (std::int64_t p = 0; p < numberOfPoints; ++p)
-  {
-    double rel[3];
-    for (int a = 0; a < 3; ++a)
-    {
-      rel[a] = (points[3 * p + a] - grid.Origin[a]) / grid.Spacing;
-    }
-    const std::int64_t b = this->BrickOfPoint(rel, 0) +
-      this->BrickDims[0] * (this->BrickOfPoint(rel, 1) + this->BrickDims[1] * this->BrickOfPoint(rel, 2));
-    brickOf[static_cast<std::size_t>(p)] = b;
-    ++this->BucketStart[static_cast<std::size_t>(b + 1)];
-  }
-  for (std::int64_t b = 0; b < bricks; ++b)
-  {
-    this->BucketStart[b + 1] += this->BucketStart[b];
-  }
-  std::vector<std::int64_t> next(this->BucketStart.begin(), this->BucketStart.end() - 1);
+  // Counting sort of the points by brick (nvPointSort.h, on the threads).
+  // Coordinates are kept relative to the grid origin, in cells
+  // (x - origin) / h, so that far-from-origin clouds keep their precision
+  // and the inner loops need no division.
   this->Points.resize(static_cast<std::size_t>(3 * numberOfPoints));
-  for (std::int64_t p = 0; p < numberOfPoints; ++p)
-  {
-    const std::int64_t slot = next[static_cast<std::size_t>(brickOf[p])]++;
-    for (int a = 0; a < 3; ++a)
-    {
-      this->Points[3 * slot + a] = (points[3 * p + a] - grid.Origin[a]) / grid.Spacing;
-    }
-  }
-}
-
-std::int64_t TruncatedDistance::BrickOfPoint(const double p[3], int axis) const
-{
-  const std::int64_t node = static_cast<std::int64_t>(std::floor(p[axis]));
-  return std::min(std::max<std::int64_t>(node >> BrickShift, 0), this->BrickDims[axis] - 1);
+  this->BucketStart.resize(static_cast<std::size_t>(this->GetNumberOfBricks() + 1));
+  SortPoints(points, numberOfPoints, PointConstantsOf(grid, reach), this->Points.data(), this->BucketStart.data());
 }
 
 void TruncatedDistance::BrickFirstNode(std::int64_t brick, std::int64_t ijk[3]) const
@@ -74,42 +44,9 @@ void TruncatedDistance::BrickFirstNode(std::int64_t brick, std::int64_t ijk[3]) 
 
 std::vector<std::int64_t> TruncatedDistance::ReachedBricks() const
 {
-  // Mark, for every point, the bricks that its box of nodes within reach touches (eq. 7).
-  const double reach = this->Reach / this->GridNodes.Spacing; // in cells
-  std::vector<unsigned char> reached(static_cast<std::size_t>(this->GetNumberOfBricks()), 0);
-  const std::int64_t numberOfPoints = this->GetNumberOfPoints();
-  for (std::int64_t p = 0; p < numberOfPoints; ++p)
-  {
-    std::int64_t lo[3], hi[3];
-    for (int a = 0; a < 3; ++a)
-    {
-      const double x = this->Points[3 * p + a];
-      const std::int64_t first = std::max<std::int64_t>(0, static_cast<std::int64_t>(std::ceil(x - reach)));
-      const std::int64_t last =
-        std::min<std::int64_t>(this->GridNodes.Dims[a] - 1, static_cast<std::int64_t>(std::floor(x + reach)));
-      lo[a] = first >> BrickShift;
-      hi[a] = std::max(first, last) >> BrickShift;
-    }
-    for (std::int64_t bk = lo[2]; bk <= hi[2]; ++bk)
-    {
-      for (std::int64_t bj = lo[1]; bj <= hi[1]; ++bj)
-      {
-        for (std::int64_t bi = lo[0]; bi <= hi[0]; ++bi)
-        {
-          reached[bi + this->BrickDims[0] * (bj + this->BrickDims[1] * bk)] = 1;
-        }
-      }
-    }
-  }
-  std::vector<std::int64_t> result;
-  for (std::size_t b = 0; b < reached.size(); ++b)
-  {
-    if (reached[b])
-    {
-      result.push_back(static_cast<std::int64_t>(b));
-    }
-  }
-  return result;
+  // Mark, for every point, the bricks that its box of nodes within reach
+  // touches (eq. 7), and list them (nvPointSort.h, on the threads).
+  return ListReachedBricks(this->Points.data(), this->GetNumberOfPoints(), PointConstantsOf(this->GridNodes, this->Reach));
 }
 
 void BricksInLayers(const std::vector<std::int64_t>& bricks, std::int64_t bricksPerLayer,

@@ -80,8 +80,6 @@ public:
   bool BrickWithin(std::int64_t brick, double radius) const;
 
 private:
-  std::int64_t BrickOfPoint(const double p[3], int axis) const;
-
   Grid GridNodes;
   double Reach;
   std::array<std::int64_t, 3> BrickDims;

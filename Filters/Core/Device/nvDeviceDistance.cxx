@@ -41,17 +41,7 @@ LauncherDistance::LauncherDistance(const TruncatedDistance& grid, const double* 
   , Batch(std::max<std::int64_t>(1, batch))
   , Sorted(true)
 {
-  const Grid& nodes = grid.GetGrid();
-  PointConstants constants;
-  for (int a = 0; a < 3; ++a)
-  {
-    constants.Origin[a] = nodes.Origin[a];
-    constants.GridDims[a] = nodes.Dims[a];
-    constants.BrickDims[a] = grid.GetBrickDims()[a];
-  }
-  constants.Spacing = nodes.Spacing;
-  constants.Reach = grid.GetReach() / nodes.Spacing; // as ReachedBricks
-  launcher.SortPoints(cloud, numberOfPoints, constants, this->Reached);
+  launcher.SortPoints(cloud, numberOfPoints, PointConstantsOf(grid.GetGrid(), grid.GetReach()), this->Reached);
 }
 
 LauncherDistance::~LauncherDistance()

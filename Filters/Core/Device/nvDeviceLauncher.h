@@ -169,10 +169,6 @@ public:
 void FirstNodes(const std::int32_t* red, const std::int32_t* black, std::int64_t count,
   std::vector<std::int64_t>& redFirst, std::vector<std::int64_t>& blackFirst);
 
-/// Where each chunk's part begins (PointArrays::ChunkFirst) from the
-/// chunks' sums; returns their total.
-std::int64_t ChunkStarts(const std::vector<std::int64_t>& sums, std::vector<std::int64_t>& first);
-
 /// The host launcher: the kernels over nv::ParallelFor and its reductions.
 std::unique_ptr<EvolutionLauncher> MakeHostLauncher();
 

@@ -18,18 +18,6 @@ namespace device
 {
 EvolutionLauncher::~EvolutionLauncher() = default;
 
-std::int64_t ChunkStarts(const std::vector<std::int64_t>& sums, std::vector<std::int64_t>& first)
-{
-  first.resize(sums.size());
-  std::int64_t total = 0;
-  for (std::size_t c = 0; c < sums.size(); ++c)
-  {
-    first[c] = total;
-    total += sums[c];
-  }
-  return total;
-}
-
 void FirstNodes(const std::int32_t* red, const std::int32_t* black, std::int64_t count,
   std::vector<std::int64_t>& redFirst, std::vector<std::int64_t>& blackFirst)
 {
@@ -165,37 +153,12 @@ public:
   void SortPoints(const double* cloud, std::int64_t numberOfPoints, const PointConstants& constants,
     std::vector<std::int64_t>& reached) override
   {
-    PointArrays a;
-    a.NumberOfPoints = numberOfPoints;
-    a.NumberOfBricks = constants.BrickDims[0] * constants.BrickDims[1] * constants.BrickDims[2];
-    const std::int64_t chunks = (a.NumberOfBricks + ChunkBricks - 1) / ChunkBricks;
-    std::vector<std::int64_t> brickOf(static_cast<std::size_t>(numberOfPoints));
-    std::vector<std::int64_t> next(static_cast<std::size_t>(a.NumberOfBricks));
-    std::vector<std::int64_t> chunkSum(static_cast<std::size_t>(chunks)), chunkFirst;
-    this->Bucket.assign(static_cast<std::size_t>(a.NumberOfBricks + 1), 0);
+    // The CPU core's sort and list (nvPointSort.h), the same kernels.
+    const std::int64_t bricks = constants.BrickDims[0] * constants.BrickDims[1] * constants.BrickDims[2];
     this->SortedPoints.resize(static_cast<std::size_t>(3 * numberOfPoints));
-    a.Cloud = cloud; // the host's, read in place
-    a.BrickOf = brickOf.data();
-    a.BucketStart = this->Bucket.data();
-    a.Next = next.data();
-    a.Points = this->SortedPoints.data();
-    a.ChunkCount = chunkSum.data();
-    // The counting sort: counts, their sums chunk by chunk, the points placed.
-    For(0, numberOfPoints, BucketPointsKernel{ a, constants });
-    For(0, chunks, ChunkSumKernel{ a }, 1);
-    ChunkStarts(chunkSum, chunkFirst);
-    a.ChunkFirst = chunkFirst.data();
-    For(0, chunks, ChunkScanKernel{ a }, 1);
-    For(0, numberOfPoints, ScatterPointsKernel{ a, constants });
-    // The bricks reached, marked and listed in order.
-    std::vector<std::uint8_t> marks(static_cast<std::size_t>(a.NumberOfBricks), 0);
-    a.Reached = marks.data();
-    For(0, numberOfPoints, ReachKernel{ a, constants });
-    For(0, chunks, ReachCountKernel{ a }, 1);
-    reached.resize(static_cast<std::size_t>(ChunkStarts(chunkSum, chunkFirst)));
-    a.ChunkFirst = chunkFirst.data();
-    a.ReachList = reached.data();
-    For(0, chunks, ReachListKernel{ a }, 1);
+    this->Bucket.resize(static_cast<std::size_t>(bricks + 1));
+    nv::SortPoints(cloud, numberOfPoints, constants, this->SortedPoints.data(), this->Bucket.data());
+    reached = ListReachedBricks(this->SortedPoints.data(), numberOfPoints, constants);
     this->D.Points = this->SortedPoints.data();
     this->D.BucketStart = this->Bucket.data();
   }
