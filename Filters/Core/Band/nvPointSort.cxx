@@ -80,7 +80,7 @@ void SortPoints(const double* cloud, std::int64_t numberOfPoints, const PointCon
   a.Points = points;
   a.ChunkCount = sums.data();
   ForEach(0, numberOfPoints, PointGrain, BucketPointsKernel{ a, constants });
-  ForEach(0, NumberOfChunks(a), 16, ChunkSumKernel{ a });
+  ForEach(0, NumberOfChunks(a), 16, ChunkSumKernel<std::int64_t>{ a, a.BucketStart + 1 });
   ChunkStarts(sums, first);
   a.ChunkFirst = first.data();
   ForEach(0, NumberOfChunks(a), 16, ChunkScanKernel{ a });
@@ -97,7 +97,7 @@ std::vector<std::int64_t> ListReachedBricks(
   a.Reached = marks.data();
   a.ChunkCount = sums.data();
   ForEach(0, numberOfPoints, PointGrain, ReachKernel{ a, constants });
-  ForEach(0, NumberOfChunks(a), 16, ReachCountKernel{ a });
+  ForEach(0, NumberOfChunks(a), 16, ChunkSumKernel<std::uint8_t>{ a, a.Reached });
   std::vector<std::int64_t> reached(static_cast<std::size_t>(ChunkStarts(sums, first)));
   a.ChunkFirst = first.data();
   a.ReachList = reached.data();

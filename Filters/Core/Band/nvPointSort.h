@@ -14,7 +14,7 @@
 //   ChunkScanKernel      the buckets' starts, and their free slots
 //   ScatterPointsKernel  each point into a free slot of its bucket
 //   ReachKernel          the bricks within reach of a point, marked (eq. 7)
-//   ReachCountKernel, ChunkStarts, ReachListKernel: the marked bricks listed
+//   ChunkSumKernel, ChunkStarts, ReachListKernel: the marked bricks listed
 //
 // The kernels are plain C++ for the host compiler and CUDA (no STL beyond
 // <cmath> and <cstdint>); the host's passes in order are at the end.
@@ -109,6 +109,12 @@ struct PointConstants
   double Reach = 0.0;                      ///< (l + eta/2) / h, in cells
 };
 
+/// The end of chunk c's bricks [c ChunkBricks, end).
+NV_HD inline std::int64_t ChunkEnd(const PointArrays& A, std::int64_t c)
+{
+  return (c + 1) * ChunkBricks < A.NumberOfBricks ? (c + 1) * ChunkBricks : A.NumberOfBricks;
+}
+
 /// Point p relative to the grid's origin, in cells, and its brick: the
 /// brick of the node below it on each axis, clamped into the grid (a point
 /// on the box's far faces goes to the last brick).
@@ -138,17 +144,20 @@ struct BucketPointsKernel
   }
 };
 
-/// The sum of chunk c's counts (BucketStart[1 + b] over its bricks b).
+/// The sum of chunk c's values (Values[b] over its bricks b): the counts
+/// (BucketStart + 1) or the reached bricks' marks (Reached).
+template <typename T>
 struct ChunkSumKernel
 {
   PointArrays A;
+  const T* Values;
   NV_HD void operator()(std::int64_t c) const
   {
-    const std::int64_t end = (c + 1) * ChunkBricks < A.NumberOfBricks ? (c + 1) * ChunkBricks : A.NumberOfBricks;
+    const std::int64_t end = ChunkEnd(A, c);
     std::int64_t sum = 0;
     for (std::int64_t b = c * ChunkBricks; b < end; ++b)
     {
-      sum += A.BucketStart[b + 1];
+      sum += Values[b];
     }
     A.ChunkCount[c] = sum;
   }
@@ -161,7 +170,7 @@ struct ChunkScanKernel
   PointArrays A;
   NV_HD void operator()(std::int64_t c) const
   {
-    const std::int64_t end = (c + 1) * ChunkBricks < A.NumberOfBricks ? (c + 1) * ChunkBricks : A.NumberOfBricks;
+    const std::int64_t end = ChunkEnd(A, c);
     std::int64_t sum = A.ChunkFirst[c];
     for (std::int64_t b = c * ChunkBricks; b < end; ++b)
     {
@@ -225,29 +234,13 @@ struct ReachKernel
   }
 };
 
-/// How many of chunk c's bricks are reached.
-struct ReachCountKernel
-{
-  PointArrays A;
-  NV_HD void operator()(std::int64_t c) const
-  {
-    const std::int64_t end = (c + 1) * ChunkBricks < A.NumberOfBricks ? (c + 1) * ChunkBricks : A.NumberOfBricks;
-    std::int64_t count = 0;
-    for (std::int64_t b = c * ChunkBricks; b < end; ++b)
-    {
-      count += A.Reached[b];
-    }
-    A.ChunkCount[c] = count;
-  }
-};
-
 /// Chunk c's reached bricks, ascending, into ReachList from ChunkFirst[c] on.
 struct ReachListKernel
 {
   PointArrays A;
   NV_HD void operator()(std::int64_t c) const
   {
-    const std::int64_t end = (c + 1) * ChunkBricks < A.NumberOfBricks ? (c + 1) * ChunkBricks : A.NumberOfBricks;
+    const std::int64_t end = ChunkEnd(A, c);
     std::int64_t at = A.ChunkFirst[c];
     for (std::int64_t b = c * ChunkBricks; b < end; ++b)
     {

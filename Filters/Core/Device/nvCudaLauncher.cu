@@ -261,13 +261,13 @@ public:
     std::vector<std::int64_t> sums(static_cast<std::size_t>(chunks)), firsts;
     // The counting sort: counts, their sums chunk by chunk, the points placed.
     this->For(0, numberOfPoints, BucketPointsKernel{ a, constants });
-    this->For(0, chunks, ChunkSumKernel{ a });
+    this->For(0, chunks, ChunkSumKernel<std::int64_t>{ a, a.BucketStart + 1 });
     this->ChunkFirsts(a.ChunkCount, chunkFirst, sums, firsts);
     this->For(0, chunks, ChunkScanKernel{ a });
     this->For(0, numberOfPoints, ScatterPointsKernel{ a, constants });
     // The bricks reached, marked and listed in order.
     this->For(0, numberOfPoints, ReachKernel{ a, constants });
-    this->For(0, chunks, ReachCountKernel{ a });
+    this->For(0, chunks, ChunkSumKernel<std::uint8_t>{ a, a.Reached });
     const std::int64_t total = this->ChunkFirsts(a.ChunkCount, chunkFirst, sums, firsts);
     a.ReachList = this->Scratch<std::int64_t>(total, "the reached bricks");
     this->For(0, chunks, ReachListKernel{ a });

@@ -84,7 +84,7 @@ public:
   /// into the grid's bricks as TruncatedDistance's constructor does
   /// (BucketPointsKernel, ChunkSumKernel, ChunkScanKernel,
   /// ScatterPointsKernel), the sorted points held until FreePoints; the
-  /// bricks they reach (ReachKernel, ReachCountKernel, ReachListKernel) into
+  /// bricks they reach (ReachKernel, ChunkSumKernel, ReachListKernel) into
   /// `reached`, ascending: TruncatedDistance::ReachedBricks'.
   virtual void SortPoints(const double* cloud, std::int64_t numberOfPoints, const PointConstants& constants,
     std::vector<std::int64_t>& reached) = 0;
