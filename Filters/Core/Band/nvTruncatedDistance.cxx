@@ -46,7 +46,8 @@ std::vector<std::int64_t> TruncatedDistance::ReachedBricks() const
 {
   // Mark, for every point, the bricks that its box of nodes within reach
   // touches (eq. 7), and list them (nvPointSort.h, on the threads).
-  return ListReachedBricks(this->Points.data(), this->GetNumberOfPoints(), PointConstantsOf(this->GridNodes, this->Reach));
+  return ListReachedBricks(
+    this->Points.data(), this->GetNumberOfPoints(), PointConstantsOf(this->GridNodes, this->Reach));
 }
 
 void BricksInLayers(const std::vector<std::int64_t>& bricks, std::int64_t bricksPerLayer,

@@ -447,8 +447,8 @@ public:
     k.Inside = this->ToDevice(band.Inside, 8 * bricks, "the band's inside bits");
     k.Offset = this->ToDevice(band.Offset, numberOfNodes, "the band's node places");
     // The evolution's phi, still here (ReleaseEvolution kept it), or a copy.
-    k.Phi = this->A.Phi && this->A.Size == numberOfNodes ? this->A.Phi
-                                                         : this->ToDevice(band.Phi, numberOfNodes, "phi for the surface");
+    const bool held = this->A.Phi && this->A.Size == numberOfNodes;
+    k.Phi = held ? this->A.Phi : this->ToDevice(band.Phi, numberOfNodes, "phi for the surface");
     k.CutBricks = this->ToDevice(band.CutBricks, cut, "the cut bricks");
     k.Cases = this->ToDevice(band.Cases, 1, "the case table");
     k.Psi = Allocate<float>(512 * bricks, this->Bytes, this->Peak, "psi");

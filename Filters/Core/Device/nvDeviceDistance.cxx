@@ -39,7 +39,6 @@ LauncherDistance::LauncherDistance(const TruncatedDistance& grid, const double* 
   : Distance(grid)
   , Launcher(launcher)
   , Batch(std::max<std::int64_t>(1, batch))
-  , Sorted(true)
 {
   launcher.SortPoints(cloud, numberOfPoints, PointConstantsOf(grid.GetGrid(), grid.GetReach()), this->Reached);
 }

@@ -65,11 +65,8 @@ public:
   void FillDense() { this->Dense = true; }
 
   std::int64_t BatchSize() const override { return this->Batch; }
-  /// The bricks the points reach, where this object sorted them.
-  const std::vector<std::int64_t>* ReachedBricks() const override
-  {
-    return this->Sorted ? &this->Reached : nullptr;
-  }
+  /// The bricks the points reach, as this object sorted them.
+  const std::vector<std::int64_t>* ReachedBricks() const override { return &this->Reached; }
   /// Throws DeviceError when the device fails.
   void Compute(const std::int64_t* bricks, std::int64_t count, double coverRadius, double* distance,
     std::uint8_t* covered) override;
@@ -86,7 +83,6 @@ private:
   EvolutionLauncher& Launcher;
   std::int64_t Batch;
   bool Dense = false;
-  bool Sorted = false;
   std::vector<std::int64_t> Reached;
 };
 

@@ -601,7 +601,8 @@ bool Reconstruction::BuildBand(std::vector<double> xyz)
     {
       const auto sorting = StageTimes::Clock::now();
       const TruncatedDistance gridOnly(grid, reach); // the points are the device's
-      device::LauncherDistance onDevice(gridOnly, xyz.data(), static_cast<std::int64_t>(xyz.size() / 3), *this->Launcher);
+      device::LauncherDistance onDevice(
+        gridOnly, xyz.data(), static_cast<std::int64_t>(xyz.size() / 3), *this->Launcher);
       std::vector<double>().swap(xyz);
       this->Stages.Add("distance", sorting);
       if (this->DenseOnDevice)
