@@ -205,6 +205,28 @@ bool CollectBandNodes(const TruncatedDistance& distance, const Parameters& param
   });
 }
 
+/// fn(done, count) for the batches [done, done + count) of `numberOfBricks`
+/// bricks, `batch` at most each, with the monitor's progress after each;
+/// false if the monitor stopped it.
+template <typename Fn>
+bool ForEachBatch(std::int64_t numberOfBricks, std::int64_t batch, Monitor* monitor, const Fn& fn)
+{
+  for (std::int64_t done = 0; done < numberOfBricks; done += batch)
+  {
+    if (monitor && monitor->Aborted())
+    {
+      return false;
+    }
+    const std::int64_t count = std::min(batch, numberOfBricks - done);
+    fn(done, count);
+    if (monitor)
+    {
+      monitor->Progress(static_cast<double>(done + count) / numberOfBricks);
+    }
+  }
+  return !(monitor && monitor->Aborted());
+}
+
 /// Step 1, continued, with the distances from `source` (the device back
 /// end), batch by batch: the same band nodes and Inside bits as
 /// CollectBandNodes when the source gives ComputeBrick's and BrickWithin's
@@ -221,13 +243,7 @@ bool CollectBandNodesFrom(BrickDistanceSource& source, const TruncatedDistance& 
   const std::int64_t batch = std::max<std::int64_t>(1, std::min(source.BatchSize(), numberOfBricks));
   UninitializedVector<double> d(static_cast<std::size_t>(batch * BrickNodes));
   std::vector<std::uint8_t> covered(static_cast<std::size_t>(batch));
-  for (std::int64_t done = 0; done < numberOfBricks; done += batch)
-  {
-    if (monitor && monitor->Aborted())
-    {
-      return false;
-    }
-    const std::int64_t count = std::min(batch, numberOfBricks - done);
+  return ForEachBatch(numberOfBricks, batch, monitor, [&](std::int64_t done, std::int64_t count) {
     source.Compute(&band.Bricks[done], count, coverRadius, d.data(), covered.data());
     ParallelFor(0, count, 16, [&](std::int64_t begin, std::int64_t end) {
       for (std::int64_t c = begin; c < end; ++c)
@@ -251,12 +267,7 @@ bool CollectBandNodesFrom(BrickDistanceSource& source, const TruncatedDistance& 
           });
       }
     });
-    if (monitor)
-    {
-      monitor->Progress(static_cast<double>(done + count) / numberOfBricks);
-    }
-  }
-  return !(monitor && monitor->Aborted());
+  });
 }
 
 /// Step 2's tables from each brick's counts of red and black band nodes
@@ -459,21 +470,10 @@ bool BuildBandOnSource(BrickDistanceSource& source, const TruncatedDistance& dis
   const std::int64_t batch = std::max<std::int64_t>(1, std::min(source.BatchSize(), numberOfBricks));
   // Step 1: the distances and each brick's band nodes, counted.
   const bool collected = times.Time("band: collect", [&]() {
-    for (std::int64_t done = 0; done < numberOfBricks; done += batch)
-    {
-      if (monitor && monitor->Aborted())
-      {
-        return false;
-      }
-      const std::int64_t count = std::min(batch, numberOfBricks - done);
+    return ForEachBatch(numberOfBricks, batch, monitor, [&](std::int64_t done, std::int64_t count) {
       source.CountNodes(&band.Bricks[done], count, coverRadius, lower, distance.GetReach(), whole, &red[done],
         &black[done], &band.Inside[done * BrickNodes / 64]);
-      if (monitor)
-      {
-        monitor->Progress(static_cast<double>(done + count) / numberOfBricks);
-      }
-    }
-    return !(monitor && monitor->Aborted());
+    });
   });
   if (!collected)
   {
