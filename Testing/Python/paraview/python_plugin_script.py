@@ -114,6 +114,24 @@ self.GetOutput().SetPoints(points)
 
 
 
+def plain(value):
+    """A recorded value as plain Python: numpy's and VTK's own bool, integer
+    and float types (ParaView 5.13 and 6.1 give numpy 2's bool for some
+    properties and results, which json cannot write) become Python's, and
+    tuples lists, recursively; the values themselves are unchanged."""
+    if isinstance(value, dict):
+        return {plain(k): plain(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [plain(v) for v in value]
+    if isinstance(value, (bool, int, float, str)) or value is None:
+        return value
+    if isinstance(value, np.generic):
+        return value.item()
+    if isinstance(value, np.ndarray):
+        return value.tolist()
+    raise TypeError("python_plugin_script: cannot record a %s (%r)" % (type(value).__name__, value))
+
+
 def record_all():
     """The whole record of one serial pvpython."""
     def describe_property(proxy, name):
@@ -132,10 +150,12 @@ def record_all():
         if hasattr(smp, "GetDefaultValue"):
             defaults = [smp.GetDefaultValue(i) for i in range(smp.GetNumberOfElements())]
         documentation = smp.GetDocumentation()
-        return {"label": smp.GetXMLLabel(), "class": smp.GetClassName(), "command": smp.GetCommand(),
-                "defaults": defaults, "value": [smp.GetElement(i) for i in range(smp.GetNumberOfElements())] if hasattr(smp, "GetElement") else None,
-                "visibility": smp.GetPanelVisibility(), "domains": domains,
-                "documentation": " ".join(documentation.GetDescription().split()) if documentation else ""}
+        return plain({"label": smp.GetXMLLabel(), "class": smp.GetClassName(), "command": smp.GetCommand(),
+                      "defaults": defaults,
+                      "value": [smp.GetElement(i) for i in range(smp.GetNumberOfElements())]
+                      if hasattr(smp, "GetElement") else None,
+                      "visibility": smp.GetPanelVisibility(), "domains": domains,
+                      "documentation": " ".join(documentation.GetDescription().split()) if documentation else ""})
 
 
     def hints(element):
@@ -165,10 +185,10 @@ def record_all():
     shell.UpdatePipeline()
     algorithm.RemoveObserver(watch)
     np.savez(out + ".npz", **outputs(shell))
-    result["progress"] = progress
+    result["progress"] = plain(progress)
     # The grid of the run: the panel's text (Grid Used) and pvpython's three integers.
     shell.UpdatePropertyInformation()
-    result["grid_used"] = [shell.GridUsed, list(shell.GridDimensionsUsed)]
+    result["grid_used"] = plain([shell.GridUsed, list(shell.GridDimensionsUsed)])
     result["field_data"] = sorted(
         servermanager.Fetch(shell, idx=0).GetFieldData().GetAbstractArray(i).GetName()
         for i in range(servermanager.Fetch(shell, idx=0).GetFieldData().GetNumberOfArrays()))
@@ -213,10 +233,10 @@ def record_all():
     shell.Input = bad
     shell.UpdatePipeline()
     result["bad input"] = {"surface points": len(outputs(shell)["points"]), "errors": errors}
-    result["framing"] = framing()
+    result["framing"] = plain(framing())
 
     with open(out + ".json", "w") as f:
-        json.dump(result, f, indent=1, sort_keys=True)
+        json.dump(plain(result), f, indent=1, sort_keys=True)
     print("python_plugin_script: %s plugin recorded into %s" % (mode, out))
 
 
