@@ -12,6 +12,7 @@ events, an abort, and the error of a cloud with a NaN coordinate.
 OUT.json holds the result, OUT.npz the outputs' arrays. With `mpi` (under
 mpiexec) only the outputs, written by the first rank.
 """
+import builtins
 import json
 import sys
 
@@ -116,19 +117,25 @@ self.GetOutput().SetPoints(points)
 
 def plain(value):
     """A recorded value as plain Python: numpy's and VTK's own bool, integer
-    and float types (ParaView 5.13 and 6.1 give numpy 2's bool for some
-    properties and results, which json cannot write) become Python's, and
-    tuples lists, recursively; the values themselves are unchanged."""
+    and float types become Python's, and tuples lists, recursively; the
+    values themselves are unchanged. Python's types are named through
+    builtins: the first Programmable Source that runs imports numpy's names
+    into __main__, this script's namespace, and numpy 2 (ParaView 5.13 and
+    6.1 on Debian) has a `bool` of its own, which then replaces Python's
+    here, and which json cannot write."""
     if isinstance(value, dict):
         return {plain(k): plain(v) for k, v in value.items()}
     if isinstance(value, (list, tuple)):
         return [plain(v) for v in value]
-    if isinstance(value, (bool, int, float, str)) or value is None:
+    if value is None or type(value) in (builtins.bool, builtins.int, builtins.float, builtins.str):
         return value
     if isinstance(value, np.generic):
         return value.item()
     if isinstance(value, np.ndarray):
         return value.tolist()
+    for kind in (builtins.bool, builtins.int, builtins.float, builtins.str):
+        if isinstance(value, kind):
+            return kind(value)
     raise TypeError("python_plugin_script: cannot record a %s (%r)" % (type(value).__name__, value))
 
 
@@ -274,7 +281,7 @@ self.GetOutput().SetPoints(points)
     focal = list(view.CameraFocalPoint)
     representation = vtkSMPropertyHelper(pvs.GetDisplayProperties(far, view).SMProxy, "Representation")
     return {"cloud representation": representation.GetAsString(),
-            "focal point near the shell": bool(np.linalg.norm(np.subtract(focal, [1000.0, -2000.0, 500.0])) < 2.0)}
+            "focal point near the shell": builtins.bool(np.linalg.norm(np.subtract(focal, [1000.0, -2000.0, 500.0])) < 2.0)}
 
 
 if not distributed and not cloud.endswith(".json"):
