@@ -240,6 +240,7 @@ struct Part
   std::int64_t Root;
   double Volume;
   bool Drop;
+  bool Supported = false; ///< a vertex where PieceLimits::Supported holds
 };
 
 /// Phase 1: the surface's connected parts (parts.Parent[p] is p's root once
@@ -306,6 +307,33 @@ std::vector<Part> FindParts(const SurfaceArrays& surface, PointParts& parts)
   return found;
 }
 
+/// Phase 1, continued: the parts with a vertex where `supported` holds.
+void MarkSupported(const SurfaceArrays& surface, PointParts& parts,
+  const std::function<bool(const double* x)>& supported, std::vector<Part>& found)
+{
+  const std::int64_t n = surface.NumberOfPoints;
+  std::vector<char> at(static_cast<std::size_t>(n), 0);
+  ParallelFor(0, n, Grain, [&](std::int64_t first, std::int64_t last) {
+    for (std::int64_t p = first; p < last; ++p)
+    {
+      at[p] = supported(surface.Points + 3 * p) ? 1 : 0;
+    }
+  });
+  for (std::int64_t p = 0; p < n; ++p)
+  {
+    if (at[p])
+    {
+      const std::int64_t root = parts.Parent[p].load(std::memory_order_relaxed);
+      const auto part = std::lower_bound(found.begin(), found.end(), root,
+        [](const Part& u, std::int64_t r) { return u.Root < r; });
+      if (part != found.end() && part->Root == root)
+      {
+        part->Supported = true;
+      }
+    }
+  }
+}
+
 /// Phase 2: which parts go (Drop), and the counts and volumes of `removed`;
 /// when every piece is small, the largest stays (limits.SpareLargest).
 void ChooseParts(std::vector<Part>& found, const PieceLimits& limits, RemovedPieces& removed)
@@ -338,7 +366,7 @@ void ChooseParts(std::vector<Part>& found, const PieceLimits& limits, RemovedPie
     {
       continue;
     }
-    if (part.Volume > 0.0 && part.Volume < smallPiece)
+    if (part.Volume > 0.0 && part.Volume < smallPiece && !part.Supported)
     {
       part.Drop = true;
       ++removed.Pieces;
@@ -351,6 +379,10 @@ void ChooseParts(std::vector<Part>& found, const PieceLimits& limits, RemovedPie
     else if (part.Volume < 0.0)
     {
       ++removed.Cavities;
+    }
+    else
+    {
+      ++removed.KeptPieces;
     }
   }
   for (const Part& part : found)
@@ -434,6 +466,10 @@ RemovedPieces RemoveSmallPieces(SurfaceArrays& surface, const PieceLimits& limit
   }
   PointParts parts(surface.NumberOfPoints);
   std::vector<Part> found = FindParts(surface, parts);
+  if (limits.Supported)
+  {
+    MarkSupported(surface, parts, limits.Supported, found);
+  }
   ChooseParts(found, limits, removed);
   if (removed.Pieces + removed.Voids == 0)
   {

@@ -23,6 +23,7 @@
 #include "nvSurface.h"
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace nv
@@ -36,6 +37,7 @@ struct RemovedPieces
   double Volume = 0.0;       ///< the kept surface's enclosed volume (pieces less cavities)
   double CavityVolume = 0.0; ///< the kept cavities' volume
   double VoidLimit = 0.0;    ///< the volume below which a void went
+  std::int64_t KeptPieces = 0; ///< pieces kept: the separate parts of the solid
 };
 
 /// The volumes below which a part goes: a piece (a region inside the
@@ -47,6 +49,10 @@ struct PieceLimits
   double Void = 0.0;
   double VoidShare = 0.0;
   bool SpareLargest = true; ///< when every piece is small, the largest stays
+  /// Where set: a piece with a vertex where it is true stays, whatever its
+  /// volume (the printing part's material that holds scan points it had
+  /// lost, nvPrintPart.h).
+  std::function<bool(const double* x)> Supported;
 };
 
 /// The volume below which a piece is removed: a ball of radius 2 l.

@@ -12,7 +12,9 @@
 #include <atomic>
 #include <cmath>
 #include <cstring>
+#include <iterator>
 #include <limits>
+#include <memory>
 #include <mutex>
 #include <utility>
 #include <vector>
@@ -24,6 +26,16 @@ namespace
 /// The share of the largest cavity below which a cavity is merged into the
 /// wall when MinimumCavityVolume is 0.
 constexpr double AutomaticCavityShare = 0.01;
+/// The bound of the scan's check, in cells (PrintReport::LostDistance): the
+/// part's vertices lie within a cell of one another, and its outer surface
+/// within about half a cell of the closing; twice a cell covers both.
+constexpr double LostDistanceCells = 2.0;
+/// The radius of the material put back around a lost point and the rods
+/// that join it to its neighbours (Restoration), in cells: a limb two cells
+/// thick at least, which the grid holds.
+constexpr double LostRadiusCells = 2.0;
+/// Lost points nearer than this many cells are one region (LostRegions).
+constexpr double LostRegionReach = 4.0;
 
 /// Points in a k-d tree (each range of the array split at its middle point
 /// along its widest axis, in place), for the distance from a place to the
@@ -49,6 +61,22 @@ public:
     this->Search(x, 0, static_cast<std::int64_t>(this->Points.size()), best);
     return std::sqrt(best);
   }
+
+  /// The up to k points nearest to x within `cap` (nearest first), into `found`.
+  void Nearest(const double x[3], int k, double cap, std::vector<std::array<double, 3>>& found) const
+  {
+    std::vector<std::pair<double, std::int64_t>> best; // a max-heap of (squared distance, point)
+    this->SearchK(x, 0, static_cast<std::int64_t>(this->Points.size()), k, cap * cap, best);
+    std::sort_heap(best.begin(), best.end());
+    found.clear();
+    for (const auto& entry : best)
+    {
+      found.push_back(this->Points[entry.second]);
+    }
+  }
+
+  /// The points, in the tree's order.
+  const std::vector<std::array<double, 3>>& All() const { return this->Points; }
 
 private:
   static constexpr std::int64_t Leaf = 8;
@@ -111,6 +139,45 @@ private:
       {
         this->Search(x, begin, middle, best);
       }
+    }
+  }
+
+  void SearchK(const double x[3], std::int64_t begin, std::int64_t end, int k, double cap2,
+    std::vector<std::pair<double, std::int64_t>>& best) const
+  {
+    const auto offer = [&](std::int64_t p) {
+      const double d2 = this->Squared(x, p);
+      const double worst = static_cast<int>(best.size()) < k ? cap2 : best.front().first;
+      if (d2 < worst)
+      {
+        if (static_cast<int>(best.size()) == k)
+        {
+          std::pop_heap(best.begin(), best.end());
+          best.pop_back();
+        }
+        best.emplace_back(d2, p);
+        std::push_heap(best.begin(), best.end());
+      }
+    };
+    if (end - begin <= Leaf)
+    {
+      for (std::int64_t p = begin; p < end; ++p)
+      {
+        offer(p);
+      }
+      return;
+    }
+    const std::int64_t middle = begin + (end - begin) / 2;
+    const int axis = this->Axis[middle];
+    offer(middle);
+    const double side = x[axis] - this->Points[middle][axis];
+    const std::int64_t nearBegin = side < 0.0 ? begin : middle + 1, nearEnd = side < 0.0 ? middle : end;
+    const std::int64_t farBegin = side < 0.0 ? middle + 1 : begin, farEnd = side < 0.0 ? end : middle;
+    this->SearchK(x, nearBegin, nearEnd, k, cap2, best);
+    const double worst = static_cast<int>(best.size()) < k ? cap2 : best.front().first;
+    if (side * side < worst)
+    {
+      this->SearchK(x, farBegin, farEnd, k, cap2, best);
     }
   }
 
@@ -364,13 +431,117 @@ struct Drill
   }
 };
 
+/// Material put back around the scan points the part lost: a rod of
+/// `radius` along the segment from each scan point within `reach` of a lost
+/// one (itself included) to each of its nearest scan points within `reach`:
+/// the rods join a lost limb's points to one another, and its ends to the
+/// part. As a drain hole is a rod of no material. The rods are listed by the bricks they reach.
+class Restoration
+{
+public:
+  Restoration(const Grid& grid, const double* scan, std::int64_t scanPoints, const std::vector<std::int64_t>& lost,
+    double radius, double reach)
+    : Radius(radius)
+    , BrickDims(BrickDimensions(grid))
+  {
+    // The points to join: the lost ones, and the held ones within reach of
+    // one (a lost limb's ends, where the part's pieces may stop short of
+    // one another although each holds the points near it).
+    const NearestPoints all(scan, scanPoints);
+    std::vector<double> lostXyz;
+    for (std::int64_t p : lost)
+    {
+      lostXyz.insert(lostXyz.end(), scan + 3 * p, scan + 3 * p + 3);
+    }
+    const NearestPoints lostPoints(lostXyz.data(), static_cast<std::int64_t>(lost.size()));
+    std::vector<char> joined(static_cast<std::size_t>(scanPoints), 0);
+    ParallelFor(0, scanPoints, 1024, [&](std::int64_t begin, std::int64_t end) {
+      for (std::int64_t p = begin; p < end; ++p)
+      {
+        joined[p] = lostPoints.Distance(scan + 3 * p, reach) < reach;
+      }
+    });
+    std::vector<std::array<double, 3>> near;
+    const double side = BrickSize * grid.Spacing, margin = radius + 3.0 * grid.Spacing;
+    for (std::int64_t p = 0; p < scanPoints; ++p)
+    {
+      if (!joined[p])
+      {
+        continue;
+      }
+      const double* x = scan + 3 * p;
+      all.Nearest(x, NeighboursJoined, reach, near);
+      for (const std::array<double, 3>& y : near)
+      {
+        Drill rod;
+        std::copy(x, x + 3, rod.A);
+        std::copy(y.begin(), y.end(), rod.B);
+        rod.Radius = radius;
+        const std::int32_t index = static_cast<std::int32_t>(this->Rods.size());
+        this->Rods.push_back(rod);
+        std::int64_t low[3], high[3];
+        for (int a = 0; a < 3; ++a)
+        {
+          const double lo = std::min(rod.A[a], rod.B[a]) - margin, hi = std::max(rod.A[a], rod.B[a]) + margin;
+          low[a] = std::max<std::int64_t>(0, static_cast<std::int64_t>(std::floor((lo - grid.Origin[a]) / side)));
+          high[a] = std::min(this->BrickDims[a] - 1,
+            static_cast<std::int64_t>(std::floor((hi - grid.Origin[a]) / side)));
+        }
+        for (std::int64_t k = low[2]; k <= high[2]; ++k)
+        {
+          for (std::int64_t j = low[1]; j <= high[1]; ++j)
+          {
+            for (std::int64_t i = low[0]; i <= high[0]; ++i)
+            {
+              this->ByBrick.emplace_back(i + this->BrickDims[0] * (j + this->BrickDims[1] * k), index);
+            }
+          }
+        }
+      }
+    }
+    std::sort(this->ByBrick.begin(), this->ByBrick.end());
+    this->ByBrick.erase(std::unique(this->ByBrick.begin(), this->ByBrick.end()), this->ByBrick.end());
+  }
+
+  /// Whether a rod reaches brick b.
+  bool Reaches(std::int64_t b) const
+  {
+    const auto found = std::lower_bound(this->ByBrick.begin(), this->ByBrick.end(), std::make_pair(b, std::int32_t(0)));
+    return found != this->ByBrick.end() && found->first == b;
+  }
+
+  /// The material's f at x in brick b: the radius less the distance to the
+  /// nearest rod (> 0 inside one).
+  double Value(std::int64_t b, const double x[3]) const
+  {
+    double value = -std::numeric_limits<double>::infinity();
+    for (auto r = std::lower_bound(this->ByBrick.begin(), this->ByBrick.end(), std::make_pair(b, std::int32_t(0)));
+         r != this->ByBrick.end() && r->first == b; ++r)
+    {
+      value = std::max(value, -this->Rods[r->second].Signed(x));
+    }
+    return value;
+  }
+
+  double Radius;
+
+private:
+  /// The nearest scan points a lost point is joined to (itself among them).
+  static constexpr int NeighboursJoined = 16;
+  std::array<std::int64_t, 3> BrickDims;
+  std::vector<Drill> Rods;
+  std::vector<std::pair<std::int64_t, std::int32_t>> ByBrick; ///< (brick, rod), ascending
+};
+
 /// f of the header, clamped to +-Clamp, brick by brick: a value per brick
 /// where f is beyond +-Clamp on all of it, else its nodes' values.
 class PartField : public BrickField
 {
 public:
+  /// restored: material put back (f = max(f, its value)), before the
+  /// holes are drilled.
   PartField(const Grid& grid, const float* outer, const std::vector<float>& distance, double offset, double wall,
-    const std::vector<Drill>& drills = {})
+    const std::vector<Drill>& drills = {}, const Restoration* restored = nullptr)
     : BrickDims(BrickDimensions(grid))
   {
     const float clamp = static_cast<float>(3.0 * grid.Spacing);
@@ -385,6 +556,7 @@ public:
           ((b / this->BrickDims[0]) % this->BrickDims[1]) * BrickSize,
           (b / (this->BrickDims[0] * this->BrickDims[1])) * BrickSize };
         bool above = true, below = true;
+        const bool restoring = restored && restored->Reaches(b);
         for (int k = 0; k < BrickSize; ++k)
         {
           for (int j = 0; j < BrickSize; ++j)
@@ -399,11 +571,15 @@ public:
                 const double d = distance[n];
                 const double inside = std::min(d - offset, offset + wall - d);
                 double value = outer[n] > 0.0f ? inside : -(offset + d);
+                const double at[3] = { grid.Origin[0] + static_cast<double>(x) * grid.Spacing,
+                  grid.Origin[1] + static_cast<double>(y) * grid.Spacing,
+                  grid.Origin[2] + static_cast<double>(z) * grid.Spacing };
+                if (restoring && value < clamp)
+                {
+                  value = std::max(value, restored->Value(b, at));
+                }
                 if (!drills.empty() && value > -clamp)
                 {
-                  const double at[3] = { grid.Origin[0] + static_cast<double>(x) * grid.Spacing,
-                    grid.Origin[1] + static_cast<double>(y) * grid.Spacing,
-                    grid.Origin[2] + static_cast<double>(z) * grid.Spacing };
                   for (const Drill& drill : drills)
                   {
                     value = std::min(value, drill.Signed(at)); // the hole less the material
@@ -460,6 +636,38 @@ public:
     }
   }
 
+  /// f at a place, trilinear between the nodes of its cell (clamped to
+  /// +-3 h as stored).
+  double At(const Grid& grid, const double x[3]) const
+  {
+    std::int64_t c[3];
+    double t[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      const double u = (x[a] - grid.Origin[a]) / grid.Spacing;
+      c[a] = std::min(grid.Dims[a] - 2, std::max<std::int64_t>(0, static_cast<std::int64_t>(std::floor(u))));
+      t[a] = std::min(1.0, std::max(0.0, u - static_cast<double>(c[a])));
+    }
+    double value = 0.0;
+    for (int corner = 0; corner < 8; ++corner)
+    {
+      const std::int64_t i = c[0] + (corner & 1), j = c[1] + ((corner >> 1) & 1), k = c[2] + (corner >> 2);
+      const double weight = ((corner & 1) ? t[0] : 1.0 - t[0]) * (((corner >> 1) & 1) ? t[1] : 1.0 - t[1]) *
+        ((corner >> 2) ? t[2] : 1.0 - t[2]);
+      const std::int64_t brick =
+        (i >> BrickShift) + this->BrickDims[0] * ((j >> BrickShift) + this->BrickDims[1] * (k >> BrickShift));
+      const auto found = std::lower_bound(this->Varying.begin(), this->Varying.end(), brick);
+      double node = this->Uniform[brick];
+      if (found != this->Varying.end() && *found == brick)
+      {
+        const std::int64_t within = (i & (BrickSize - 1)) + BrickSize * ((j & (BrickSize - 1)) + BrickSize * (k & (BrickSize - 1)));
+        node = this->Stored[(found - this->Varying.begin()) * BrickNodes + within];
+      }
+      value += weight * node;
+    }
+    return value;
+  }
+
 private:
   std::array<std::int64_t, 3> BrickDims;
   std::vector<float> Uniform;        ///< per brick: its value where it does not vary
@@ -467,8 +675,8 @@ private:
   std::vector<float> Stored;         ///< their nodes' values, BrickNodes each
 };
 
-/// D at a place, trilinear between the nodes of its cell.
-double DistanceAt(const Grid& grid, const std::vector<float>& distance, const double x[3])
+/// A node array's value at a place, trilinear between the nodes of its cell.
+double ValueAt(const Grid& grid, const float* values, const double x[3])
 {
   std::int64_t c[3];
   double t[3];
@@ -483,7 +691,7 @@ double DistanceAt(const Grid& grid, const std::vector<float>& distance, const do
   {
     const int di = corner & 1, dj = (corner >> 1) & 1, dk = corner >> 2;
     const double weight = (di ? t[0] : 1.0 - t[0]) * (dj ? t[1] : 1.0 - t[1]) * (dk ? t[2] : 1.0 - t[2]);
-    value += weight * distance[grid.Index(c[0] + di, c[1] + dj, c[2] + dk)];
+    value += weight * values[grid.Index(c[0] + di, c[1] + dj, c[2] + dk)];
   }
   return value;
 }
@@ -491,7 +699,7 @@ double DistanceAt(const Grid& grid, const std::vector<float>& distance, const do
 /// The least distance from a vertex of the inner surface (D > l + w / 2)
 /// to a vertex of the outer surface; 0 without an inner surface.
 double MinimumWall(const Grid& grid, const SurfaceArrays& part, const std::vector<float>& distance, double offset,
-  double wall)
+  double wall, std::array<double, 3>& where)
 {
   const std::int64_t n = part.NumberOfPoints;
   std::vector<char> inner(static_cast<std::size_t>(n), 0);
@@ -499,7 +707,7 @@ double MinimumWall(const Grid& grid, const SurfaceArrays& part, const std::vecto
   ParallelFor(0, n, 1024, [&](std::int64_t begin, std::int64_t end) {
     for (std::int64_t p = begin; p < end; ++p)
     {
-      inner[p] = DistanceAt(grid, distance, part.Points + 3 * p) > split;
+      inner[p] = ValueAt(grid, distance.data(), part.Points + 3 * p) > split;
     }
   });
   std::vector<double> outerPoints, innerPoints;
@@ -515,18 +723,21 @@ double MinimumWall(const Grid& grid, const SurfaceArrays& part, const std::vecto
   const NearestPoints outside(outerPoints.data(), static_cast<std::int64_t>(outerPoints.size() / 3));
   const double far = 2.0 * (offset + wall) + 4.0 * grid.Spacing;
   const std::int64_t count = static_cast<std::int64_t>(innerPoints.size() / 3);
-  double least = std::numeric_limits<double>::infinity();
+  // The least, and the first inner vertex that has it (the same for any
+  // number of threads).
+  std::pair<double, std::int64_t> least{ std::numeric_limits<double>::infinity(), 0 };
   std::mutex lock;
   ParallelFor(0, count, 1024, [&](std::int64_t begin, std::int64_t end) {
-    double mine = std::numeric_limits<double>::infinity();
+    std::pair<double, std::int64_t> mine{ std::numeric_limits<double>::infinity(), 0 };
     for (std::int64_t p = begin; p < end; ++p)
     {
-      mine = std::min(mine, outside.Distance(&innerPoints[3 * p], far));
+      mine = std::min(mine, std::make_pair(outside.Distance(&innerPoints[3 * p], far), p));
     }
     const std::lock_guard<std::mutex> guard(lock);
     least = std::min(least, mine);
   });
-  return least;
+  std::copy(&innerPoints[3 * least.second], &innerPoints[3 * least.second] + 3, where.begin());
+  return least.first;
 }
 /// The drain holes: the cavities are the regions of nodes inside S deeper
 /// than l + w (6-connected) whose volume is at least `minimumVolume` (the
@@ -645,12 +856,156 @@ std::vector<Drill> DrainHoles(const Grid& grid, const float* outer, const std::v
   }
   return drills;
 }
+/// The scan's lost points (PrintReport): those farther than
+/// report.LostDistance outside the part beyond what the closing explains,
+/// |D - l| for a point at D from the outer sheet (D = l on a surface smooth
+/// at the offset's scale; a point in a concavity narrower than l is inside
+/// the material, at D - l from its outer surface or less). The distance to
+/// the part is to its nearest vertex. Points deeper than `cap` (D unknown),
+/// and points where a drain hole was drilled, are not checked. Sets
+/// report.FarthestLost; the points' indices, ascending.
+std::vector<std::int64_t> LostPoints(const Grid& grid, const float* outer, const PartField& field,
+  const SurfaceArrays& part, const std::vector<float>& distance, double offset, double cap, const PartRequest& request,
+  const std::vector<Drill>& drills, PrintReport& report)
+{
+  const std::int64_t n = request.Scan ? request.ScanPoints : 0;
+  const NearestPoints vertices(part.Points, part.NumberOfPoints);
+  const double bound = report.LostDistance, h = grid.Spacing;
+  std::vector<float> beyond(static_cast<std::size_t>(n), 0.0f); // how far outside, beyond the bound
+  ParallelFor(0, n, 1024, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t p = begin; p < end; ++p)
+    {
+      const double* x = request.Scan + 3 * p;
+      const bool insideShell = ValueAt(grid, outer, x) > 0.0;
+      // D, or none outside the outer sheet (the shell itself lost the point:
+      // nothing explains a distance).
+      const double d = insideShell ? ValueAt(grid, distance.data(), x) : offset;
+      bool drilled = false;
+      for (const Drill& drill : drills)
+      {
+        drilled = drilled || drill.Signed(x) < bound;
+      }
+      if (d >= cap - h || drilled)
+      {
+        continue;
+      }
+      // Inside f's material (restored material among it), a point is as
+      // deep as f says, up to its clamp.
+      const double explained = std::max(std::abs(d - offset), field.At(grid, x)) + bound;
+      const double nearest = vertices.Distance(x, std::numeric_limits<double>::infinity());
+      if (nearest > explained)
+      {
+        beyond[p] = static_cast<float>(nearest - std::abs(d - offset));
+      }
+    }
+  });
+  std::vector<std::int64_t> lost;
+  report.FarthestLost = 0.0;
+  for (std::int64_t p = 0; p < n; ++p)
+  {
+    if (beyond[p] > 0.0f)
+    {
+      lost.push_back(p);
+      report.FarthestLost = std::max(report.FarthestLost, static_cast<double>(beyond[p]));
+    }
+  }
+  return lost;
+}
+
+/// The lost points in regions: points in cells of side `reach` that touch
+/// (26 neighbours) are one region; the regions, the most points first.
+std::vector<LostRegion> LostRegions(const double* scan, const std::vector<std::int64_t>& lost, double reach)
+{
+  const std::int64_t n = static_cast<std::int64_t>(lost.size());
+  if (n == 0)
+  {
+    return {};
+  }
+  using Cell = std::array<std::int64_t, 3>;
+  std::vector<std::pair<Cell, std::int64_t>> cells(static_cast<std::size_t>(n)); // (cell, index into lost)
+  for (std::int64_t i = 0; i < n; ++i)
+  {
+    const double* x = scan + 3 * lost[i];
+    cells[i] = { { static_cast<std::int64_t>(std::floor(x[0] / reach)),
+                   static_cast<std::int64_t>(std::floor(x[1] / reach)),
+                   static_cast<std::int64_t>(std::floor(x[2] / reach)) },
+      i };
+  }
+  std::sort(cells.begin(), cells.end());
+  std::vector<std::int64_t> parent(static_cast<std::size_t>(n));
+  for (std::int64_t i = 0; i < n; ++i)
+  {
+    parent[i] = i;
+  }
+  const auto root = [&](std::int64_t i) {
+    while (parent[i] != i)
+    {
+      i = parent[i] = parent[parent[i]];
+    }
+    return i;
+  };
+  for (std::int64_t i = 0; i < n; ++i)
+  {
+    const Cell& c = cells[i].first;
+    for (std::int64_t dz = -1; dz <= 1; ++dz)
+    {
+      for (std::int64_t dy = -1; dy <= 1; ++dy)
+      {
+        for (std::int64_t dx = -1; dx <= 1; ++dx)
+        {
+          const Cell other{ { c[0] + dx, c[1] + dy, c[2] + dz } };
+          const auto found = std::lower_bound(cells.begin(), cells.end(), std::make_pair(other, std::int64_t(0)));
+          if (found != cells.end() && found->first == other)
+          {
+            parent[root(i)] = root(found - cells.begin());
+          }
+        }
+      }
+    }
+  }
+  std::vector<std::int64_t> regionOf(static_cast<std::size_t>(n), -1);
+  std::vector<LostRegion> regions;
+  std::vector<std::array<double, 6>> boxes;
+  for (std::int64_t i = 0; i < n; ++i)
+  {
+    const std::int64_t r = root(i);
+    if (regionOf[r] < 0)
+    {
+      regionOf[r] = static_cast<std::int64_t>(regions.size());
+      regions.emplace_back();
+      boxes.push_back({ { std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+        std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+        std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity() } });
+    }
+    LostRegion& region = regions[regionOf[r]];
+    std::array<double, 6>& box = boxes[regionOf[r]];
+    const double* x = scan + 3 * lost[cells[i].second];
+    ++region.Points;
+    for (int a = 0; a < 3; ++a)
+    {
+      region.Center[a] += x[a];
+      box[2 * a] = std::min(box[2 * a], x[a]);
+      box[2 * a + 1] = std::max(box[2 * a + 1], x[a]);
+    }
+  }
+  for (std::size_t r = 0; r < regions.size(); ++r)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      regions[r].Center[a] /= static_cast<double>(regions[r].Points);
+      regions[r].Size[a] = boxes[r][2 * a + 1] - boxes[r][2 * a];
+    }
+  }
+  std::stable_sort(regions.begin(), regions.end(),
+    [](const LostRegion& u, const LostRegion& v) { return u.Points > v.Points; });
+  return regions;
+}
 } // namespace
 
-bool MakePart(const Grid& grid, const Parameters& parameters, const float* outer, double wall, double minimumCavity,
-  int drainHoles, double drainDiameter, DrainAxis down, SurfaceSink& sink, Monitor* monitor, PrintReport& report)
+bool MakePart(const Grid& grid, const Parameters& parameters, const float* outer, const PartRequest& request,
+  SurfaceSink& sink, Monitor* monitor, PrintReport& report)
 {
-  const double l = parameters.OffsetDistance;
+  const double l = parameters.OffsetDistance, h = grid.Spacing, wall = request.Wall;
   // The outer sheet: phi = 0 with the cavities filled.
   SurfaceMesh sheet;
   const DenseField field(grid, outer, 0, grid.Dims[2], parameters);
@@ -659,50 +1014,104 @@ bool MakePart(const Grid& grid, const Parameters& parameters, const float* outer
     return false;
   }
   // The part's surfaces, f = 0.
-  const std::vector<float> distance = SheetDistance(grid, outer, sheet.Points, l + wall + 4.0 * grid.Spacing);
-  const PartField part(grid, outer, distance, l, wall);
-  if (!ContourBricks(grid, part, sink, 0, -1, monitor))
-  {
-    return false;
-  }
-  // Loose pieces and small cavities go.
+  const double cap = l + wall + 4.0 * h;
+  const std::vector<float> distance = SheetDistance(grid, outer, sheet.Points, cap);
+  std::vector<Drill> drills;
+  // Contours f (with the holes drilled and the lost points' material put
+  // back, as asked) into the sink, and removes its loose pieces and small
+  // cavities: the cavities below `minimumCavity` (0: a share of the
+  // largest), the pieces below a ball of 2 l unless `supported` keeps them.
   PieceLimits limits;
   limits.Piece = SmallPieceVolume(l);
-  limits.Void = minimumCavity > 0.0 ? minimumCavity : 0.0;
-  limits.VoidShare = minimumCavity > 0.0 ? 0.0 : AutomaticCavityShare;
   limits.SpareLargest = false; // slivers of an open scan's closing are no part
-  const RemovedPieces removed = RemoveSmallPieces(sink, limits, grid, nullptr, 0, 0);
-  SurfaceArrays arrays = sink.View();
-  report.MaterialVolume = removed.Volume;
-  report.CavityVolume = removed.CavityVolume;
-  report.MinimumCavityVolume = removed.VoidLimit;
-  report.KeptCavities = removed.Cavities;
-  report.RemovedCavities = removed.Voids;
-  report.RemovedPieces = removed.Pieces;
-  report.MinimumWallThickness = report.KeptCavities > 0 ? MinimumWall(grid, arrays, distance, l, wall) : 0.0;
-  if (drainHoles > 0 && report.KeptCavities > 0)
-  {
-    // Again with the holes: the kept cavities now open to the outside, the
-    // merged ones go as before (by the same volume).
-    const double radius = 0.5 * (drainDiameter > 0.0 ? drainDiameter : std::max(2.0 * wall, 4.0 * grid.Spacing));
-    const std::vector<Drill> drills =
-      DrainHoles(grid, outer, distance, l, wall, report.MinimumCavityVolume, drainHoles, radius, down);
-    const PartField drilled(grid, outer, distance, l, wall, drills);
+  std::unique_ptr<PartField> part;
+  const auto contour = [&](const Restoration* restored, double minimumCavity) {
+    part.reset(); // one at a time
+    part.reset(new PartField(grid, outer, distance, l, wall, drills, restored));
     SurfaceArrays none = sink.View();
     none.NumberOfPoints = none.NumberOfTriangles = 0;
     sink.Truncate(none);
-    if (!ContourBricks(grid, drilled, sink, 0, -1, monitor))
+    if (!ContourBricks(grid, *part, sink, 0, -1, monitor))
     {
       return false;
     }
-    PieceLimits again = limits;
-    again.Void = report.MinimumCavityVolume;
-    again.VoidShare = 0.0;
-    const RemovedPieces opened = RemoveSmallPieces(sink, again, grid, nullptr, 0, 0);
-    arrays = sink.View();
-    report.MaterialVolume = opened.Volume;
+    limits.Void = minimumCavity;
+    limits.VoidShare = minimumCavity > 0.0 ? 0.0 : AutomaticCavityShare;
+    const RemovedPieces removed = RemoveSmallPieces(sink, limits, grid, nullptr, 0, 0);
+    report.MaterialVolume = removed.Volume;
+    report.CavityVolume = removed.CavityVolume;
+    report.MinimumCavityVolume = removed.VoidLimit;
+    report.KeptCavities = removed.Cavities;
+    report.RemovedCavities = removed.Voids;
+    report.RemovedPieces = removed.Pieces;
+    report.Pieces = removed.KeptPieces;
+    return true;
+  };
+  if (!contour(nullptr, request.MinimumCavity))
+  {
+    return false;
+  }
+  // The wall as made, before the holes cut through it.
+  report.MinimumWallThickness =
+    report.KeptCavities > 0 ? MinimumWall(grid, sink.View(), distance, l, wall, report.ThinnestWallAt) : 0.0;
+  if (request.DrainHoles > 0 && report.KeptCavities > 0)
+  {
+    // Again with the holes: the kept cavities now open to the outside, the
+    // merged ones go as before (by the same volume).
+    const double radius =
+      0.5 * (request.DrainDiameter > 0.0 ? request.DrainDiameter : std::max(2.0 * wall, 4.0 * h));
+    report.DrainHolesAsked = request.DrainHoles * report.KeptCavities;
+    drills = DrainHoles(grid, outer, distance, l, wall, report.MinimumCavityVolume, request.DrainHoles, radius,
+      request.Down);
+    const double cavity = report.MinimumCavityVolume, cavityVolume = report.CavityVolume;
+    const std::int64_t kept = report.KeptCavities;
+    if (!contour(nullptr, cavity))
+    {
+      return false;
+    }
+    report.CavityVolume = cavityVolume; // the cavities are open now: the volumes before
+    report.KeptCavities = kept;
     report.DrainHoles = static_cast<std::int64_t>(drills.size());
   }
+  // The scan against the part: material around the points it lost, where
+  // they are a limb or a piece and not the scan (RestorableShare), then
+  // what is still lost.
+  report.LostDistance = LostDistanceCells * h;
+  report.ScanPoints = request.Scan ? request.ScanPoints : 0;
+  std::vector<std::int64_t> lost = LostPoints(grid, outer, *part, sink.View(), distance, l, cap, request, drills, report);
+  if (!lost.empty() && static_cast<double>(lost.size()) <= RestorableShare * static_cast<double>(request.ScanPoints))
+  {
+    std::vector<double> xyz;
+    xyz.reserve(3 * lost.size());
+    for (std::int64_t p : lost)
+    {
+      xyz.insert(xyz.end(), request.Scan + 3 * p, request.Scan + 3 * p + 3);
+    }
+    const NearestPoints lostPoints(xyz.data(), static_cast<std::int64_t>(lost.size()));
+    const Restoration restored(grid, request.Scan, request.ScanPoints, lost, LostRadiusCells * h, 2.0 * l);
+    const double reach = (LostRadiusCells + 1.0) * h;
+    limits.Supported = [&](const double* x) { return lostPoints.Distance(x, reach) < reach; };
+    const double cavityVolume = report.CavityVolume;
+    const std::int64_t kept = report.KeptCavities;
+    if (!contour(&restored, report.MinimumCavityVolume))
+    {
+      return false;
+    }
+    if (!drills.empty())
+    {
+      report.CavityVolume = cavityVolume;
+      report.KeptCavities = kept;
+    }
+    const std::vector<std::int64_t> left = LostPoints(grid, outer, *part, sink.View(), distance, l, cap, request, drills, report);
+    std::vector<std::int64_t> back; // the lost points held now
+    std::set_difference(lost.begin(), lost.end(), left.begin(), left.end(), std::back_inserter(back));
+    report.RestoredPoints = static_cast<std::int64_t>(back.size());
+    report.RestoredRegions = LostRegions(request.Scan, back, LostRegionReach * h);
+    lost = left;
+  }
+  report.LostPoints = static_cast<std::int64_t>(lost.size());
+  report.LostRegions = LostRegions(request.Scan, lost, LostRegionReach * h);
+  const SurfaceArrays arrays = sink.View();
   for (std::int64_t p = 0; p < arrays.NumberOfPoints; ++p)
   {
     for (int a = 0; a < 3; ++a)

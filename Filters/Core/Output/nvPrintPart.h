@@ -45,10 +45,23 @@
 
 #include <array>
 #include <cstdint>
+#include <vector>
 
 namespace nv
 {
 class Monitor;
+
+/// The grid cells the wall spans at least where the spacing is automatic
+/// (nvReconstruction.cxx, ResolveAutomatic): f > 0 across a wall under two
+/// cells thick is under a cell in places, and contours into a lace of
+/// fragments; three keep it whole with a cell to spare. A spacing the user
+/// set that gives fewer is warned about.
+constexpr double LeastCellsPerWall = 3.0;
+
+/// Bytes per grid node that MakePart holds beside the dense phi: the outer
+/// sheet's copy of phi (4), the nearest-vertex keys of SheetDistance (8) and
+/// the distance D (4). The memory limit counts them (CheckMemory).
+constexpr double PartBytesPerNode = 16.0;
 
 /// The way down for the drain holes (DrainHoleAxis): axis value / 2, towards
 /// its low end for even values.
@@ -62,32 +75,76 @@ enum class DrainAxis
   PlusZ = 5
 };
 
+/// What the part is made of beside the outer sheet: the user's printing
+/// settings, and the scan it must hold.
+struct PartRequest
+{
+  double Wall = 0.0;                   ///< w (WallThickness)
+  double MinimumCavity = 0.0;          ///< MinimumCavityVolume (0: 1 % of the largest cavity)
+  int DrainHoles = 0;                  ///< NumberOfDrainHoles per cavity kept
+  double DrainDiameter = 0.0;          ///< DrainHoleDiameter (0: 2 w, at least 4 h)
+  DrainAxis Down = DrainAxis::MinusZ;  ///< DrainHoleAxis
+  const double* Scan = nullptr;        ///< the scan's points, x y z after one another (may be null)
+  std::int64_t ScanPoints = 0;
+};
+
+/// The scan points in one place that the part lost (nearer to one another
+/// than LostRegionReach cells): a limb or piece it lacks.
+struct LostRegion
+{
+  std::int64_t Points = 0;
+  std::array<double, 3> Center{ { 0.0, 0.0, 0.0 } }; ///< the points' mean
+  std::array<double, 3> Size{ { 0.0, 0.0, 0.0 } };   ///< their box's sides
+};
+
 /// What the part is: its figures for the print.
 struct PrintReport
 {
   double MaterialVolume = 0.0;       ///< the material's volume (the part less its cavities)
   double CavityVolume = 0.0;         ///< the kept cavities' volume
   double MinimumWallThickness = 0.0; ///< the least distance from the inner surface to the outer (0: solid)
+  std::array<double, 3> ThinnestWallAt{ { 0.0, 0.0, 0.0 } }; ///< where (on the inner surface)
   double MinimumCavityVolume = 0.0;  ///< the volume below which a cavity was merged into the wall
   std::int64_t KeptCavities = 0;
   std::int64_t RemovedCavities = 0;
   std::int64_t RemovedPieces = 0;
+  std::int64_t Pieces = 0;     ///< separate pieces of material the part is made of
   std::int64_t DrainHoles = 0; ///< holes drilled from the cavities to the outside
+  std::int64_t DrainHolesAsked = 0; ///< NumberOfDrainHoles times the cavities kept
   std::array<double, 6> Bounds{ { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 } }; ///< the part's xmin, xmax, ymin, ...
+  double ShellVolume = 0.0; ///< the shell's material (phi > 0), which the part's is compared with
+  /// The scan against the part (CheckScan): a scan point is lost when it
+  /// lies farther than LostDistance outside the part's outer surface, beyond
+  /// what the closing explains (a point in a concavity narrower than the
+  /// offset lies inside the material, as deep as the concavity is narrow).
+  std::int64_t ScanPoints = 0;       ///< the points checked
+  double LostDistance = 0.0;         ///< the bound: 2 h
+  std::int64_t RestoredPoints = 0;   ///< lost points the part got back (material put around them)
+  std::int64_t LostPoints = 0;       ///< lost points left after that
+  double FarthestLost = 0.0;         ///< how far the farthest lies outside the part
+  std::vector<LostRegion> LostRegions; ///< where they are, the most points first
+  std::vector<LostRegion> RestoredRegions; ///< where the restored ones are, likewise
 };
+
+/// The share of the scan's points up to which lost points are restored
+/// (RestoreLostPoints): a limb or a few pieces, not the scan itself (an
+/// open scan's closing is empty: the whole scan is lost, and a warning
+/// says why instead).
+constexpr double RestorableShare = 0.2;
 
 /**
  * Makes the part into `sink`. outer: phi on every node of the grid, once
  * KeepSheets(Outer) filled the cavities (phi > 0: inside the outer sheet).
- * wall: w; minimumCavity: cavities below it are merged into the wall (0:
- * below 1 % of the largest). drainHoles: holes drilled from each cavity
- * kept, at its lowest points along `down`, of diameter drainDiameter (0:
- * 2 w, at least 4 h): f is made again with them (f = min(f, the distance
- * to the hole's surface)) and contoured again, so the part stays closed.
- * Returns false if the monitor stopped it.
+ * Cavities below request.MinimumCavity are merged into the wall; drain
+ * holes are drilled from each cavity kept, at its lowest points along
+ * request.Down: f is made again with them (f = min(f, the distance to the
+ * hole's surface)) and contoured again, so the part stays closed. Then the
+ * part is checked against request.Scan: material is put back around the
+ * points it lost (up to RestorableShare of them), and those still lost are
+ * reported. Returns false if the monitor stopped it.
  */
-bool MakePart(const Grid& grid, const Parameters& parameters, const float* outer, double wall, double minimumCavity,
-  int drainHoles, double drainDiameter, DrainAxis down, SurfaceSink& sink, Monitor* monitor, PrintReport& report);
+bool MakePart(const Grid& grid, const Parameters& parameters, const float* outer, const PartRequest& request,
+  SurfaceSink& sink, Monitor* monitor, PrintReport& report);
 
 } // namespace nv
 

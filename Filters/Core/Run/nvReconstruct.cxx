@@ -111,8 +111,10 @@ std::string HoleFigures(const OpenHole& widest, std::int64_t count)
 /// a larger radius bridges, and holes the bridging left open although they
 /// are narrower (its rounds ran out, or their rim is not flat enough to
 /// bridge: nvGapClosing.h), which only a thicker wall covers.
-std::vector<std::string> GapWarnings(const GapReport& gaps, double closingRadius, double offset)
+std::vector<std::string> GapWarnings(const GapReport& gaps, double closingRadius, double offset, bool printing)
 {
+  // The part to print is made from the shell: its wall is the one pierced.
+  const char* wall = printing ? " the wall of the shell the part is made from " : " the shell's wall ";
   const OpenHole* widest[2] = { nullptr, nullptr };
   std::int64_t count[2] = { 0, 0 };
   for (const OpenHole& hole : gaps.Holes) // widest first
@@ -131,7 +133,7 @@ std::vector<std::string> GapWarnings(const GapReport& gaps, double closingRadius
     text << Plural(count[0], "hole", "holes") << " in the sampling " << (count[0] == 1 ? "is" : "are")
          << " wider than " << (closingRadius > 0.0 ? "ClosingRadius (" : "OffsetDistance (")
          << (closingRadius > 0.0 ? closingRadius : offset) << ") and pierce" << (count[0] == 1 ? "s" : "")
-         << " the shell's wall " << HoleFigures(*widest[0], count[0])
+         << wall << HoleFigures(*widest[0], count[0])
          << ".\n";
     if (closingRadius > 0.0)
     {
@@ -153,7 +155,7 @@ std::vector<std::string> GapWarnings(const GapReport& gaps, double closingRadius
     text << Plural(count[1], "hole", "holes") << " narrower than ClosingRadius (" << closingRadius << ") "
          << (count[1] == 1 ? "was" : "were")
          << " left open by the gap closing (its rounds ran out, or the rim is too uneven to bridge) and pierce"
-         << (count[1] == 1 ? "s" : "") << " the shell's wall " << HoleFigures(*widest[1], count[1]) << ".\n"
+         << (count[1] == 1 ? "s" : "") << wall << HoleFigures(*widest[1], count[1]) << ".\n"
          << "A larger ClosingRadius does not change that: set OffsetDistance to "
          << RoundUp(widest[1]->Radius / BridgeTarget) << " or more, and the wall covers "
          << (count[1] == 1 ? "it." : "them.");
@@ -256,6 +258,153 @@ std::string EmptyPartWarning()
          "Close the scan's holes (CloseGaps, ClosingRadius), or set WallThickness to 0 to print the shell itself.";
 }
 
+/// A place, as a message writes it: "(x, y, z)".
+std::string Place(const std::array<double, 3>& x)
+{
+  std::ostringstream text;
+  text << std::setprecision(4) << "(" << x[0] << ", " << x[1] << ", " << x[2] << ")";
+  return text.str();
+}
+
+std::string ThinWallWarning(double wall, double spacing)
+{
+  std::ostringstream text;
+  text << std::setprecision(3) << "The wall spans only " << wall / spacing
+       << " cells of the grid (WallThickness " << wall << ", SampleSpacing " << spacing << "): a wall under "
+       << LeastCellsPerWall << " cells breaks into fragments and holes, and its pieces are removed as small.\n"
+       << "Set SampleSpacing to " << wall / LeastCellsPerWall
+       << " or less (or 0: the automatic grid follows the wall), memory permitting, or raise WallThickness.";
+  return text.str();
+}
+
+/// The scan points the part still lost (PrintReport::LostPoints), and where.
+/// "N points around (x, y, z), a x b x c" for the largest region, and how
+/// many there are.
+std::string RegionFigures(const std::vector<LostRegion>& regions)
+{
+  const LostRegion& largest = regions.front();
+  std::ostringstream text;
+  text << std::setprecision(4) << (regions.size() == 1 ? "" : "the largest of " + std::to_string(regions.size()) + " places: ")
+       << largest.Points << " points around " << Place(largest.Center) << ", " << largest.Size[0] << " x "
+       << largest.Size[1] << " x " << largest.Size[2];
+  return text.str();
+}
+
+/// The scan points the part still lost (PrintReport::LostPoints), and where.
+std::string LostPointsWarning(const PrintReport& print)
+{
+  std::ostringstream text;
+  const double share = static_cast<double>(print.LostPoints) / static_cast<double>(print.ScanPoints);
+  text << std::setprecision(3) << print.LostPoints << " of the scan's " << print.ScanPoints << " points ("
+       << 100.0 * share << " %) lie outside the part, up to " << print.FarthestLost + print.LostDistance
+       << " from it (" << RegionFigures(print.LostRegions) << "; field data LostPoints, LostRegionCenter).\n";
+  if (share > RestorableShare)
+  {
+    // Most of the scan, not a limb: the closing itself is (nearly) empty.
+    text << "The scan's closing is mostly empty, as for an open scan or one with wide holes: close the scan's holes "
+            "(CloseGaps, ClosingRadius), or set WallThickness to 0 to print the shell itself.";
+  }
+  else
+  {
+    text << "The shell holds them: set WallThickness to 0 to print the shell itself.";
+  }
+  return text.str();
+}
+
+std::string RestoredWarning(const PrintReport& print)
+{
+  std::ostringstream text;
+  text << std::setprecision(4) << "The part had lost " << Plural(print.RestoredPoints, "scan point", "scan points")
+       << " (" << RegionFigures(print.RestoredRegions)
+       << "): a limb or piece thinner than the closing holds. Material was put back around them, so there the "
+          "part's surface lies up to "
+       << print.LostDistance << " outside the points, not on them (field data RestoredPoints).\n"
+       << "Check the part there, or set WallThickness to 0 to print the shell itself.";
+  return text.str();
+}
+
+/// The warnings about the part to print, after it is made: each says what
+/// is wrong with the part and what to change.
+std::vector<std::string> PartWarnings(const Settings& settings, const Reconstruction& run, const PrintReport& print,
+  double surfacePoints)
+{
+  std::vector<std::string> warnings;
+  const double h = run.GetGrid().Spacing, w = settings.WallThickness, l = run.GetParameters().OffsetDistance;
+  if (w < LeastCellsPerWall * h * (1.0 - 1e-9))
+  {
+    warnings.push_back(ThinWallWarning(w, h));
+  }
+  if (surfacePoints == 0)
+  {
+    if (!(w < LeastCellsPerWall * h * (1.0 - 1e-9)))
+    {
+      warnings.push_back(EmptyPartWarning());
+    }
+    return warnings;
+  }
+  if (print.RestoredPoints > 0)
+  {
+    warnings.push_back(RestoredWarning(print));
+  }
+  if (print.LostPoints > 0)
+  {
+    warnings.push_back(LostPointsWarning(print));
+  }
+  // A wall of w around a surface of area A holds about A w of material, the
+  // shell about A 2 l: a part with under a quarter of that share lost most
+  // of the closing.
+  const double share = std::min(1.0, w / (2.0 * l));
+  const bool collapsed = print.ShellVolume > 0.0 && print.MaterialVolume < 0.25 * share * print.ShellVolume;
+  if (collapsed)
+  {
+    std::ostringstream text;
+    text << std::setprecision(3) << "The part holds " << 100.0 * print.MaterialVolume / print.ShellVolume
+         << " % of the shell's material, where a wall of WallThickness " << w << " should hold about "
+         << 100.0 * share << " % of it (WallThickness / (2 OffsetDistance), at most all): the part lost most of "
+         << "the scan's closing.\n"
+         << "Close the scan's holes (CloseGaps, ClosingRadius), or set WallThickness to 0 to print the shell itself.";
+    warnings.push_back(text.str());
+  }
+  if (print.KeptCavities > 0 && print.MinimumWallThickness < w - h)
+  {
+    std::ostringstream text;
+    text << std::setprecision(4) << "The part's wall is " << print.MinimumWallThickness << " at its thinnest, at "
+         << Place(print.ThinnestWallAt) << ", below WallThickness (" << w << ") by more than a grid cell ("
+         << h << ").\nSet SampleSpacing to " << w / LeastCellsPerWall << " or less, memory permitting.";
+    warnings.push_back(text.str());
+  }
+  if (print.Pieces > 1 && !collapsed)
+  {
+    std::ostringstream text;
+    text << "The part is " << print.Pieces << " separate pieces of material, each of which holds scan points ("
+         << print.RemovedPieces << " smaller ones without were removed; field data PartPieces).\n"
+         << "If the scan is of one object, its pieces are apart where the scan has a gap wider than "
+            "ClosingRadius: raise it to bridge the gap.";
+    warnings.push_back(text.str());
+  }
+  if (print.DrainHoles < print.DrainHolesAsked)
+  {
+    std::ostringstream text;
+    text << Plural(print.DrainHolesAsked, "drain hole was", "drain holes were") << " asked for ("
+         << "NumberOfDrainHoles " << settings.NumberOfDrainHoles << " for each of "
+         << Plural(print.KeptCavities, "cavity", "cavities") << "), and " << print.DrainHoles
+         << " made: holes start at least three diameters apart on a cavity's lowest points, and the cavities' "
+            "floors have room for no more.\n"
+         << "Lower DrainHoleDiameter for more holes.";
+    warnings.push_back(text.str());
+  }
+  return warnings;
+}
+
+std::string DrainHolesWithoutWallWarning(const Settings& settings)
+{
+  std::ostringstream text;
+  text << "NumberOfDrainHoles is " << settings.NumberOfDrainHoles
+       << ", but WallThickness is 0: the output is the shell, which has no drain holes.\n"
+       << "Set WallThickness to the wall to print for a hollow part with drain holes, or NumberOfDrainHoles to 0.";
+  return text.str();
+}
+
 std::string PrintDistributedError()
 {
   return "A part to print (WallThickness above 0) needs the whole grid on one process, and this run is "
@@ -337,16 +486,25 @@ std::string PartSize(const double part[6], const double cloud[6])
 
 /// Step 7, printing: the part (nvPrintPart.h), from a copy of the dense phi
 /// whose cavities KeepSheets fills. Returns false if the monitor stopped it.
-bool MakePrintPart(Reconstruction& run, SurfaceSink& sink, const VolumeArrays& dense, Outcome& outcome)
+bool MakePrintPart(Reconstruction& run, SurfaceSink& sink, const VolumeArrays& dense,
+  const std::vector<double>& scan, Outcome& outcome)
 {
   const Settings& settings = run.GetSettings();
   const Grid& grid = run.GetGrid();
   std::vector<float> outer(dense.Phi, dense.Phi + grid.NumberOfNodes());
+  const std::int64_t shellNodes = std::count_if(outer.begin(), outer.end(), [](float phi) { return phi > 0.0f; });
+  outcome.Print.ShellVolume = static_cast<double>(shellNodes) * std::pow(grid.Spacing, 3);
+  PartRequest request;
+  request.Wall = settings.WallThickness;
+  request.MinimumCavity = settings.MinimumCavityVolume;
+  request.DrainHoles = settings.NumberOfDrainHoles;
+  request.DrainDiameter = settings.DrainHoleDiameter;
+  request.Down = settings.DrainHoleAxis;
+  request.Scan = scan.data();
+  request.ScanPoints = static_cast<std::int64_t>(scan.size() / 3);
   const bool done = run.GetStageTimes().Time("part", [&]() {
     KeepSheets(grid, outer.data(), Sheets::Outer);
-    return MakePart(grid, run.GetParameters(), outer.data(), settings.WallThickness, settings.MinimumCavityVolume,
-      settings.NumberOfDrainHoles, settings.DrainHoleDiameter, settings.DrainHoleAxis, sink, run.GetMonitor(),
-      outcome.Print);
+    return MakePart(grid, run.GetParameters(), outer.data(), request, sink, run.GetMonitor(), outcome.Print);
   });
   outcome.Printed = done;
   outcome.Chosen.PartSizeUsed = PartSize(outcome.Print.Bounds.data(), run.GetPlan().PointsBounds.data());
@@ -392,7 +550,7 @@ bool MakeShell(Reconstruction& run, SurfaceSink& sink, const VolumeArrays& dense
 /// its small pieces removed (phi follows in the same regions). Returns false
 /// if the monitor stopped it. noInnerSheet: as MakeShell's.
 bool MakeSurface(Reconstruction& run, SurfaceSink& sink, const VolumeArrays& dense, bool distributed,
-  Outcome& outcome, bool& noInnerSheet)
+  const std::vector<double>& scan, Outcome& outcome, bool& noInnerSheet)
 {
   const Settings& settings = run.GetSettings();
   Monitor* monitor = run.GetMonitor();
@@ -401,7 +559,7 @@ bool MakeSurface(Reconstruction& run, SurfaceSink& sink, const VolumeArrays& den
     monitor->Stage(OutputStage[0], OutputStage[1]);
   }
   const bool printing = Printing(settings);
-  const bool done = printing ? MakePrintPart(run, sink, dense, outcome)
+  const bool done = printing ? MakePrintPart(run, sink, dense, scan, outcome)
                              : MakeShell(run, sink, dense, distributed, outcome, noInnerSheet);
   run.ReleaseBand(); // the surface is made: what follows needs neither
   const bool stopped = monitor && monitor->Aborted();
@@ -436,7 +594,7 @@ void WarnAboutResult(const Reconstruction& run, bool distributed, double surface
   {
     outcome.Warnings.push_back(CoarseGridWarning(run));
   }
-  for (std::string& warning : GapWarnings(run.GetGaps(), plan.ClosingRadius, offset))
+  for (std::string& warning : GapWarnings(run.GetGaps(), plan.ClosingRadius, offset, Printing(settings)))
   {
     outcome.Warnings.push_back(std::move(warning));
   }
@@ -449,11 +607,18 @@ void WarnAboutResult(const Reconstruction& run, bool distributed, double surface
   {
     outcome.Warnings.push_back(OpenShellWarning(run.GetGaps(), plan.ClosingRadius, offset));
   }
-  if (surfacePoints == 0 && Printing(settings))
+  if (Printing(settings))
   {
-    outcome.Warnings.push_back(EmptyPartWarning());
+    for (std::string& warning : PartWarnings(settings, run, outcome.Print, surfacePoints))
+    {
+      outcome.Warnings.push_back(std::move(warning));
+    }
   }
-  else if (surfacePoints == 0 && !explained)
+  else if (settings.NumberOfDrainHoles > 0)
+  {
+    outcome.Warnings.push_back(DrainHolesWithoutWallWarning(settings));
+  }
+  if (surfacePoints == 0 && !Printing(settings) && !explained)
   {
     outcome.Warnings.push_back(EmptySurfaceWarning(offset, run.GetGrid().Spacing));
   }
@@ -473,6 +638,16 @@ std::vector<SummaryArray> PartSummary(const Settings& settings, const PrintRepor
     { "MinimumCavityVolume", SummaryArray::Double, 1, { print.MinimumCavityVolume } },
     { "PartBounds", SummaryArray::Double, 6, { print.Bounds.begin(), print.Bounds.end() } },
     { "DrainHoles", SummaryArray::Double, 1, { static_cast<double>(print.DrainHoles) } },
+    { "PartPieces", SummaryArray::Double, 1, { static_cast<double>(print.Pieces) } },
+    { "ThinnestWallAt", SummaryArray::Double, 3,
+      { print.ThinnestWallAt[0], print.ThinnestWallAt[1], print.ThinnestWallAt[2] } },
+    { "LostDistance", SummaryArray::Double, 1, { print.LostDistance } },
+    { "LostPoints", SummaryArray::Double, 1, { static_cast<double>(print.LostPoints) } },
+    { "LostRegionCenter", SummaryArray::Double, 3,
+      { print.LostRegions.empty() ? 0.0 : print.LostRegions[0].Center[0],
+        print.LostRegions.empty() ? 0.0 : print.LostRegions[0].Center[1],
+        print.LostRegions.empty() ? 0.0 : print.LostRegions[0].Center[2] } },
+    { "RestoredPoints", SummaryArray::Double, 1, { static_cast<double>(print.RestoredPoints) } },
   };
 }
 
@@ -499,7 +674,9 @@ Outcome ReconstructSteps(Reconstruction& run, std::vector<double> xyz, std::shar
       return dense;
     });
   }
-  // Steps 1-6.
+  // Steps 1-6. The part to print is checked against the scan's own points
+  // (not the bridging ones the run adds): a copy.
+  const std::vector<double> scan = Printing(run.GetSettings()) ? xyz : std::vector<double>();
   if (!run.Run(std::move(xyz), std::move(sampling)))
   {
     outcome.Error = run.Error();
@@ -515,7 +692,7 @@ Outcome ReconstructSteps(Reconstruction& run, std::vector<double> xyz, std::shar
   {
     outcome.VolumeBegin = outcome.DenseArrays ? run.VolumeBegin() : run.PieceBegin();
     outcome.VolumeEnd = outcome.DenseArrays ? run.VolumeEnd() : run.PieceEnd();
-    done = MakeSurface(run, sink, dense, distributed, outcome, explained);
+    done = MakeSurface(run, sink, dense, distributed, scan, outcome, explained);
   }
   outcome.OutputSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   // Step 9. Every process agrees whether the run is done, whatever stage it

@@ -92,6 +92,24 @@ Settings ResolveAutomatic(const Settings& settings, const SamplingStatistics& sa
         values.OffsetDistance = std::max(values.OffsetDistance, 4.0 * spacing);
       }
     }
+    // Printing: the wall spans LeastCellsPerWall cells at least, whatever
+    // the cap (nvPrintPart.h); the memory limit decides (CheckMemory).
+    const double wallSpacing = settings.WallThickness > 0.0 ? settings.WallThickness / LeastCellsPerWall : 0.0;
+    if (wallSpacing > 0.0 && spacing > wallSpacing)
+    {
+      plan.WallSpacing = wallSpacing;
+      spacing = wallSpacing;
+      if (plan.CoarsenedFrom > 0.0)
+      {
+        // The cap no longer decides: the offset as the sampling asks, l = 4 h at least.
+        if (automaticOffset)
+        {
+          values.OffsetDistance = std::max(plan.OffsetBeforeCoarsening, 4.0 * spacing);
+        }
+        plan.CoarsenedFrom = 0.0;
+        plan.OffsetBeforeCoarsening = 0.0;
+      }
+    }
     values.SampleSpacing = spacing;
   }
   else if (automaticOffset && values.OffsetDistance > 0.0)
@@ -146,6 +164,27 @@ std::int64_t BrickLayerOf(const Grid& grid, double z, std::int64_t layers)
   return std::min(layers - 1, std::max<std::int64_t>(0, k >> BrickShift));
 }
 
+/// Bytes per node of the dense arrays a run on one process holds: the
+/// output's (Settings::OutputBytesPerNode), and when printing the dense phi
+/// whatever OutputVolume says and the part's own arrays (nvPrintPart.h).
+double DenseBytesPerNode(const Settings& settings)
+{
+  const double output = settings.OutputBytesPerNode();
+  return settings.WallThickness > 0.0 ? std::max(output, 4.0 + 2.0) + PartBytesPerNode : output;
+}
+
+/// A value rounded to three significant digits, up or down: a figure a
+/// message can print that still holds.
+double ThreeDigits(double value, bool up)
+{
+  if (!(value > 0.0) || !std::isfinite(value))
+  {
+    return value;
+  }
+  const double unit = std::pow(10.0, std::floor(std::log10(value)) - 2.0);
+  return (up ? std::ceil(value / unit) : std::floor(value / unit)) * unit;
+}
+
 std::string MiB(double bytes)
 {
   std::ostringstream text;
@@ -195,6 +234,21 @@ Plan MakePlan(const Settings& chosen, const double bounds[6], const SamplingStat
   {
     error << "An automatic OffsetDistance needs at least two distinct points; set OffsetDistance.";
   }
+  else if (!std::isfinite(chosen.WallThickness) || chosen.WallThickness < 0.0)
+  {
+    error << "WallThickness must be a finite value >= 0 (0: the shell, no part to print), not "
+          << chosen.WallThickness << ".";
+  }
+  else if (!std::isfinite(chosen.DrainHoleDiameter) || chosen.DrainHoleDiameter < 0.0)
+  {
+    error << "DrainHoleDiameter must be a finite value >= 0 (0: automatic), not " << chosen.DrainHoleDiameter
+          << ".";
+  }
+  else if (!std::isfinite(chosen.MinimumCavityVolume) || chosen.MinimumCavityVolume < 0.0)
+  {
+    error << "MinimumCavityVolume must be a finite value >= 0 (0: automatic), not " << chosen.MinimumCavityVolume
+          << ".";
+  }
   else if (!std::isfinite(settings.TimeStep))
   {
     error << "TimeStep must be finite, not " << settings.TimeStep << ".";
@@ -210,6 +264,21 @@ Plan MakePlan(const Settings& chosen, const double bounds[6], const SamplingStat
   else if (!(bounds[0] <= bounds[1] && bounds[2] <= bounds[3] && bounds[4] <= bounds[5]))
   {
     error << "The input has no points: nothing to reconstruct.";
+  }
+  else if (chosen.WallThickness > 0.0 && chosen.NumberOfDrainHoles > 0 && chosen.DrainHoleDiameter > 0.0)
+  {
+    // A hole wider than half the cloud across its axis cuts the part apart.
+    const int axis = static_cast<int>(chosen.DrainHoleAxis) / 2;
+    const double across[2] = { bounds[2 * ((axis + 1) % 3) + 1] - bounds[2 * ((axis + 1) % 3)],
+      bounds[2 * ((axis + 2) % 3) + 1] - bounds[2 * ((axis + 2) % 3)] };
+    const double narrowest = std::min(across[0], across[1]);
+    if (chosen.DrainHoleDiameter > 0.5 * narrowest)
+    {
+      error << "DrainHoleDiameter (" << chosen.DrainHoleDiameter
+            << ") is more than half the cloud's width across DrainHoleAxis (" << across[0] << " x " << across[1]
+            << "): a hole that wide cuts the part apart.\nSet DrainHoleDiameter to " << 0.5 * narrowest
+            << " or less (0: twice WallThickness).";
+    }
   }
   if (!error.str().empty())
   {
@@ -638,6 +707,15 @@ bool Reconstruction::BuildBand(std::vector<double> xyz)
   {
     this->Comm->MaxAll(failed, 2);
   }
+  if (failed[0] > 0.0 && this->ThePlan.WallSpacing > 0.0)
+  {
+    // Printing on a grid made fine for the wall: the wall's message, with
+    // the band's bytes counted.
+    const Grid& grid = this->ThePlan.TheGrid;
+    return this->Fail(this->WallGridTooLarge(static_cast<double>(grid.NumberOfNodes()),
+      this->BytesBeforeBand + failed[0] * BytesPerBandNode, this->TheSettings.MemoryLimitBytes(),
+      DenseBytesPerNode(this->TheSettings), this->PointsBeforeBand, true));
+  }
   if (failed[0] > 0.0)
   {
     std::ostringstream error;
@@ -983,6 +1061,70 @@ void Reconstruction::Partition(const std::vector<double>& xyz, std::int64_t laye
                                             : std::min(this->Part.Owned.End * BrickSize + 1, grid.Dims[2]);
 }
 
+std::string Reconstruction::WallGridTooLarge(
+  double gridNodes, double bytes, double limit, double perNode, double points, bool withBand) const
+{
+  // The ways out, each with a figure that fits: the dense arrays in half
+  // the limit at most (the narrow band needs the rest), by bisection over
+  // the grids MakeGrid makes (a grid's size falls as its spacing grows or
+  // its box shrinks).
+  const Plan& plan = this->ThePlan;
+  const double* bounds = plan.PointsBounds.data();
+  const double room = 0.5 * limit, offsetSpacing = plan.Scheme.OffsetDistance / 4.0; // l = 4 h
+  // The bytes for the model scaled by s about its centre with this wall: an
+  // automatic offset scales with it (the sampling does), and the spacing is
+  // the finer of the offset's and the wall's.
+  const auto bytesAt = [&](double s, double wallSpacing) {
+    double box[6];
+    for (int a = 0; a < 3; ++a)
+    {
+      const double middle = 0.5 * (bounds[2 * a] + bounds[2 * a + 1]), half = 0.5 * (bounds[2 * a + 1] - bounds[2 * a]);
+      box[2 * a] = middle - s * half;
+      box[2 * a + 1] = middle + s * half;
+    }
+    const double scaled = plan.AutomaticOffset ? s : 1.0;
+    const double spacing = std::min(scaled * offsetSpacing, wallSpacing);
+    const Grid grid = MakeGrid(box, spacing, GridPadding(scaled * plan.Scheme.Reach(), spacing));
+    return static_cast<double>(grid.NumberOfNodes()) * (perNode + BytesPerGridNode) + points * BytesPerPoint;
+  };
+  const auto bisect = [](double fits, double fails, const std::function<bool(double)>& ok) {
+    for (int round = 0; round < 60; ++round)
+    {
+      const double middle = 0.5 * (fits + fails);
+      (ok(middle) ? fits : fails) = middle;
+    }
+    return fits;
+  };
+  const double scale = bytesAt(1e-3, plan.WallSpacing) <= room
+    ? bisect(1e-3, 1.0, [&](double s) { return bytesAt(s, plan.WallSpacing) <= room; })
+    : 0.0;
+  // A thicker wall helps while the offset's own grid fits.
+  const bool thickerHelps = bytesAt(1.0, offsetSpacing) <= room;
+  const double coarse = thickerHelps
+    ? bisect(offsetSpacing, plan.WallSpacing, [&](double h) { return bytesAt(1.0, h) <= room; })
+    : 0.0;
+  std::ostringstream error;
+  error << "The wall is too thin for this model's size within the memory limit: WallThickness "
+        << this->TheSettings.WallThickness << " needs a grid spacing of " << plan.WallSpacing << " or less ("
+        << LeastCellsPerWall << " cells across the wall), about " << gridNodes << " nodes over the cloud's box ("
+        << bounds[1] - bounds[0] << " x " << bounds[3] - bounds[2] << " x " << bounds[5] - bounds[4]
+        << "), which need about " << MiB(bytes) << (withBand ? " with the narrow band" : " before the narrow band")
+        << ", over the limit of " << MiB(limit) << ".\n"
+        << "Scale the model to its print size first (a model in millimetres at 1:1 is life-size";
+  if (scale > 0.0)
+  {
+    error << ": scaled by " << ThreeDigits(scale, false)
+          << " or less, this wall's grid takes half the limit at most, the band the rest";
+  }
+  error << ")";
+  if (thickerHelps)
+  {
+    error << ", or set WallThickness to " << ThreeDigits(LeastCellsPerWall * coarse, true) << " or more";
+  }
+  error << ", or raise MemoryLimit.";
+  return error.str();
+}
+
 bool Reconstruction::CheckMemory(double gridNodes, double points)
 {
   // Checked in two stages. Here, before any allocation that grows with the
@@ -996,12 +1138,18 @@ bool Reconstruction::CheckMemory(double gridNodes, double points)
   const double computedNodes = layerNodes * static_cast<double>(this->Computed[1] - this->Computed[0]);
   const double pieceNodes = layerNodes * static_cast<double>(this->Piece[1] - this->Piece[0]);
   const bool whole = this->ThePlan.Scheme.Domain == Domain::WholeDomain;
-  const double bytes = pieceNodes * this->TheSettings.OutputBytesPerNode() + gridNodes * BytesPerGridNode +
+  const double perNode = DenseBytesPerNode(this->TheSettings);
+  const double bytes = pieceNodes * perNode + gridNodes * BytesPerGridNode +
     (whole ? computedNodes * BytesPerBandNode : 0.0) + points * BytesPerPoint;
   const double limit = this->TheSettings.MemoryLimitBytes();
   this->BytesBeforeBand = bytes;
+  this->PointsBeforeBand = points;
   if (this->Anywhere(bytes > limit || (whole && computedNodes > static_cast<double>(MaximumBandSize))))
   {
+    if (this->ThePlan.WallSpacing > 0.0 && bytes > limit)
+    {
+      return this->Fail(this->WallGridTooLarge(gridNodes, bytes, limit, perNode, points, false));
+    }
     std::ostringstream error;
     error << "The grid is too large: about " << gridNodes << " nodes (spacing " << grid.Spacing << ") need about "
           << MiB(bytes) << (this->Comm ? " on some process" : "") << ", over the limit of " << MiB(limit)

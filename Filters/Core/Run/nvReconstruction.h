@@ -51,6 +51,12 @@ struct Plan
   /// the automatic offset before it was raised to 4 h on that grid.
   double CoarsenedFrom = 0.0;
   double OffsetBeforeCoarsening = 0.0;
+  /// Printing (WallThickness > 0) with an automatic spacing: the spacing the
+  /// wall asked for (WallThickness / LeastCellsPerWall, nvPrintPart.h) where
+  /// it made the grid finer than the offset alone would (0: it did not).
+  /// Such a grid is not capped at AutomaticMaximumDimension; the memory
+  /// limit decides, and its message says so (CheckMemory).
+  double WallSpacing = 0.0;
   double Diagonal = 0.0; ///< the diagonal of the points' bounding box
   std::array<double, 6> PointsBounds{ { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 } }; ///< that box: xmin, xmax, ymin, ...
   std::string Error; ///< why there is no grid; empty when there is one
@@ -181,6 +187,11 @@ private:
   bool ProbeHoles();
   bool Fail(const std::string& message);
   bool CheckMemory(double gridNodes, double points);
+  /// The error of a printing run whose grid, made fine for the wall
+  /// (Plan::WallSpacing), is over the memory limit: the spacing the wall
+  /// needs, the memory that takes, and the ways out with their figures.
+  std::string WallGridTooLarge(
+    double gridNodes, double bytes, double limit, double perNode, double points, bool withBand) const;
   void Partition(const std::vector<double>& xyz, std::int64_t layers);
   bool CloseGaps(std::vector<double>& xyz, GapClosing& closing);
 
@@ -201,6 +212,7 @@ private:
   std::unique_ptr<VolumeWriter> Writer; ///< fills the dense arrays (steps 5 and 6)
   bool DenseOnDevice = false;           ///< or the device does (Device GPU)
   double BytesBeforeBand = 0.0;
+  double PointsBeforeBand = 0.0; ///< the points CheckMemory counted
   NarrowBand Band;
   std::unique_ptr<Halo> TheHalo;
   std::unique_ptr<AllenCahnSolver> Solver;

@@ -353,3 +353,185 @@ def test_command_line(tmp_path):
     assert "wall 0.05 " in line[0] and "1 cavity kept" in line[0], line[0]
     assert line[0].endswith(", 1 drain hole"), line[0]
     assert out.stat().st_size > 0
+
+
+# Issue 47: a part never loses the scan in silence.
+
+def run_with_errors(xyz, **settings):
+    """The filter's part, field data, warnings and errors."""
+    from vtkmodules.vtkCommonCore import vtkCommand
+    from narrowvolume import vtkNarrowVolumeReconstruction
+    f = vtkNarrowVolumeReconstruction()
+    said = {"errors": [], "warnings": []}
+
+    def listener(kind):
+        def on_event(caller, event, text):
+            said[kind].append(str(text))
+        on_event.CallDataType = "string0"
+        return on_event
+
+    f.AddObserver(vtkCommand.ErrorEvent, listener("errors"))
+    f.AddObserver(vtkCommand.WarningEvent, listener("warnings"))
+    f.SetInputData(nvclouds.cloud(xyz))
+    for key, value in settings.items():
+        getattr(f, "Set" + key)(value)
+    f.Update()
+    field = f.GetOutput(0).GetFieldData()
+    figures = {field.GetArrayName(a): vtk_to_numpy(field.GetArray(a)).ravel().tolist()
+               for a in range(field.GetNumberOfArrays())}
+    return f, figures, said["warnings"], said["errors"]
+
+
+@pytest.mark.parametrize("settings,words", [
+    (dict(WallThickness=-1.0), "WallThickness must be a finite value >= 0"),
+    (dict(WallThickness=0.05, DrainHoleDiameter=-0.1), "DrainHoleDiameter must be a finite value >= 0"),
+    (dict(WallThickness=0.05, NumberOfDrainHoles=1, DrainHoleDiameter=0.6),
+     "DrainHoleDiameter (0.6) is more than half the cloud's width"),
+])
+def test_inputs_that_cannot_work_refused(settings, words):
+    # A negative wall (the command line's --wall-thickness -1 gave the shell),
+    # a negative diameter, a hole wider than half the model across its axis
+    # (it cut half the model away): an error, and no output.
+    xyz = nvshapes.sphere_points(0.02)
+    f, _, _, errors = run_with_errors(xyz, OffsetDistance=0.1, SampleSpacing=0.02, **settings)
+    assert len(errors) == 1 and words in errors[0], errors
+    assert f.GetOutput(1).GetNumberOfPoints() == 0
+    if "half the cloud" in words:
+        # The advice: the largest diameter it names runs.
+        advised = float(errors[0].split("Set DrainHoleDiameter to ")[1].split(" ")[0])
+        _, figures, _, errors = run_with_errors(xyz, OffsetDistance=0.1, SampleSpacing=0.02, WallThickness=0.05,
+                                                NumberOfDrainHoles=1, DrainHoleDiameter=advised)
+        assert errors == [] and figures["DrainHoles"] == [1.0]
+
+
+def test_drain_holes_without_a_wall_warn():
+    xyz = nvshapes.sphere_points(0.02)
+    _, figures, warnings, _ = run_with_errors(xyz, OffsetDistance=0.1, SampleSpacing=0.02, NumberOfDrainHoles=2)
+    assert len(warnings) == 1 and "NumberOfDrainHoles is 2, but WallThickness is 0" in warnings[0], warnings
+    assert "DrainHoles" not in figures
+    _, _, warnings, _ = run_with_errors(xyz, OffsetDistance=0.1, SampleSpacing=0.02, NumberOfDrainHoles=0)
+    assert warnings == []
+
+
+def millimetre_sphere():
+    """A ball 40 mm across sampled every 1.5 mm: a model in millimetres."""
+    return 40.0 * (nvshapes.sphere_points(1.5 / 40.0) - 0.5)
+
+
+def test_the_grid_follows_the_wall():
+    # A wall of 1.2 mm where the sampling asks for l / 4 = 0.56 mm cells
+    # (about two cells across the wall, which broke into a lace before): the
+    # automatic spacing gives the wall three cells, and the part is whole.
+    xyz = millimetre_sphere()
+    w = 1.2
+    surface, figures, warnings, errors = run_with_errors(xyz, WallThickness=w, OutputVolume=False)
+    h, l = figures["SampleSpacing"][0], figures["OffsetDistance"][0]
+    print("grid %s: h %.4g (l / 4 %.4g), wall %.4g cells" % (surface.GetGridUsed(), h, l / 4, w / h))
+    assert errors == [] and warnings == []
+    assert h == pytest.approx(w / 3) and h < l / 4
+    check_closed(surface.GetOutput(1))
+    assert figures["KeptCavities"] == [1.0] and figures["PartPieces"] == [1.0]
+    assert figures["MinimumWallThickness"][0] >= w - h
+    assert figures["LostPoints"] == [0.0] and figures["RestoredPoints"] == [0.0]
+
+
+def test_a_wall_too_thin_for_the_memory_limit_is_refused():
+    # The model at 1:1 with a thin wall: the grid the wall needs is over the
+    # limit; the error says the spacing, the memory and the ways out, before
+    # anything large is allocated. Each way out, as printed, then runs.
+    xyz = millimetre_sphere()
+    w, limit = 1.2, 48.0  # MiB: the wall's grid needs about 36 for itself, the offset's about 16
+    _, _, _, errors = run_with_errors(xyz, WallThickness=w, OutputVolume=False, MemoryLimit=limit)
+    assert len(errors) == 1, errors
+    error = errors[0]
+    assert "WallThickness 1.2 needs a grid spacing of 0.4 or less" in error and "over the limit of 48 MiB" in error
+    scale = float(error.split("scaled by ")[1].split(" ")[0])
+    thicker = float(error.split("set WallThickness to ")[1].split(" ")[0])
+    assert 0 < scale < 1 and thicker > w
+    _, figures, _, errors = run_with_errors(scale * xyz, WallThickness=w, OutputVolume=False, MemoryLimit=limit)
+    assert errors == [] and figures["KeptCavities"] == [1.0], errors
+    _, figures, _, errors = run_with_errors(xyz, WallThickness=thicker, OutputVolume=False, MemoryLimit=limit)
+    assert errors == [] and figures["KeptCavities"] == [1.0], errors
+
+
+def test_a_wall_thinner_than_the_grid_the_user_set():
+    # SampleSpacing set by hand, the wall 1.5 cells: the part is a lace (or
+    # nothing) and the warning says why, not that the scan is open; its
+    # advice (the spacing it names) gives a whole part and no warning.
+    h, l, w = 0.02, 0.1, 0.03
+    xyz = nvshapes.sphere_points(0.01)
+    _, _, warnings, _ = run_with_errors(xyz, OffsetDistance=l, SampleSpacing=h, WallThickness=w)
+    assert any("The wall spans only 1.5 cells of the grid" in text for text in warnings), warnings
+    assert not any("empty" in text for text in warnings), warnings
+    advised = float([t for t in warnings if "spans only" in t][0].split("Set SampleSpacing to ")[1].split(" ")[0])
+    assert advised == pytest.approx(w / 3)
+    surface, figures, warnings, _ = run_with_errors(xyz, OffsetDistance=l, SampleSpacing=advised, WallThickness=w)
+    assert warnings == []
+    check_closed(surface.GetOutput(1))
+    assert figures["KeptCavities"] == [1.0] and figures["MinimumWallThickness"][0] >= w - advised
+
+
+def horse(leg):
+    """A body (an ellipsoid) on four legs of radius `leg` ending in hooves,
+    sampled at random about 0.02 apart: thin limbs under a large cavity."""
+    generator = np.random.default_rng(47)
+
+    def sphere(center, radius, n):
+        u = generator.normal(size=(n, 3))
+        return center + radius * u / np.linalg.norm(u, axis=1)[:, None]
+
+    body_center, body_axes = np.array([0.0, 0.0, 1.0]), np.array([1.0, 0.4, 0.35])
+    body = body_center + body_axes * (sphere(np.zeros(3), 1.0, 60000))
+    # Ellipsoid points thinned towards an even density (a point's share of area).
+    weight = np.linalg.norm((body - body_center) / body_axes ** 2, axis=1) * np.prod(body_axes)
+    body = body[generator.random(len(body)) < weight / weight.max()][:14000]
+    parts = [body]
+    for x in (-0.7, 0.7):
+        for y in (-0.18, 0.18):
+            n = int(2 * math.pi * leg * 0.8 / 0.02 ** 2)
+            t, z = 2 * math.pi * generator.random(n), 0.1 + 0.8 * generator.random(n)
+            shank = np.c_[x + leg * np.cos(t), y + leg * np.sin(t), z]
+            hoof = sphere(np.array([x, y, 0.1]), 0.05, int(4 * math.pi * 0.05 ** 2 / 0.02 ** 2))
+            inside_body = (((shank - body_center) / body_axes) ** 2).sum(axis=1) < 1
+            shank = shank[~inside_body & (np.linalg.norm(shank - [x, y, 0.1], axis=1) > 0.05)]
+            hoof = hoof[(hoof[:, 2] < 0.1) | (np.hypot(hoof[:, 0] - x, hoof[:, 1] - y) > leg)]
+            parts += [shank, hoof]
+    return np.vstack(parts)
+
+
+def outside_the_part(surface, xyz):
+    """Each point's signed distance to the part's surface (> 0 outside)."""
+    from vtkmodules.vtkFiltersCore import vtkImplicitPolyDataDistance
+    distance = vtkImplicitPolyDataDistance()
+    distance.SetInput(surface)
+    return np.array([distance.EvaluateFunction(p) for p in xyz])
+
+
+def test_a_thin_limb_is_not_lost():
+    # Legs 1.8 cells thick under the body's cavity, at the defaults with a
+    # wall of 2 % of the diagonal: the closing loses them (the part was four
+    # stumps, or lost its hooves, before, with no word). Material is put back
+    # around the points it lost, the part is one closed piece, every scan
+    # point within 2 h of it, and the warning says so and where.
+    xyz = horse(0.012)
+    w = 0.02 * float(np.linalg.norm(xyz.max(axis=0) - xyz.min(axis=0)))
+    f, figures, warnings, errors = run_with_errors(xyz, WallThickness=w, OutputVolume=False)
+    h = figures["SampleSpacing"][0]
+    surface = f.GetOutput(1)
+    outside = outside_the_part(surface, xyz)
+    print("horse: h %.4g, restored %d, lost %d, farthest scan point %.2f h outside" %
+          (h, figures["RestoredPoints"][0], figures["LostPoints"][0], outside.max() / h))
+    assert errors == []
+    check_closed(surface)
+    assert figures["PartPieces"] == [1.0] and figures["KeptCavities"] == [1.0]
+    assert figures["RestoredPoints"][0] > 100 and figures["LostPoints"] == [0.0]
+    assert outside.max() <= figures["LostDistance"][0] == pytest.approx(2 * h)
+    restored = [text for text in warnings if "The part had lost" in text]
+    assert len(restored) == 1, warnings
+    # The place it names is on a leg: below the body.
+    center = [float(v) for v in restored[0].split("points around (")[1].split(")")[0].split(",")]
+    assert center[2] < 0.8 and abs(abs(center[0]) - 0.7) < 0.05, center
+    # Legs thick enough for the closing: nothing restored, nothing said.
+    f, figures, warnings, errors = run_with_errors(horse(0.035), WallThickness=w, OutputVolume=False)
+    assert figures["RestoredPoints"] == [0.0] and figures["LostPoints"] == [0.0] and figures["PartPieces"] == [1.0]
+    assert not any("part" in text for text in warnings), warnings
