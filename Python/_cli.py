@@ -294,6 +294,20 @@ def chosen(volume: vtkImageData) -> str:
         + (int(value("NarrowBandNodes")),))
 
 
+def scaled(cloud, factor: float):
+    """The cloud with its coordinates multiplied by factor (--scale), as doubles."""
+    import numpy as np
+    from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+    from vtkmodules.vtkCommonCore import vtkPoints
+    if cloud.GetPoints() is None:
+        return cloud
+    xyz = factor * vtk_to_numpy(cloud.GetPoints().GetData()).astype(np.float64)
+    points = vtkPoints()
+    points.SetData(numpy_to_vtk(np.ascontiguousarray(xyz), deep=1))
+    cloud.SetPoints(points)
+    return cloud
+
+
 def part(volume: vtkImageData) -> str:
     """The part to print, in one line (WallThickness above 0), else ""."""
     field = volume.GetFieldData()
@@ -340,7 +354,11 @@ def make_parser(defaults: Dict[str, Any]) -> argparse.ArgumentParser:
     parser.add_argument("--version", action="version", version="narrowvolume %s" % __version__)
     parser.add_argument("cloud", help="the point cloud file")
     parser.add_argument("-o", "--output", action="append", default=[], metavar="FILE",
-                        help="a file to write (repeat for several); default: CLOUD's name with _shell.stl")
+                        help="a file to write (repeat for several); default: CLOUD's name with _shell.stl, or "
+                             "_part.stl with --wall-thickness")
+    parser.add_argument("--scale", type=float, default=1.0, metavar="FACTOR",
+                        help="multiply the cloud's coordinates by FACTOR before the run, about the origin: to "
+                             "print size first (0.1: a model in millimetres at 1:10); the outputs are at that size")
     parser.add_argument("-q", "--quiet", action="store_true", help="no progress bar and no summary")
     parser.add_argument("--timings", action="store_true",
                         help="print the seconds of the run's stages (field data StageSeconds) in the summary")
@@ -372,10 +390,13 @@ def main(argv: Optional[List[str]] = None) -> int:
     defaults = _properties.defaults_of(narrowvolume.vtkNarrowVolumeReconstruction())
     parser = make_parser(defaults)
     args = parser.parse_args(argv)
-    outputs = args.output or [os.path.splitext(os.path.basename(args.cloud))[0] + "_shell.stl"]
+    outputs = args.output or [os.path.splitext(os.path.basename(args.cloud))[0] +
+                              ("_part.stl" if (args.WallThickness or 0.0) > 0.0 else "_shell.stl")]
     for path in outputs:
         if os.path.splitext(path)[1].lower() not in WRITERS:
             parser.error("%s: unknown output format; known: %s" % (path, " ".join(sorted(WRITERS))))
+    if not (args.scale > 0.0 and args.scale < float("inf")):
+        parser.error("--scale must be a finite factor above 0, not %s" % args.scale)
     properties = {p.name: getattr(args, p.name) for p in _properties.PROPERTIES if getattr(args, p.name) is not None}
     # File descriptor 2 itself: pvpython's sys.stderr answers isatty() for standard input.
     progress = Progress(sys.stderr, not args.quiet and os.isatty(2))
@@ -383,6 +404,8 @@ def main(argv: Optional[List[str]] = None) -> int:
     started = []  # output files begun
     try:
         cloud = read_cloud(args.cloud)
+        if args.scale != 1.0:
+            cloud = scaled(cloud, args.scale)
         if not args.quiet:
             print("narrowvolume: %d points from %s" % (cloud.GetNumberOfPoints(), args.cloud), file=_stdout(),
                   flush=True)

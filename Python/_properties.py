@@ -222,10 +222,14 @@ PROPERTIES = (
         "offset distance: it lies on the scan where the surface is smooth on the scale of the offset, and "
         "spans concavities narrower than it and bridged holes) and whose inner surface lies this far inside "
         "it, in world units: a wall of this thickness. Normals point out of the material (outward on the "
-        "outer surface, into the cavity on the inner). Where the model is thinner than twice the offset plus "
-        "twice the wall, the part is solid. 0 (the default): the shell. Field data \"MaterialVolume\", "
-        "\"CavityVolume\", \"MinimumWallThickness\" (measured between the two surfaces), \"KeptCavities\", "
-        "\"RemovedCavities\" and \"PartBounds\" describe the part. Needs the whole grid on one process."),
+        "outer surface, into the cavity on the inner). Where the model is thinner than twice the wall, the "
+        "part is solid there. With {SampleSpacing} 0 the grid follows the wall (three cells across it at "
+        "least), within {MemoryLimit}; scale the model to its print size first. The part is checked against "
+        "the scan: material is put back around points it lost (a limb thinner than the closing holds) and a "
+        "warning says where. 0 (the default): the shell. Field data \"MaterialVolume\", \"CavityVolume\", "
+        "\"MinimumWallThickness\" (measured between the two surfaces, at \"ThinnestWallAt\"), "
+        "\"KeptCavities\", \"RemovedCavities\", \"PartPieces\", \"PartBounds\", \"RestoredPoints\" and "
+        "\"LostPoints\" describe the part. Needs the whole grid on one process."),
     Property(
         "MinimumCavityVolume", "Minimum Cavity Volume", float, 0.0, None, None, (), None, "Printing", True, None,
         "With {WallThickness} above 0: cavities of the part smaller than this volume (world units cubed) are "

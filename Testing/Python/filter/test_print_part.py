@@ -535,3 +535,24 @@ def test_a_thin_limb_is_not_lost():
     f, figures, warnings, errors = run_with_errors(horse(0.035), WallThickness=w, OutputVolume=False)
     assert figures["RestoredPoints"] == [0.0] and figures["LostPoints"] == [0.0] and figures["PartPieces"] == [1.0]
     assert not any("part" in text for text in warnings), warnings
+
+
+def test_command_line_scale_and_names(tmp_path):
+    # --scale to print size (the how-to's first step on the command line),
+    # the default output named for the part, and a negative wall refused.
+    cloud = tmp_path / "ball.xyz"
+    np.savetxt(cloud, millimetre_sphere())
+    run = subprocess.run(nvtesting.python_command() + ["-m", "narrowvolume", str(cloud), "--scale", "0.5",
+                                                       "--wall-thickness", "1.2"],
+                         capture_output=True, text=True, cwd=tmp_path)
+    assert run.returncode == 0, run.stderr
+    line = [s for s in run.stdout.splitlines() if "part to print" in s][0]
+    size = [float(v) for v in line.split("part to print: ")[1].split(",")[0].split(" x ")]
+    assert all(19.0 < v < 20.5 for v in size), line  # the 40 mm ball at 1:2
+    assert (tmp_path / "ball_part.stl").stat().st_size > 0 and not (tmp_path / "ball_shell.stl").exists()
+    refused = subprocess.run(nvtesting.python_command() + ["-m", "narrowvolume", str(cloud), "--wall-thickness", "-1"],
+                             capture_output=True, text=True, cwd=tmp_path)
+    assert refused.returncode == 1 and "--wall-thickness must be a finite value >= 0" in refused.stderr, refused.stderr
+    bad = subprocess.run(nvtesting.python_command() + ["-m", "narrowvolume", str(cloud), "--scale", "0"],
+                         capture_output=True, text=True, cwd=tmp_path)
+    assert bad.returncode == 2 and "--scale must be a finite factor above 0" in bad.stderr, bad.stderr
