@@ -742,11 +742,18 @@ double MinimumWall(const Grid& grid, const SurfaceArrays& part, const std::vecto
 /// The drain holes: the cavities are the regions of nodes inside S deeper
 /// than l + w (6-connected) whose volume is at least `minimumVolume` (the
 /// cavities kept); in each, the nodes above its surface's lowest points
-/// along `down`, `count` of them at least three diameters apart, each the
-/// top of a hole straight down through the wall to 2 h past the outside.
+/// along `down`, `count` of them at least three diameters apart (from one
+/// another and from the places tried), each the top of a hole straight down
+/// through the wall to 2 h past the outside, unless that runs longer than
+/// 2 (l + w) + 2 h through S (down a limb, or through a wall more than 60
+/// degrees from square): those are not made, and counted in `tooLong`.
 std::vector<Drill> DrainHoles(const Grid& grid, const float* outer, const std::vector<float>& distance, double offset,
-  double wall, double minimumVolume, int count, double radius, DrainAxis down)
+  double wall, double minimumVolume, int count, double radius, DrainAxis down, std::int64_t& tooLong)
 {
+  // The longest a hole may run through S: the wall and the offset straight
+  // across (l + w) at 60 degrees from the wall's normal, and two cells.
+  const double longest = 2.0 * (offset + wall) + 2.0 * grid.Spacing;
+  tooLong = 0;
   const std::int64_t nodes = grid.NumberOfNodes();
   const double h = grid.Spacing, deep = offset + wall;
   const int axis = static_cast<int>(down) / 2;               // the axis down is along,
@@ -810,11 +817,12 @@ std::vector<Drill> DrainHoles(const Grid& grid, const float* outer, const std::v
     }
     std::stable_sort(lowest.begin(), lowest.end(),
       [](const std::pair<double, std::int64_t>& u, const std::pair<double, std::int64_t>& v) { return u.first < v.first; });
-    std::vector<std::array<double, 3>> tops;
+    std::vector<std::array<double, 3>> tops; // the holes' tops and the places tried, which the next keep away from
+    int made = 0;
     for (const auto& entry : lowest)
     {
       const std::int64_t n = entry.second;
-      if (static_cast<int>(tops.size()) == count)
+      if (made == count)
       {
         break;
       }
@@ -843,6 +851,12 @@ std::vector<Drill> DrainHoles(const Grid& grid, const float* outer, const std::v
       {
         at[axis] += sign;
       }
+      if (static_cast<double>(std::abs(at[axis] - ijk[axis])) * h > longest)
+      {
+        ++tooLong; // down a limb, or through a wall at a slant: not here
+        continue;
+      }
+      ++made;
       Drill drill;
       for (int a = 0; a < 3; ++a)
       {
@@ -1006,6 +1020,15 @@ bool MakePart(const Grid& grid, const Parameters& parameters, const float* outer
   SurfaceSink& sink, Monitor* monitor, PrintReport& report)
 {
   const double l = parameters.OffsetDistance, h = grid.Spacing, wall = request.Wall;
+  // The progress of the steps, as shares of the request's stage, about as
+  // their time goes (the distance D is the longest).
+  const auto step = [&](double from, double to) {
+    if (monitor)
+    {
+      monitor->Stage(request.Progress[0] + from * request.Progress[1], (to - from) * request.Progress[1]);
+    }
+  };
+  step(0.0, 0.1);
   // The outer sheet: phi = 0 with the cavities filled.
   SurfaceMesh sheet;
   const DenseField field(grid, outer, 0, grid.Dims[2], parameters);
@@ -1015,7 +1038,13 @@ bool MakePart(const Grid& grid, const Parameters& parameters, const float* outer
   }
   // The part's surfaces, f = 0.
   const double cap = l + wall + 4.0 * h;
+  step(0.1, 0.5);
   const std::vector<float> distance = SheetDistance(grid, outer, sheet.Points, cap);
+  if (monitor && monitor->Aborted())
+  {
+    return false;
+  }
+  step(0.5, 0.7);
   std::vector<Drill> drills;
   // Contours f (with the holes drilled and the lost points' material put
   // back, as asked) into the sink, and removes its loose pieces and small
@@ -1054,6 +1083,7 @@ bool MakePart(const Grid& grid, const Parameters& parameters, const float* outer
   // The wall as made, before the holes cut through it.
   report.MinimumWallThickness =
     report.KeptCavities > 0 ? MinimumWall(grid, sink.View(), distance, l, wall, report.ThinnestWallAt) : 0.0;
+  step(0.7, 0.85);
   if (request.DrainHoles > 0 && report.KeptCavities > 0)
   {
     // Again with the holes: the kept cavities now open to the outside, the
@@ -1062,7 +1092,7 @@ bool MakePart(const Grid& grid, const Parameters& parameters, const float* outer
       0.5 * (request.DrainDiameter > 0.0 ? request.DrainDiameter : std::max(2.0 * wall, 4.0 * h));
     report.DrainHolesAsked = request.DrainHoles * report.KeptCavities;
     drills = DrainHoles(grid, outer, distance, l, wall, report.MinimumCavityVolume, request.DrainHoles, radius,
-      request.Down);
+      request.Down, report.DrainHolesTooLong);
     const double cavity = report.MinimumCavityVolume, cavityVolume = report.CavityVolume;
     const std::int64_t kept = report.KeptCavities;
     if (!contour(nullptr, cavity))
@@ -1076,6 +1106,7 @@ bool MakePart(const Grid& grid, const Parameters& parameters, const float* outer
   // The scan against the part: material around the points it lost, where
   // they are a limb or a piece and not the scan (RestorableShare), then
   // what is still lost.
+  step(0.85, 1.0);
   report.LostDistance = LostDistanceCells * h;
   report.ScanPoints = request.Scan ? request.ScanPoints : 0;
   std::vector<std::int64_t> lost = LostPoints(grid, outer, *part, sink.View(), distance, l, cap, request, drills, report);

@@ -86,6 +86,9 @@ struct PartRequest
   DrainAxis Down = DrainAxis::MinusZ;  ///< DrainHoleAxis
   const double* Scan = nullptr;        ///< the scan's points, x y z after one another (may be null)
   std::int64_t ScanPoints = 0;
+  /// The monitor's stage the part takes: begin and width of the run's
+  /// progress; MakePart shares it among its steps.
+  double Progress[2] = { 0.0, 1.0 };
 };
 
 /// The scan points in one place that the part lost (nearer to one another
@@ -111,6 +114,7 @@ struct PrintReport
   std::int64_t Pieces = 0;     ///< separate pieces of material the part is made of
   std::int64_t DrainHoles = 0; ///< holes drilled from the cavities to the outside
   std::int64_t DrainHolesAsked = 0; ///< NumberOfDrainHoles times the cavities kept
+  std::int64_t DrainHolesTooLong = 0; ///< places not drilled: the way out longer than 2 (l + w) + 2 h
   std::array<double, 6> Bounds{ { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 } }; ///< the part's xmin, xmax, ymin, ...
   double ShellVolume = 0.0; ///< the shell's material (phi > 0), which the part's is compared with
   /// The scan against the part (CheckScan): a scan point is lost when it

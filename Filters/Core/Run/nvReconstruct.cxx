@@ -388,9 +388,15 @@ std::vector<std::string> PartWarnings(const Settings& settings, const Reconstruc
     text << Plural(print.DrainHolesAsked, "drain hole was", "drain holes were") << " asked for ("
          << "NumberOfDrainHoles " << settings.NumberOfDrainHoles << " for each of "
          << Plural(print.KeptCavities, "cavity", "cavities") << "), and " << print.DrainHoles
-         << " made: holes start at least three diameters apart on a cavity's lowest points, and the cavities' "
-            "floors have room for no more.\n"
-         << "Lower DrainHoleDiameter for more holes.";
+         << " made: holes start at least three diameters apart on a cavity's lowest points";
+    if (print.DrainHolesTooLong > 0)
+    {
+      text << ", and " << Plural(print.DrainHolesTooLong, "place was", "places were")
+           << " passed over where the way out runs longer than twice the offset and the wall through the part (down "
+              "a limb, or through a wall at a slant)";
+    }
+    text << ", and the cavities' floors have room for no more.\n"
+         << "Lower DrainHoleDiameter for more holes, or choose another DrainHoleAxis.";
     warnings.push_back(text.str());
   }
   return warnings;
@@ -502,6 +508,8 @@ bool MakePrintPart(Reconstruction& run, SurfaceSink& sink, const VolumeArrays& d
   request.Down = settings.DrainHoleAxis;
   request.Scan = scan.data();
   request.ScanPoints = static_cast<std::int64_t>(scan.size() / 3);
+  request.Progress[0] = OutputStage[0];
+  request.Progress[1] = OutputStage[1];
   const bool done = run.GetStageTimes().Time("part", [&]() {
     KeepSheets(grid, outer.data(), Sheets::Outer);
     return MakePart(grid, run.GetParameters(), outer.data(), request, sink, run.GetMonitor(), outcome.Print);

@@ -556,3 +556,37 @@ def test_command_line_scale_and_names(tmp_path):
     bad = subprocess.run(nvtesting.python_command() + ["-m", "narrowvolume", str(cloud), "--scale", "0"],
                          capture_output=True, text=True, cwd=tmp_path)
     assert bad.returncode == 2 and "--scale must be a finite factor above 0" in bad.stderr, bad.stderr
+
+
+def body_on_a_leg(leg=0.03, spacing=0.015):
+    """A ball of radius 0.5 on one solid leg (radius `leg`, thinner than
+    twice the wall) standing under its centre: the cavity's lowest point is
+    right above the leg."""
+    body = nvshapes.sphere_points(spacing) + [0.0, 0.0, 0.5]  # centre (0.5, 0.5, 1), radius 0.5
+    n, m = int(2 * math.pi * leg / spacing), int(0.55 / spacing)
+    a, z = np.meshgrid(2 * math.pi * np.arange(n) / n, 0.55 * np.arange(m + 1) / m)
+    shank = np.c_[0.5 + leg * np.cos(a.ravel()), 0.5 + leg * np.sin(a.ravel()), z.ravel()]
+    shank = shank[np.linalg.norm(shank - [0.5, 0.5, 1.0], axis=1) > 0.5]
+    foot = [[0.5 + q * math.cos(b), 0.5 + q * math.sin(b), 0.0]
+            for q in np.linspace(0.0, leg, 4)[1:] for b in np.linspace(0.0, 2 * math.pi, 12, endpoint=False)]
+    body = body[~((np.hypot(body[:, 0] - 0.5, body[:, 1] - 0.5) < leg) & (body[:, 2] < 0.6))]
+    return np.vstack([body, shank, foot, [[0.5, 0.5, 0.0]]])
+
+
+def test_drain_holes_never_down_a_leg():
+    # The first place a hole would start is above the leg; straight down,
+    # the hole (wider than the leg) ran its whole length and cut it away.
+    # A hole runs at most 2 (l + w) + 2 h through the part: that place is
+    # passed over, both holes start beside it, and the leg stays whole.
+    xyz = body_on_a_leg()
+    f, figures, warnings, errors = run_with_errors(xyz, OffsetDistance=0.04, SampleSpacing=0.01, WallThickness=0.05,
+                                                   NumberOfDrainHoles=2)
+    surface = f.GetOutput(1)
+    assert errors == [] and warnings == []
+    check_closed(surface)
+    assert figures["DrainHoles"] == [2.0] and figures["PartPieces"] == [1.0]
+    p = vtk_to_numpy(surface.GetPoints().GetData())
+    shank = p[(p[:, 2] > 0.1) & (p[:, 2] < 0.4) & (np.hypot(p[:, 0] - 0.5, p[:, 1] - 0.5) < 0.06)]
+    radius = np.hypot(shank[:, 0] - 0.5, shank[:, 1] - 0.5)
+    print("the leg: %d vertices, radius %.3f to %.3f" % (len(shank), radius.min(), radius.max()))
+    assert len(shank) > 100 and radius.min() > 0.02, "the leg is whole, not slotted or cut away"
