@@ -211,6 +211,7 @@ public:
   vtkNarrowVolumeSwitchMacro(OutputNarrowBand);
   vtkNarrowVolumeSettingMacro(WallThickness, double);
   vtkNarrowVolumeSettingMacro(MinimumCavityVolume, double);
+  vtkNarrowVolumeSettingMacro(CavityClosingDistance, double);
   vtkNarrowVolumeClampMacro(NumberOfDrainHoles, int, 0, 64);
   vtkNarrowVolumeClampMacro(DrainHoleAxis, int, DRAIN_MINUS_X, DRAIN_PLUS_Z);
   vtkNarrowVolumeSettingMacro(DrainHoleDiameter, double);

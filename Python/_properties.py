@@ -236,6 +236,13 @@ PROPERTIES = (
         "merged into the wall, so that no small sealed pocket traps resin or powder. 0 (the default): those "
         "smaller than 1 % of the largest cavity. The value used is in field data \"MinimumCavityVolume\"."),
     Property(
+        "CavityClosingDistance", "Cavity Closing Distance", float, 0.0, None, None, (), None, "Printing", True, None,
+        "With {WallThickness} above 0: the cavity is first made this much deeper, then grown back by as much "
+        "(world units), so that its inside corners and creases are rounded with this radius, where resin "
+        "would pool, and cavities narrower than twice this vanish into the wall (a slicer's hollowing "
+        "closing distance; 2 mm is PrusaSlicer's default). 0 (the default): the cavity is the exact inward "
+        "offset of the outer surface, sharp creases and all."),
+    Property(
         "NumberOfDrainHoles", "Number Of Drain Holes", int, 0, 0, 64, (), None, "Printing", False, None,
         "With {WallThickness} above 0: drill this many holes through the wall from each cavity, at its lowest "
         "points along {DrainHoleAxis} (at least three diameters apart), so that resin or powder drains out. "

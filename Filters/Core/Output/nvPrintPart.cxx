@@ -379,6 +379,81 @@ private:
   std::vector<std::pair<std::int64_t, std::int32_t>> ByBrick; ///< (brick, rod), ascending
 };
 
+/// The inner surface's field at a node inside S, positive in the wall:
+/// l + w - D; or, with a closing distance c, the distance beyond c from the
+/// cavity eroded by c (E: D > l + w + c), so that the cavity is E grown back
+/// by c (an opening: its creases rounded with radius c, and the parts of it
+/// narrower than 2 c gone). G: each node's distance to E's surface.
+struct InnerField
+{
+  const std::vector<float>& D;
+  const std::vector<float>* G; ///< null without a closing distance
+  double Deep;                 ///< l + w
+  double Closing;              ///< c
+
+  double operator()(std::int64_t n) const
+  {
+    if (!this->G)
+    {
+      return this->Deep - this->D[n];
+    }
+    const double g = (*this->G)[n];
+    return this->D[n] > this->Deep + this->Closing ? -(this->Closing + g) : g - this->Closing;
+  }
+};
+
+/// A node array as a brick field, for contouring (every brick varies;
+/// beyond the grid, `outside`).
+class NodeField : public BrickField
+{
+public:
+  NodeField(const Grid& grid, const std::vector<float>& values, float outside)
+    : TheGrid(grid)
+    , Nodes(values)
+    , Outside(outside)
+    , BrickDims(BrickDimensions(grid))
+  {
+  }
+
+  void Layer(std::int64_t layer, std::vector<float>& uniform, std::vector<std::int64_t>& varying) const override
+  {
+    const std::int64_t perLayer = this->BrickDims[0] * this->BrickDims[1];
+    uniform.assign(static_cast<std::size_t>(perLayer), this->Outside);
+    varying.resize(static_cast<std::size_t>(perLayer));
+    for (std::int64_t b = 0; b < perLayer; ++b)
+    {
+      varying[b] = layer * perLayer + b;
+    }
+  }
+
+  void Values(std::int64_t brick, float values[BrickNodes]) const override
+  {
+    const Grid& grid = this->TheGrid;
+    const std::int64_t first[3] = { (brick % this->BrickDims[0]) * BrickSize,
+      ((brick / this->BrickDims[0]) % this->BrickDims[1]) * BrickSize,
+      (brick / (this->BrickDims[0] * this->BrickDims[1])) * BrickSize };
+    for (int k = 0; k < BrickSize; ++k)
+    {
+      for (int j = 0; j < BrickSize; ++j)
+      {
+        for (int i = 0; i < BrickSize; ++i)
+        {
+          const std::int64_t x = first[0] + i, y = first[1] + j, z = first[2] + k;
+          values[i + BrickSize * (j + BrickSize * k)] = x < grid.Dims[0] && y < grid.Dims[1] && z < grid.Dims[2]
+            ? this->Nodes[grid.Index(x, y, z)]
+            : this->Outside;
+        }
+      }
+    }
+  }
+
+private:
+  const Grid& TheGrid;
+  const std::vector<float>& Nodes;
+  float Outside;
+  std::array<std::int64_t, 3> BrickDims;
+};
+
 /// f of the header, clamped to +-Clamp, brick by brick: a value per brick
 /// where f is beyond +-Clamp on all of it, else its nodes' values.
 class PartField : public BrickField
@@ -386,8 +461,8 @@ class PartField : public BrickField
 public:
   /// restored: material put back (f = max(f, its value)), before the
   /// holes are drilled.
-  PartField(const Grid& grid, const float* outer, const std::vector<float>& distance, double offset, double wall,
-    const std::vector<Drill>& drills = {}, const Restoration* restored = nullptr)
+  PartField(const Grid& grid, const float* outer, const std::vector<float>& distance, double offset,
+    const InnerField& innerField, const std::vector<Drill>& drills = {}, const Restoration* restored = nullptr)
     : BrickDims(BrickDimensions(grid))
   {
     const float clamp = static_cast<float>(3.0 * grid.Spacing);
@@ -415,7 +490,7 @@ public:
               {
                 const std::int64_t n = grid.Index(x, y, z);
                 const double d = distance[n];
-                const double inside = std::min(d - offset, offset + wall - d);
+                const double inside = std::min(d - offset, innerField(n));
                 double value = outer[n] > 0.0f ? inside : -(offset + d);
                 const double at[3] = { grid.Origin[0] + static_cast<double>(x) * grid.Spacing,
                   grid.Origin[1] + static_cast<double>(y) * grid.Spacing,
@@ -585,15 +660,15 @@ double MinimumWall(const Grid& grid, const SurfaceArrays& part, const std::vecto
   std::copy(&innerPoints[3 * least.second], &innerPoints[3 * least.second] + 3, where.begin());
   return least.first;
 }
-/// The drain holes: the cavities are the regions of nodes inside S deeper
-/// than l + w (6-connected) whose volume is at least `minimumVolume` (the
+/// The drain holes: the cavities are the regions of nodes inside S where
+/// the inner field is not positive (6-connected) whose volume is at least `minimumVolume` (the
 /// cavities kept); in each, the nodes above its surface's lowest points
 /// along `down`, `count` of them at least three diameters apart (from one
 /// another and from the places tried), each the top of a hole straight down
 /// through the wall to 2 h past the outside, unless that runs longer than
 /// 2 (l + w) + 2 h through S (down a limb, or through a wall more than 60
 /// degrees from square): those are not made, and counted in `tooLong`.
-std::vector<Drill> DrainHoles(const Grid& grid, const float* outer, const std::vector<float>& distance, double offset,
+std::vector<Drill> DrainHoles(const Grid& grid, const float* outer, const InnerField& inner, double offset,
   double wall, double minimumVolume, int count, double radius, DrainAxis down, std::int64_t& tooLong)
 {
   // The longest a hole may run through S: the wall and the offset straight
@@ -601,11 +676,11 @@ std::vector<Drill> DrainHoles(const Grid& grid, const float* outer, const std::v
   const double longest = 2.0 * (offset + wall) + 2.0 * grid.Spacing;
   tooLong = 0;
   const std::int64_t nodes = grid.NumberOfNodes();
-  const double h = grid.Spacing, deep = offset + wall;
+  const double h = grid.Spacing;
   const int axis = static_cast<int>(down) / 2;               // the axis down is along,
   const int sign = static_cast<int>(down) % 2 == 0 ? -1 : 1; // which way along it,
   const int across[2] = { (axis + 1) % 3, (axis + 2) % 3 };  // and the plane across it
-  auto cavity = [&](std::int64_t n) { return outer[n] > 0.0f && distance[n] >= deep; };
+  auto cavity = [&](std::int64_t n) { return outer[n] > 0.0f && inner(n) <= 0.0; };
   std::vector<std::int32_t> label(static_cast<std::size_t>(nodes), -1);
   std::vector<Drill> drills;
   std::vector<std::int64_t> region;
@@ -647,13 +722,13 @@ std::vector<Drill> DrainHoles(const Grid& grid, const float* outer, const std::v
     {
       continue; // merged into the wall
     }
-    // The lowest points of the cavity's surface: below a node, about
-    // D - (l + w) under it (the surface is D = l + w); the region sorted by
-    // that height (then its node order).
+    // The lowest points of the cavity's surface: below a node, about its
+    // depth in the cavity (-inner) under it; the region sorted by that
+    // height (then its node order).
     const auto height = [&](std::int64_t n) {
       std::int64_t ijk[3];
       grid.Ijk(n, ijk);
-      return -sign * (grid.Origin[axis] + static_cast<double>(ijk[axis]) * h) - (distance[n] - deep);
+      return -sign * (grid.Origin[axis] + static_cast<double>(ijk[axis]) * h) + inner(n);
     };
     std::vector<std::pair<double, std::int64_t>> lowest; // (height, node), each height made once
     lowest.reserve(region.size());
@@ -883,13 +958,37 @@ bool MakePart(const Grid& grid, const Parameters& parameters, const float* outer
     return false;
   }
   // The part's surfaces, f = 0.
-  const double cap = l + wall + 4.0 * h;
+  const double closing = request.CavityClosing;
+  const double cap = l + wall + closing + 4.0 * h;
   step(0.1, 0.5);
   const std::vector<float> distance = SheetDistance(grid, outer, sheet.Points, cap);
   if (monitor && monitor->Aborted())
   {
     return false;
   }
+  // With a closing distance c: G, the distance to the surface of the cavity
+  // eroded by c (E, D > l + w + c), from E's surface's vertices.
+  std::vector<float> grown;
+  if (closing > 0.0)
+  {
+    SurfaceMesh eroded;
+    {
+      std::vector<float> depth(distance.size());
+      const float deepest = static_cast<float>(l + wall + closing);
+      ParallelFor(0, grid.NumberOfNodes(), 1 << 16, [&](std::int64_t begin, std::int64_t end) {
+        for (std::int64_t n = begin; n < end; ++n)
+        {
+          depth[n] = outer[n] > 0.0f ? distance[n] - deepest : -deepest;
+        }
+      });
+      if (!ContourBricks(grid, NodeField(grid, depth, -deepest), eroded, 0, -1, nullptr))
+      {
+        return false;
+      }
+    }
+    grown = SheetDistance(grid, outer, eroded.Points, closing + 4.0 * h);
+  }
+  const InnerField inner{ distance, closing > 0.0 ? &grown : nullptr, l + wall, closing };
   step(0.5, 0.7);
   std::vector<Drill> drills;
   // Contours f (with the holes drilled and the lost points' material put
@@ -902,7 +1001,7 @@ bool MakePart(const Grid& grid, const Parameters& parameters, const float* outer
   std::unique_ptr<PartField> part;
   const auto contour = [&](const Restoration* restored, double minimumCavity) {
     part.reset(); // one at a time
-    part.reset(new PartField(grid, outer, distance, l, wall, drills, restored));
+    part.reset(new PartField(grid, outer, distance, l, inner, drills, restored));
     SurfaceArrays none = sink.View();
     none.NumberOfPoints = none.NumberOfTriangles = 0;
     sink.Truncate(none);
@@ -937,7 +1036,7 @@ bool MakePart(const Grid& grid, const Parameters& parameters, const float* outer
     const double radius =
       0.5 * (request.DrainDiameter > 0.0 ? request.DrainDiameter : std::max(2.0 * wall, 4.0 * h));
     report.DrainHolesAsked = request.DrainHoles * report.KeptCavities;
-    drills = DrainHoles(grid, outer, distance, l, wall, report.MinimumCavityVolume, request.DrainHoles, radius,
+    drills = DrainHoles(grid, outer, inner, l, wall, report.MinimumCavityVolume, request.DrainHoles, radius,
       request.Down, report.DrainHolesTooLong);
     const double cavity = report.MinimumCavityVolume, cavityVolume = report.CavityVolume;
     const std::int64_t kept = report.KeptCavities;

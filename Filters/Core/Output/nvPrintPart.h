@@ -60,8 +60,10 @@ constexpr double LeastCellsPerWall = 3.0;
 
 /// Bytes per grid node that MakePart holds beside the dense phi: the outer
 /// sheet's copy of phi (4), the nearest-vertex keys of SheetDistance (8) and
-/// the distance D (4). The memory limit counts them (CheckMemory).
+/// the distance D (4); with a cavity closing distance, its distance G (4)
+/// too. The memory limit counts them (CheckMemory).
 constexpr double PartBytesPerNode = 16.0;
+constexpr double ClosingBytesPerNode = 4.0;
 
 /// The way down for the drain holes (DrainHoleAxis): axis value / 2, towards
 /// its low end for even values.
@@ -81,6 +83,7 @@ struct PartRequest
 {
   double Wall = 0.0;                   ///< w (WallThickness)
   double MinimumCavity = 0.0;          ///< MinimumCavityVolume (0: 1 % of the largest cavity)
+  double CavityClosing = 0.0;          ///< CavityClosingDistance c (0: the exact offset)
   int DrainHoles = 0;                  ///< NumberOfDrainHoles per cavity kept
   double DrainDiameter = 0.0;          ///< DrainHoleDiameter (0: 2 w, at least 4 h)
   DrainAxis Down = DrainAxis::MinusZ;  ///< DrainHoleAxis

@@ -503,6 +503,7 @@ bool MakePrintPart(Reconstruction& run, SurfaceSink& sink, const VolumeArrays& d
   PartRequest request;
   request.Wall = settings.WallThickness;
   request.MinimumCavity = settings.MinimumCavityVolume;
+  request.CavityClosing = settings.CavityClosingDistance;
   request.DrainHoles = settings.NumberOfDrainHoles;
   request.DrainDiameter = settings.DrainHoleDiameter;
   request.Down = settings.DrainHoleAxis;

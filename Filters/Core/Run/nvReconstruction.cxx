@@ -170,7 +170,9 @@ std::int64_t BrickLayerOf(const Grid& grid, double z, std::int64_t layers)
 double DenseBytesPerNode(const Settings& settings)
 {
   const double output = settings.OutputBytesPerNode();
-  return settings.WallThickness > 0.0 ? std::max(output, 4.0 + 2.0) + PartBytesPerNode : output;
+  return settings.WallThickness > 0.0
+    ? std::max(output, 4.0 + 2.0) + PartBytesPerNode + (settings.CavityClosingDistance > 0.0 ? ClosingBytesPerNode : 0.0)
+    : output;
 }
 
 /// A value rounded to three significant digits, up or down: a figure a
@@ -243,6 +245,11 @@ Plan MakePlan(const Settings& chosen, const double bounds[6], const SamplingStat
   {
     error << "DrainHoleDiameter must be a finite value >= 0 (0: automatic), not " << chosen.DrainHoleDiameter
           << ".";
+  }
+  else if (!std::isfinite(chosen.CavityClosingDistance) || chosen.CavityClosingDistance < 0.0)
+  {
+    error << "CavityClosingDistance must be a finite value >= 0 (0: the exact offset), not "
+          << chosen.CavityClosingDistance << ".";
   }
   else if (!std::isfinite(chosen.MinimumCavityVolume) || chosen.MinimumCavityVolume < 0.0)
   {

@@ -37,6 +37,7 @@
   X(bool, OutputNarrowBand, false) \
   X(double, WallThickness, 0.0) \
   X(double, MinimumCavityVolume, 0.0) \
+  X(double, CavityClosingDistance, 0.0) \
   X(int, NumberOfDrainHoles, 0) \
   X(nv::DrainAxis, DrainHoleAxis, nv::DrainAxis(4)) \
   X(double, DrainHoleDiameter, 0.0)
@@ -85,6 +86,7 @@
   X(OutputNarrowBand, "Output Narrow Band") \
   X(WallThickness, "Wall Thickness") \
   X(MinimumCavityVolume, "Minimum Cavity Volume") \
+  X(CavityClosingDistance, "Cavity Closing Distance") \
   X(NumberOfDrainHoles, "Number Of Drain Holes") \
   X(DrainHoleAxis, "Drain Hole Axis") \
   X(DrainHoleDiameter, "Drain Hole Diameter")
