@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstring>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 #include <utility>
 
@@ -498,6 +499,11 @@ bool MakePrintPart(Reconstruction& run, SurfaceSink& sink, const VolumeArrays& d
   const Settings& settings = run.GetSettings();
   const Grid& grid = run.GetGrid();
   std::vector<float> outer(dense.Phi, dense.Phi + grid.NumberOfNodes());
+  // A node where phi is exactly 0 (a sheet through a plane of nodes, as a
+  // cloud whose faces lie on the grid's planes gives) counts as the shell's:
+  // KeepSheets fills only phi < 0, and a plane of zeros inside the outer
+  // sheet would stop the distance D there and open a cavity in the wall.
+  std::replace(outer.begin(), outer.end(), 0.0f, std::numeric_limits<float>::min());
   const std::int64_t shellNodes = std::count_if(outer.begin(), outer.end(), [](float phi) { return phi > 0.0f; });
   outcome.Print.ShellVolume = static_cast<double>(shellNodes) * std::pow(grid.Spacing, 3);
   PartRequest request;

@@ -598,10 +598,10 @@ def test_cavity_closing_distance():
     # cavity is a cube of side 0.8: its corners become spheres of radius c
     # (the corner's vertex (sqrt 3 - 1) c from the sharp corner), its volume
     # the opening's exact one; a cavity narrower than 2 c vanishes; 0 keeps
-    # the sharp cube. (The points are jittered by 1e-4: exactly on the grid's
-    # planes the part comes out wrong, a fault the closing does not touch.)
+    # the sharp cube. The cube's faces lie on the grid's planes, as do its
+    # sheets, where phi is exactly 0: a plane of zeros inside the outer
+    # sheet stopped the distance D, and the wall came out 0.035, not 0.1.
     xyz = nvshapes.cube_points(0.01)
-    xyz = xyz + np.random.default_rng(47).normal(0.0, 1e-4, xyz.shape)
     h, l, w = 0.01, 0.04, 0.1
     corners = np.array([[a, b, c] for a in (w, 1 - w) for b in (w, 1 - w) for c in (w, 1 - w)])
     side = 1.0 - 2.0 * w
