@@ -278,7 +278,6 @@ std::string ThinWallWarning(double wall, double spacing)
   return text.str();
 }
 
-/// The scan points the part still lost (PrintReport::LostPoints), and where.
 /// "N points around (x, y, z), a x b x c" for the largest region, and how
 /// many there are.
 std::string RegionFigures(const std::vector<LostRegion>& regions)
