@@ -29,19 +29,23 @@ def python_command():
     return [sys.executable] if narrowvolume.FLAVOUR == "wheel" else ["pvpython"]
 
 
-def run_filter(cloud, **settings):
-    """The filter on a point set with the given properties, updated: returns
-    (the filter, {field data array: its values as a list}, [its warnings])."""
+def _run_filter(cloud, kinds, settings):
+    """The filter updated, and what it said of each kind ("warnings",
+    "errors"; an observer takes each kind asked for, so VTK does not print it)."""
     from vtkmodules.vtkCommonCore import vtkCommand
     from narrowvolume import vtkNarrowVolumeReconstruction
     f = vtkNarrowVolumeReconstruction()
-    warnings = []
+    said = {kind: [] for kind in kinds}
 
-    def on_warning(caller, event, text):
-        warnings.append(str(text))
+    def listener(kind):
+        def on_event(caller, event, text):
+            said[kind].append(str(text))
+        on_event.CallDataType = "string0"
+        return on_event
 
-    on_warning.CallDataType = "string0"
-    f.AddObserver(vtkCommand.WarningEvent, on_warning)
+    events = {"warnings": vtkCommand.WarningEvent, "errors": vtkCommand.ErrorEvent}
+    for kind in kinds:
+        f.AddObserver(events[kind], listener(kind))
     f.SetInputData(cloud)
     for key, value in settings.items():
         getattr(f, "Set" + key)(value)
@@ -49,7 +53,20 @@ def run_filter(cloud, **settings):
     field = f.GetOutput(0).GetFieldData()
     figures = {field.GetArrayName(a): vtk_to_numpy(field.GetArray(a)).ravel().tolist()
                for a in range(field.GetNumberOfArrays())}
-    return f, figures, warnings
+    return f, figures, said
+
+
+def run_filter(cloud, **settings):
+    """The filter on a point set with the given properties, updated: returns
+    (the filter, {field data array: its values as a list}, [its warnings])."""
+    f, figures, said = _run_filter(cloud, ("warnings",), settings)
+    return f, figures, said["warnings"]
+
+
+def run_filter_said(cloud, **settings):
+    """The same, with its errors too: (the filter, figures, [warnings], [errors])."""
+    f, figures, said = _run_filter(cloud, ("warnings", "errors"), settings)
+    return f, figures, said["warnings"], said["errors"]
 
 
 def split_cloud_script(cloud):

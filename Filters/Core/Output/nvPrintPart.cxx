@@ -379,6 +379,29 @@ private:
   std::vector<std::pair<std::int64_t, std::int32_t>> ByBrick; ///< (brick, rod), ascending
 };
 
+/// A value at a place, trilinear between the nodes of its cell (the nearest
+/// cell for a place beyond the grid), whose values node(i, j, k) gives.
+template <class NodeValue>
+double Trilinear(const Grid& grid, const double x[3], const NodeValue& node)
+{
+  std::int64_t c[3];
+  double t[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    const double u = (x[a] - grid.Origin[a]) / grid.Spacing;
+    c[a] = std::min(grid.Dims[a] - 2, std::max<std::int64_t>(0, static_cast<std::int64_t>(std::floor(u))));
+    t[a] = std::min(1.0, std::max(0.0, u - static_cast<double>(c[a])));
+  }
+  double value = 0.0;
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const int di = corner & 1, dj = (corner >> 1) & 1, dk = corner >> 2;
+    const double weight = (di ? t[0] : 1.0 - t[0]) * (dj ? t[1] : 1.0 - t[1]) * (dk ? t[2] : 1.0 - t[2]);
+    value += weight * node(c[0] + di, c[1] + dj, c[2] + dk);
+  }
+  return value;
+}
+
 /// The inner surface's field at a node inside S, positive in the wall:
 /// l + w - D; or, with a closing distance c, the distance beyond c from the
 /// cavity eroded by c (E: D > l + w + c), so that the cavity is E grown back
@@ -561,32 +584,18 @@ public:
   /// +-3 h as stored).
   double At(const Grid& grid, const double x[3]) const
   {
-    std::int64_t c[3];
-    double t[3];
-    for (int a = 0; a < 3; ++a)
-    {
-      const double u = (x[a] - grid.Origin[a]) / grid.Spacing;
-      c[a] = std::min(grid.Dims[a] - 2, std::max<std::int64_t>(0, static_cast<std::int64_t>(std::floor(u))));
-      t[a] = std::min(1.0, std::max(0.0, u - static_cast<double>(c[a])));
-    }
-    double value = 0.0;
-    for (int corner = 0; corner < 8; ++corner)
-    {
-      const std::int64_t i = c[0] + (corner & 1), j = c[1] + ((corner >> 1) & 1), k = c[2] + (corner >> 2);
-      const double weight = ((corner & 1) ? t[0] : 1.0 - t[0]) * (((corner >> 1) & 1) ? t[1] : 1.0 - t[1]) *
-        ((corner >> 2) ? t[2] : 1.0 - t[2]);
+    return Trilinear(grid, x, [&](std::int64_t i, std::int64_t j, std::int64_t k) {
       const std::int64_t brick =
         (i >> BrickShift) + this->BrickDims[0] * ((j >> BrickShift) + this->BrickDims[1] * (k >> BrickShift));
       const auto found = std::lower_bound(this->Varying.begin(), this->Varying.end(), brick);
-      double node = this->Uniform[brick];
-      if (found != this->Varying.end() && *found == brick)
+      if (found == this->Varying.end() || *found != brick)
       {
-        const std::int64_t within = (i & (BrickSize - 1)) + BrickSize * ((j & (BrickSize - 1)) + BrickSize * (k & (BrickSize - 1)));
-        node = this->Stored[(found - this->Varying.begin()) * BrickNodes + within];
+        return static_cast<double>(this->Uniform[brick]);
       }
-      value += weight * node;
-    }
-    return value;
+      const std::int64_t within =
+        (i & (BrickSize - 1)) + BrickSize * ((j & (BrickSize - 1)) + BrickSize * (k & (BrickSize - 1)));
+      return static_cast<double>(this->Stored[(found - this->Varying.begin()) * BrickNodes + within]);
+    });
   }
 
 private:
@@ -599,22 +608,9 @@ private:
 /// A node array's value at a place, trilinear between the nodes of its cell.
 double ValueAt(const Grid& grid, const float* values, const double x[3])
 {
-  std::int64_t c[3];
-  double t[3];
-  for (int a = 0; a < 3; ++a)
-  {
-    const double u = (x[a] - grid.Origin[a]) / grid.Spacing;
-    c[a] = std::min(grid.Dims[a] - 2, std::max<std::int64_t>(0, static_cast<std::int64_t>(std::floor(u))));
-    t[a] = std::min(1.0, std::max(0.0, u - static_cast<double>(c[a])));
-  }
-  double value = 0.0;
-  for (int corner = 0; corner < 8; ++corner)
-  {
-    const int di = corner & 1, dj = (corner >> 1) & 1, dk = corner >> 2;
-    const double weight = (di ? t[0] : 1.0 - t[0]) * (dj ? t[1] : 1.0 - t[1]) * (dk ? t[2] : 1.0 - t[2]);
-    value += weight * values[grid.Index(c[0] + di, c[1] + dj, c[2] + dk)];
-  }
-  return value;
+  return Trilinear(grid, x, [&](std::int64_t i, std::int64_t j, std::int64_t k) {
+    return static_cast<double>(values[grid.Index(i, j, k)]);
+  });
 }
 
 /// The least distance from a vertex of the inner surface (D > l + w / 2)

@@ -359,27 +359,7 @@ def test_command_line(tmp_path):
 
 def run_with_errors(xyz, **settings):
     """The filter's part, field data, warnings and errors."""
-    from vtkmodules.vtkCommonCore import vtkCommand
-    from narrowvolume import vtkNarrowVolumeReconstruction
-    f = vtkNarrowVolumeReconstruction()
-    said = {"errors": [], "warnings": []}
-
-    def listener(kind):
-        def on_event(caller, event, text):
-            said[kind].append(str(text))
-        on_event.CallDataType = "string0"
-        return on_event
-
-    f.AddObserver(vtkCommand.ErrorEvent, listener("errors"))
-    f.AddObserver(vtkCommand.WarningEvent, listener("warnings"))
-    f.SetInputData(nvclouds.cloud(xyz))
-    for key, value in settings.items():
-        getattr(f, "Set" + key)(value)
-    f.Update()
-    field = f.GetOutput(0).GetFieldData()
-    figures = {field.GetArrayName(a): vtk_to_numpy(field.GetArray(a)).ravel().tolist()
-               for a in range(field.GetNumberOfArrays())}
-    return f, figures, said["warnings"], said["errors"]
+    return nvtesting.run_filter_said(nvclouds.cloud(xyz), **settings)
 
 
 @pytest.mark.parametrize("settings,words", [
