@@ -299,7 +299,8 @@ public:
     {
       lostXyz.insert(lostXyz.end(), scan + 3 * p, scan + 3 * p + 3);
     }
-    const NearestPoints lostPoints(lostXyz.data(), static_cast<std::int64_t>(lost.size()));
+    this->LostPoints.reset(new NearestPoints(lostXyz.data(), static_cast<std::int64_t>(lost.size())));
+    const NearestPoints& lostPoints = *this->LostPoints;
     std::vector<char> joined(static_cast<std::size_t>(scanPoints), 0);
     ParallelFor(0, scanPoints, 1024, [&](std::int64_t begin, std::int64_t end) {
       for (std::int64_t p = begin; p < end; ++p)
@@ -369,9 +370,13 @@ public:
     return value;
   }
 
+  /// Whether x lies within `reach` of a lost point.
+  bool NearLost(const double* x, double reach) const { return this->LostPoints->Distance(x, reach) < reach; }
+
   double Radius;
 
 private:
+  std::unique_ptr<NearestPoints> LostPoints; ///< the lost points
   /// The nearest scan points a lost point is joined to (itself among them).
   static constexpr int NeighboursJoined = 16;
   std::array<std::int64_t, 3> BrickDims;
@@ -1053,16 +1058,9 @@ bool MakePart(const Grid& grid, const Parameters& parameters, const float* outer
   std::vector<std::int64_t> lost = LostPoints(grid, outer, *part, sink.View(), distance, l, cap, request, drills, report);
   if (!lost.empty() && static_cast<double>(lost.size()) <= RestorableShare * static_cast<double>(request.ScanPoints))
   {
-    std::vector<double> xyz;
-    xyz.reserve(3 * lost.size());
-    for (std::int64_t p : lost)
-    {
-      xyz.insert(xyz.end(), request.Scan + 3 * p, request.Scan + 3 * p + 3);
-    }
-    const NearestPoints lostPoints(xyz.data(), static_cast<std::int64_t>(lost.size()));
     const Restoration restored(grid, request.Scan, request.ScanPoints, lost, LostRadiusCells * h, 2.0 * l);
     const double reach = (LostRadiusCells + 1.0) * h;
-    limits.Supported = [&](const double* x) { return lostPoints.Distance(x, reach) < reach; };
+    limits.Supported = [&](const double* x) { return restored.NearLost(x, reach); };
     const double cavityVolume = report.CavityVolume;
     const std::int64_t kept = report.KeptCavities;
     if (!contour(&restored, report.MinimumCavityVolume))

@@ -80,18 +80,6 @@ bool NoInnerSheet(const Settings& settings, std::int64_t cavities)
 // change, with the properties' names (the VTK filter puts the panel's
 // labels in their place in ParaView, the command line its options). The
 // figures are in the Volume output's field data (RunSummary).
-/// A value rounded up to three significant digits: the least value to set
-/// that a message can print exactly.
-double RoundUp(double value)
-{
-  if (!(value > 0.0) || !std::isfinite(value))
-  {
-    return value;
-  }
-  const double unit = std::pow(10.0, std::floor(std::log10(value)) - 2.0);
-  return std::ceil(value / unit) * unit;
-}
-
 std::string Plural(std::int64_t count, const char* one, const char* many)
 {
   return std::to_string(count) + " " + (count == 1 ? one : many);
@@ -140,12 +128,12 @@ std::vector<std::string> GapWarnings(const GapReport& gaps, double closingRadius
     {
       text << (count[0] == 1 ? "If it is a gap, not an opening of the surface itself"
                              : "If they are gaps, not the surface's own openings")
-           << ", set ClosingRadius to " << RoundUp(widest[0]->Radius) << " or more to bridge "
+           << ", set ClosingRadius to " << ThreeDigits(widest[0]->Radius, true) << " or more to bridge "
            << (count[0] == 1 ? "it." : "them.");
     }
     else
     {
-      text << "Turn CloseGaps on, or set OffsetDistance to " << RoundUp(widest[0]->Radius / BridgeTarget)
+      text << "Turn CloseGaps on, or set OffsetDistance to " << ThreeDigits(widest[0]->Radius / BridgeTarget, true)
            << " or more to cover " << (count[0] == 1 ? "it." : "them.");
     }
     warnings.push_back(text.str());
@@ -158,7 +146,7 @@ std::vector<std::string> GapWarnings(const GapReport& gaps, double closingRadius
          << " left open by the gap closing (its rounds ran out, or the rim is too uneven to bridge) and pierce"
          << (count[1] == 1 ? "s" : "") << wall << HoleFigures(*widest[1], count[1]) << ".\n"
          << "A larger ClosingRadius does not change that: set OffsetDistance to "
-         << RoundUp(widest[1]->Radius / BridgeTarget) << " or more, and the wall covers "
+         << ThreeDigits(widest[1]->Radius / BridgeTarget, true) << " or more, and the wall covers "
          << (count[1] == 1 ? "it." : "them.");
     warnings.push_back(text.str());
   }

@@ -175,8 +175,15 @@ double DenseBytesPerNode(const Settings& settings)
     : output;
 }
 
-/// A value rounded to three significant digits, up or down: a figure a
-/// message can print that still holds.
+std::string MiB(double bytes)
+{
+  std::ostringstream text;
+  text << bytes / 1048576.0 << " MiB";
+  return text.str();
+}
+} // namespace
+
+//------------------------------------------------------------------------------
 double ThreeDigits(double value, bool up)
 {
   if (!(value > 0.0) || !std::isfinite(value))
@@ -186,14 +193,6 @@ double ThreeDigits(double value, bool up)
   const double unit = std::pow(10.0, std::floor(std::log10(value)) - 2.0);
   return (up ? std::ceil(value / unit) : std::floor(value / unit)) * unit;
 }
-
-std::string MiB(double bytes)
-{
-  std::ostringstream text;
-  text << bytes / 1048576.0 << " MiB";
-  return text.str();
-}
-} // namespace
 
 //------------------------------------------------------------------------------
 double Settings::MemoryLimitBytes() const

@@ -71,6 +71,11 @@ struct Plan
  */
 Plan MakePlan(const Settings& settings, const double bounds[6], const SamplingStatistics& sampling);
 
+/// A value rounded to three significant digits, up or down: the figure a
+/// message can print that still holds (a setting to reach, a factor not to
+/// pass).
+double ThreeDigits(double value, bool up);
+
 /// The share of a run's progress that the measurement of the points'
 /// spacing shows, when it is made for the run (the set-up's stage starts at
 /// 0 as well, and shows once past it).
