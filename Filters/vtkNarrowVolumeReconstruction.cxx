@@ -30,6 +30,7 @@
 #include "vtkTable.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <algorithm>
 #include <array>
 #include <memory>
 #include <sstream>
@@ -114,6 +115,60 @@ bool Store(Field& field, T value)
   }
 NV_SETTINGS(NV_ACCESSORS)
 #undef NV_ACCESSORS
+
+//------------------------------------------------------------------------------
+void vtkNarrowVolumeReconstruction::SetNumberOfDrainHolePositions(int number)
+{
+  const std::size_t values = 3 * static_cast<std::size_t>(std::max(0, number));
+  if (values != this->Settings->DrainHolePositions.size())
+  {
+    this->Settings->DrainHolePositions.resize(values, 0.0);
+    this->Modified();
+  }
+}
+
+int vtkNarrowVolumeReconstruction::GetNumberOfDrainHolePositions() const
+{
+  return static_cast<int>(this->Settings->DrainHolePositions.size() / 3);
+}
+
+void vtkNarrowVolumeReconstruction::SetDrainHolePosition(int i, double x, double y, double z)
+{
+  if (i < 0)
+  {
+    return;
+  }
+  if (i >= this->GetNumberOfDrainHolePositions())
+  {
+    this->SetNumberOfDrainHolePositions(i + 1);
+  }
+  double* at = &this->Settings->DrainHolePositions[3 * static_cast<std::size_t>(i)];
+  if (at[0] != x || at[1] != y || at[2] != z)
+  {
+    at[0] = x;
+    at[1] = y;
+    at[2] = z;
+    this->Modified();
+  }
+}
+
+void vtkNarrowVolumeReconstruction::AddDrainHolePosition(double x, double y, double z)
+{
+  this->SetDrainHolePosition(this->GetNumberOfDrainHolePositions(), x, y, z);
+}
+
+void vtkNarrowVolumeReconstruction::GetDrainHolePosition(int i, double position[3]) const
+{
+  if (i >= 0 && i < this->GetNumberOfDrainHolePositions())
+  {
+    std::copy_n(&this->Settings->DrainHolePositions[3 * static_cast<std::size_t>(i)], 3, position);
+  }
+}
+
+void vtkNarrowVolumeReconstruction::RemoveAllDrainHolePositions()
+{
+  this->SetNumberOfDrainHolePositions(0);
+}
 
 //------------------------------------------------------------------------------
 // The results' Get methods (declared by NV_RESULTS in the header) over the

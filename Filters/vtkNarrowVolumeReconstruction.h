@@ -214,6 +214,7 @@ public:
   vtkNarrowVolumeSettingMacro(CavityClosingDistance, double);
   vtkNarrowVolumeClampMacro(NumberOfDrainHoles, int, 0, 64);
   vtkNarrowVolumeClampMacro(DrainHoleAxis, int, DRAIN_MINUS_X, DRAIN_PLUS_Z);
+  vtkNarrowVolumeClampMacro(DrainHoleAngle, double, 0.0, 90.0);
   vtkNarrowVolumeSettingMacro(DrainHoleDiameter, double);
   ///@}
 
@@ -238,6 +239,22 @@ public:
   void SetDrainHoleAxisToPlusY() { this->SetDrainHoleAxis(DRAIN_PLUS_Y); }
   void SetDrainHoleAxisToMinusZ() { this->SetDrainHoleAxis(DRAIN_MINUS_Z); }
   void SetDrainHoleAxisToPlusZ() { this->SetDrainHoleAxis(DRAIN_PLUS_Z); }
+  ///@}
+
+  ///@{
+  /**
+   * DrainHolePositions: where the drain holes go, a list of points (world
+   * units; empty by default: NumberOfDrainHoles at each cavity's lowest
+   * points). Set as vtkContourFilter's values are: SetNumberOf... then
+   * SetDrainHolePosition(i, x, y, z), or AddDrainHolePosition(x, y, z);
+   * ParaView's panel edits it as rows of x y z. See the parameter reference.
+   */
+  void SetNumberOfDrainHolePositions(int number);
+  int GetNumberOfDrainHolePositions() const;
+  void SetDrainHolePosition(int i, double x, double y, double z);
+  void AddDrainHolePosition(double x, double y, double z);
+  void GetDrainHolePosition(int i, double position[3]) const;
+  void RemoveAllDrainHolePositions();
   ///@}
 
   ///@{

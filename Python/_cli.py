@@ -376,6 +376,12 @@ def make_parser(defaults: Dict[str, Any]) -> argparse.ArgumentParser:
         else:
             group.add_argument(_option(prop), dest=prop.name, type=prop.kind, default=None,
                                metavar=prop.kind.__name__.upper(), help=help_text)
+        for listed in _properties.LIST_PROPERTIES:
+            if listed.after == prop.name:
+                help_text = ("%s Repeat the option for each point; the coordinates are the cloud file's, "
+                             "multiplied by --scale with it." % _properties.describe(listed, _properties.option))
+                group.add_argument(_option(listed), dest=listed.name, type=float, nargs=3, action="append",
+                                   default=None, metavar=("X", "Y", "Z"), help=help_text.replace("%", "%%"))
     return parser
 
 
@@ -397,7 +403,11 @@ def main(argv: Optional[List[str]] = None) -> int:
             parser.error("%s: unknown output format; known: %s" % (path, " ".join(sorted(WRITERS))))
     if not (args.scale > 0.0 and args.scale < float("inf")):
         parser.error("--scale must be a finite factor above 0, not %s" % args.scale)
-    properties = {p.name: getattr(args, p.name) for p in _properties.PROPERTIES if getattr(args, p.name) is not None}
+    properties = {p.name: getattr(args, p.name) for p in _properties.PROPERTIES + _properties.LIST_PROPERTIES
+                  if getattr(args, p.name) is not None}
+    for listed in _properties.LIST_PROPERTIES:  # points, at the cloud's scale
+        if listed.name in properties:
+            properties[listed.name] = [[args.scale * x for x in point] for point in properties[listed.name]]
     # File descriptor 2 itself: pvpython's sys.stderr answers isatty() for standard input.
     progress = Progress(sys.stderr, not args.quiet and os.isatty(2))
     start = time.perf_counter()

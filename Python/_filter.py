@@ -479,6 +479,57 @@ def _install_properties(cls):
             setattr(cls, "Set%sTo%s" % (prop.name, suffix), choose)
 
 
+def _install_lists(cls):
+    """The list properties (LIST_PROPERTIES), as the VTK filter has them:
+    SetNumberOf<Name>, Set<Name less s>(i, x, y, z), Add..., Get...(i),
+    GetNumberOf<Name>, RemoveAll<Name>, over the field of nv::Settings."""
+    for listed in _properties.LIST_PROPERTIES:
+        one = _properties.singular(listed.name)
+
+        def values(self, listed=listed):
+            return list(getattr(self._settings, listed.name))
+
+        def store(self, new, listed=listed):
+            if values(self) != new:
+                setattr(self._settings, listed.name, new)
+                self.Modified()
+
+        def set_number(self, number, store=store, values=values):
+            old = values(self)
+            number = max(0, operator.index(number))
+            store(self, (old + [0.0] * (3 * number))[:3 * number])
+
+        def get_number(self, values=values):
+            return len(values(self)) // 3
+
+        def set_one(self, i, x, y, z, store=store, values=values, set_number=set_number):
+            i = operator.index(i)
+            if i < 0:
+                return
+            new = values(self)
+            if 3 * i >= len(new):
+                new += [0.0] * (3 * (i + 1) - len(new))
+            new[3 * i:3 * i + 3] = [float(x), float(y), float(z)]
+            store(self, new)
+
+        def add_one(self, x, y, z, one=one, get_number=get_number):
+            getattr(self, "Set" + one)(get_number(self), x, y, z)
+
+        def get_one(self, i, values=values):
+            return tuple(values(self)[3 * i:3 * i + 3])
+
+        def remove_all(self, set_number=set_number):
+            set_number(self, 0)
+
+        doc = _properties.describe(listed)
+        for name, method in (("SetNumberOf" + listed.name, set_number), ("GetNumberOf" + listed.name, get_number),
+                             ("Set" + one, set_one), ("Add" + one, add_one), ("Get" + one, get_one),
+                             ("RemoveAll" + listed.name, remove_all)):
+            method.__name__ = name
+            method.__doc__ = "%s (%s).\n\n%s" % (name, listed.name, doc)
+            setattr(cls, name, method)
+
+
 def _install_results(cls):
     """Get<Name> for each result of the table (RESULTS), over the run's nv::Results."""
     for result in _properties.RESULTS:
@@ -492,4 +543,5 @@ def _install_results(cls):
 
 
 _install_properties(vtkNarrowVolumeReconstruction)
+_install_lists(vtkNarrowVolumeReconstruction)
 _install_results(vtkNarrowVolumeReconstruction)

@@ -247,7 +247,9 @@ PROPERTIES = (
         "With {WallThickness} above 0: drill this many holes through the wall from each cavity, at its lowest "
         "points along {DrainHoleAxis} (at least three diameters apart), so that resin or powder drains out. "
         "The holes are made on the field, so the surface stays closed and manifold. 0 (the default): none. "
-        "Field data \"DrainHoles\" counts those made."),
+        "Points given as the filter's DrainHoles input (the second input; drain_holes in Python, "
+        "--drain-hole on the command line) place the holes instead: one from the cavity's point nearest to "
+        "each. Field data \"DrainHoles\" counts those made."),
     Property(
         "DrainHoleAxis", "Drain Hole Axis", int, 4, 0, 5,
         (Choice("DRAIN_MINUS_X", "MinusX", 0, "-X"),
@@ -263,6 +265,12 @@ PROPERTIES = (
         "DRAIN_MINUS_X (0), DRAIN_PLUS_X (1), DRAIN_MINUS_Y (2) and DRAIN_PLUS_Y (3) for a cloud whose up "
         "is another axis."),
     Property(
+        "DrainHoleAngle", "Drain Hole Angle", float, 30.0, 0.0, 90.0, (), None, "Printing", True, None,
+        "The most, in degrees, a drain hole may lean from {DrainHoleAxis}: each hole leaves its cavity by the "
+        "shortest way out through the wall within this angle, and is not made where that way runs longer than "
+        "twice the offset and the wall (down the inside of a limb); a warning says so. 30 (the default); 0: "
+        "straight along {DrainHoleAxis}."),
+    Property(
         "DrainHoleDiameter", "Drain Hole Diameter", float, 0.0, None, None, (), None, "Printing", True, None,
         "The drain holes' diameter in world units. 0 (the default): twice {WallThickness}, at least four grid "
         "cells."),
@@ -270,8 +278,43 @@ PROPERTIES = (
 
 BY_NAME = {p.name: p for p in PROPERTIES}
 
-# The properties whose 0 means "chosen by the filter": the panel's groups that
-# hold one say "(0 = automatic)" in their title.
+ListProperty = namedtuple("ListProperty", "name label after advanced doc")
+ListProperty.__doc__ = """A property that holds a list of points (x y z after
+one another, world units), not one value: a field std::vector<double> of
+nv::Settings beside the table's (nvSettings.h); on the VTK filter
+SetNumberOf<Name>(n), Set<Name-s>(i, x, y, z), Add<Name-s>(x, y, z),
+RemoveAll<Name>(), GetNumberOf<Name>() and Get<Name-s>(i) (the name less
+its plural s), as vtkContourFilter's values; in ParaView a list the panel
+edits as rows of x y z; reconstruct()'s keyword takes an (n, 3) array; the
+command line's option takes x y z, repeated. Empty by default.
+
+after: the property the panel shows it after (its group's)."""
+
+# The list properties, each shown after the table's row it names.
+LIST_PROPERTIES = (
+    ListProperty(
+        "DrainHolePositions", "Drain Hole Positions", "NumberOfDrainHoles", False,
+        "With {WallThickness} above 0: where the drain holes go, as points (x y z in world units, such as "
+        "points of the scan where a hole may show): one hole from the point of a kept cavity nearest to each, "
+        "by the shortest way out through the wall within {DrainHoleAngle} of {DrainHoleAxis}. A position "
+        "farther than twice the offset and the wall from every cavity makes no hole, and a warning says "
+        "which. Empty (the default): {NumberOfDrainHoles} holes at each cavity's lowest points."),
+)
+
+# Every property by name: the table's rows and the list properties.
+NAMED = dict(BY_NAME, **{p.name: p for p in LIST_PROPERTIES})
+
+
+def singular(name: str) -> str:
+    """DrainHolePositions -> DrainHolePosition: the name of one of a list's points."""
+    return name[:-1] if name.endswith("s") else name
+
+# The panel's group titles that say more than the group's name, where 0
+# does not mean "automatic" (Wall Thickness 0 is the shell, no part).
+GROUP_TITLES = {"Printing": "Printing (a part when Wall Thickness > 0)"}
+
+# The properties whose 0 means "chosen by the filter": the panel's other
+# groups that hold one say "(0 = automatic)" in their title.
 AUTOMATIC_WHEN_ZERO = frozenset(("OffsetDistance", "ClosingRadius", "SampleSpacing", "MaximumDimension",
                                  "NumberOfThreads", "MemoryLimit", "MinimumCavityVolume", "DrainHoleDiameter"))
 
@@ -333,13 +376,14 @@ def option(name: str) -> str:
     return "--" + snake_case(name).replace("_", "-")
 
 
-_BY_SNAKE = {snake_case(p.name): p for p in PROPERTIES}
+_BY_SNAKE = {snake_case(p.name): p for p in PROPERTIES + LIST_PROPERTIES}
 
 
-def find(keyword: str) -> Property:
-    """The property named by a keyword: its Set/Get name or its snake_case form. KeyError otherwise."""
-    if keyword in BY_NAME:
-        return BY_NAME[keyword]
+def find(keyword: str) -> Any:
+    """The property (a Property or a ListProperty) named by a keyword: its
+    Set/Get name or its snake_case form. KeyError otherwise."""
+    if keyword in NAMED:
+        return NAMED[keyword]
     return _BY_SNAKE[keyword]
 
 
@@ -347,7 +391,7 @@ def describe(prop: Property, name_of: Callable[[str], str] = lambda name: name) 
     """The property's documentation with the names of other properties as
     name_of(name) gives them: BY_NAME[name].label in the panel, option(name)
     on the command line, the name itself in Python (the default)."""
-    return re.sub(r"\{([A-Za-z]+)\}", lambda m: name_of(m.group(1)) if m.group(1) in BY_NAME else m.group(0),
+    return re.sub(r"\{([A-Za-z]+)\}", lambda m: name_of(m.group(1)) if m.group(1) in NAMED else m.group(0),
                   prop.doc)
 
 
@@ -355,7 +399,7 @@ def in_words(text: str, name_of: Callable[[str], str]) -> str:
     """A message of the filter, which names properties by their names
     (OffsetDistance), with each name as name_of(name) gives it: the panel's
     label, the command line's option. Whole names only."""
-    for prop in PROPERTIES:
+    for prop in PROPERTIES + LIST_PROPERTIES:
         text = re.sub(r"(?<![\w-])%s(?!\w)" % prop.name, name_of(prop.name), text)
     return text
 

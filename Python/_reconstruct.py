@@ -98,8 +98,16 @@ def reconstruct(points: Any, progress: Optional[Callable[[float], None]] = None,
             prop = _properties.find(keyword)
         except KeyError:
             raise TypeError("reconstruct() got an unknown property %r; the properties are %s" % (
-                keyword, ", ".join(p.name for p in _properties.PROPERTIES))) from None
-        getattr(f, "Set" + prop.name)(value)
+                keyword, ", ".join(p.name for p in _properties.PROPERTIES + _properties.LIST_PROPERTIES))) from None
+        if isinstance(prop, _properties.ListProperty):  # points: an (n, 3) array, or x y z after one another
+            xyz = np.asarray(value if value is not None else [], dtype=float).reshape(-1)
+            if xyz.size % 3:
+                raise ValueError("%s takes points (x, y, z), not %d values" % (keyword, xyz.size))
+            getattr(f, "RemoveAll" + prop.name)()
+            for x, y, z in xyz.reshape(-1, 3):
+                getattr(f, "Add" + _properties.singular(prop.name))(x, y, z)
+        else:
+            getattr(f, "Set" + prop.name)(value)
     f.SetInputData(data)
 
     errors, notes = [], []

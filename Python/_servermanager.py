@@ -56,10 +56,29 @@ def result_element(table: Any, result: Any, indent: str, label: Any) -> List[str
             "%s</%s>" % (indent, element)]
 
 
+def lists_after(table: Any, name: str) -> List[Any]:
+    """The list properties the panel shows after property `name`."""
+    return [listed for listed in table.LIST_PROPERTIES if listed.after == name]
+
+
+def list_element(table: Any, listed: Any, indent: str, label: Any) -> List[str]:
+    """A list of points (x y z), set point by point as vtkContourFilter's
+    values are: SetNumberOf<Name>(n), then Set<Name less s>(i, x, y, z)."""
+    attributes = ('name="%s" command="Set%s" label=%s number_of_elements="0" default_values="none" '
+                  'repeat_command="1" number_of_elements_per_command="3" use_index="1" '
+                  'set_number_command="SetNumberOf%s"' % (
+                      listed.name, table.singular(listed.name), quoteattr(listed.label), listed.name))
+    if listed.advanced:
+        attributes += ' panel_visibility="advanced"'
+    return ["%s<DoubleVectorProperty %s>" % (indent, attributes),
+            "%s  <Documentation>%s</Documentation>" % (indent, escape(table.describe(listed, label))),
+            "%s</DoubleVectorProperty>" % indent]
+
+
 def property_elements(table: Any, indent: str = "      ") -> List[str]:
     """The proxy's properties and their panel groups, in the table's order."""
     out = []
-    label = lambda name: table.BY_NAME[name].label  # noqa: E731
+    label = lambda name: table.NAMED[name].label  # noqa: E731
     for prop in table.PROPERTIES:
         element = "DoubleVectorProperty" if prop.kind is float else "IntVectorProperty"
         default = int(prop.default) if prop.kind is bool else number(prop.default)
@@ -91,15 +110,20 @@ def property_elements(table: Any, indent: str = "      ") -> List[str]:
         out.append("%s</%s>" % (indent, element))
         for result in table.results_beside(prop.name):
             out += result_element(table, result, indent, label)
+        for listed in lists_after(table, prop.name):
+            out += list_element(table, listed, indent, label)
     groups = []
     for prop in table.PROPERTIES:
         if not groups or groups[-1][0] != prop.group:
             groups.append((prop.group, [], []))
         groups[-1][1].append(prop.name)
         groups[-1][1].extend(result.name for result in table.results_beside(prop.name))
+        groups[-1][1].extend(listed.name for listed in lists_after(table, prop.name))
         groups[-1][2].append(prop.name)
     for group, names, settings in groups:
-        if table.AUTOMATIC_WHEN_ZERO.intersection(settings):
+        if group in table.GROUP_TITLES:
+            group = table.GROUP_TITLES[group]
+        elif table.AUTOMATIC_WHEN_ZERO.intersection(settings):
             group += " (0 = automatic)"
         out.append("%s<PropertyGroup label=%s>" % (indent, quoteattr(group)))
         out += ['%s  <Property name="%s"/>' % (indent, name) for name in names]

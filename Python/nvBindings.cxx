@@ -364,6 +364,8 @@ NB_MODULE(_core, m)
     .def("OutputBytesPerNode", &nv::Settings::OutputBytesPerNode);
 #define NV_BIND(Type, Name, Default) settings.def_rw(#Name, &nv::Settings::Name);
   NV_SETTINGS(NV_BIND)
+  // The list properties (_properties.py's LIST_PROPERTIES): x y z after one another.
+  settings.def_rw("DrainHolePositions", &nv::Settings::DrainHolePositions);
   // Not a property: for tests and benchmarks (nvSettings.h).
   settings.def_rw("DeviceOnHost", &nv::Settings::DeviceOnHost);
 #undef NV_BIND

@@ -110,7 +110,7 @@ def header(table):
         "// filter's messages name the properties by their panel labels in ParaView.",
         "#define NV_PANEL_LABELS(X) \\",
     ]
-    rows = ["  X(%s, %s)" % (p.name, json.dumps(p.label)) for p in table.PROPERTIES]
+    rows = ["  X(%s, %s)" % (p.name, json.dumps(p.label)) for p in table.PROPERTIES + table.LIST_PROPERTIES]
     lines += [row + " \\" for row in rows[:-1]] + [rows[-1], ""]
     lines += [
         "// NV_RESULTS(X) calls X(Type, Name, Size) for each result of a run (the",
@@ -165,6 +165,14 @@ def stub(table):
             out.append("    def Get%sMaxValue(self) -> %s: ..." % (prop.name, kind))
         for choice in prop.choices:
             out.append("    def Set%sTo%s(self) -> None: ..." % (prop.name, choice.suffix))
+    for listed in table.LIST_PROPERTIES:
+        one = table.singular(listed.name)
+        out += ["    def SetNumberOf%s(self, number: int) -> None: ..." % listed.name,
+                "    def GetNumberOf%s(self) -> int: ..." % listed.name,
+                "    def Set%s(self, i: int, x: float, y: float, z: float) -> None: ..." % one,
+                "    def Add%s(self, x: float, y: float, z: float) -> None: ..." % one,
+                "    def Get%s(self, i: int) -> Tuple[float, float, float]: ..." % one,
+                "    def RemoveAll%s(self) -> None: ..." % listed.name]
     out += ["    def SetInputData(self, data: vtkDataObject) -> None: ...",
             "    def GetOutput(self, port: int = 0) -> vtkDataObject: ...",
             "    def GetVolumeOutput(self) -> vtkImageData: ...",
@@ -254,6 +262,10 @@ def markdown(table, images_dir=None, images_url=""):
         out.append("| [`%s`](#%s) | %s | %s | %s |" % (prop.name, prop.name.lower(), prop.label,
                                                       markdown_cell(default_text(prop)),
                                                       "advanced" if prop.advanced else "shown"))
+        for listed in table.LIST_PROPERTIES:
+            if listed.after == prop.name:
+                out.append("| [`%s`](#%s) | %s | none | %s |" % (listed.name, listed.name.lower(), listed.label,
+                                                                 "advanced" if listed.advanced else "shown"))
     out.append("")
     group = None
     for prop in table.PROPERTIES:
@@ -272,6 +284,17 @@ def markdown(table, images_dir=None, images_url=""):
         if image:
             out += [image, ""]
         out += [table.describe(prop, code), ""]
+        for listed in table.LIST_PROPERTIES:
+            if listed.after == prop.name:
+                one = table.singular(listed.name)
+                out += ["### %s" % listed.name, "",
+                        "panel label *%s*%s; a list of points (x y z), empty by default; C++ and the wheel's "
+                        "filter `SetNumberOf%s(n)`, `Set%s(i, x, y, z)`, `Add%s(x, y, z)`, `RemoveAll%s()`; "
+                        "pvpython a flat list `[x0, y0, z0, x1, ...]`; `reconstruct(%s=[(x, y, z), ...])`; "
+                        "command line `%s X Y Z`, repeated." % (
+                            listed.label, " (advanced)" if listed.advanced else "", listed.name, one, one,
+                            listed.name, table.snake_case(listed.name), table.option(listed.name)), "",
+                        table.describe(listed, code), ""]
         for result in table.results_beside(prop.name):
             shown = ("not shown in the panel (pvpython's attribute, for scripts)" if result.panel == "hidden" else
                      "shown in the panel after *%s* as *%s*%s" % (prop.label, result.label,
@@ -302,6 +325,10 @@ def readme_table(table):
     for prop in table.PROPERTIES:
         out.append("| `%s` | %s | %s | %s |" % (prop.name, prop.label, markdown_cell(default_text(prop)),
                                                 markdown_cell(first_sentence(table.describe(prop, code)))))
+        for listed in table.LIST_PROPERTIES:
+            if listed.after == prop.name:
+                out.append("| `%s` | %s | none | %s |" % (listed.name, listed.label,
+                                                           markdown_cell(first_sentence(table.describe(listed, code)))))
     out += ["", README_END]
     return "\n".join(out)
 

@@ -48,7 +48,12 @@ def _run_filter(cloud, kinds, settings):
         f.AddObserver(events[kind], listener(kind))
     f.SetInputData(cloud)
     for key, value in settings.items():
-        getattr(f, "Set" + key)(value)
+        if hasattr(f, "RemoveAll" + key):  # a list property (DrainHolePositions): its points
+            getattr(f, "RemoveAll" + key)()
+            for point in value:
+                getattr(f, "Add" + key[:-1])(*point)
+        else:
+            getattr(f, "Set" + key)(value)
     f.Update()
     field = f.GetOutput(0).GetFieldData()
     figures = {field.GetArrayName(a): vtk_to_numpy(field.GetArray(a)).ravel().tolist()

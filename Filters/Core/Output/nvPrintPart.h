@@ -27,10 +27,13 @@
 // D >= l >= 4 h. f is kept within +-3 h, where the contouring reads it; a
 // brick wholly beyond that is one value.
 //
-// Drain holes (NumberOfDrainHoles): from the lowest points of each cavity
-// kept, straight down through the wall (down: DrainHoleAxis, -z by
-// default), f = min(f, distance to the hole's surface), so the surface
-// stays closed and manifold.
+// Drain holes: from the lowest points of each cavity kept
+// (NumberOfDrainHoles), or from the cavity's points nearest to the
+// positions the user gives (the filter's DrainHoles input), by the shortest
+// way out through the wall within DrainHoleAngle of the way down
+// (DrainHoleAxis, -z by default), never longer than a few walls (not down a
+// limb); f = min(f, distance to the hole's surface), so the surface stays
+// closed and manifold.
 //
 // Cavities: a closed part of the surface around a region outside it is a
 // cavity; those smaller than MinimumCavityVolume (0: 1 % of the largest)
@@ -87,6 +90,8 @@ struct PartRequest
   int DrainHoles = 0;                  ///< NumberOfDrainHoles per cavity kept
   double DrainDiameter = 0.0;          ///< DrainHoleDiameter (0: 2 w, at least 4 h)
   DrainAxis Down = DrainAxis::MinusZ;  ///< DrainHoleAxis
+  double DrainAngle = 0.0;             ///< DrainHoleAngle, degrees from Down a hole may lean
+  std::vector<double> DrainPositions;  ///< where holes go, x y z after one another (none: NumberOfDrainHoles)
   const double* Scan = nullptr;        ///< the scan's points, x y z after one another (may be null)
   std::int64_t ScanPoints = 0;
   /// The monitor's stage the part takes: begin and width of the run's
@@ -116,8 +121,11 @@ struct PrintReport
   std::int64_t RemovedPieces = 0;
   std::int64_t Pieces = 0;     ///< separate pieces of material the part is made of
   std::int64_t DrainHoles = 0; ///< holes drilled from the cavities to the outside
-  std::int64_t DrainHolesAsked = 0; ///< NumberOfDrainHoles times the cavities kept
+  std::int64_t DrainHolesAsked = 0; ///< the positions given, or NumberOfDrainHoles times the cavities kept
   std::int64_t DrainHolesTooLong = 0; ///< places not drilled: the way out longer than 2 (l + w) + 2 h
+  std::int64_t DrainPositionsAway = 0; ///< positions farther than that from every cavity kept
+  std::array<double, 3> FirstPositionAway{ { 0.0, 0.0, 0.0 } }; ///< the first of them
+  std::int64_t CavitiesWithoutHoles = 0; ///< cavities kept that no hole leaves, where holes were asked for
   std::array<double, 6> Bounds{ { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 } }; ///< the part's xmin, xmax, ymin, ...
   double ShellVolume = 0.0; ///< the shell's material (phi > 0), which the part's is compared with
   /// The scan against the part (CheckScan): a scan point is lost when it
@@ -144,7 +152,7 @@ constexpr double RestorableShare = 0.2;
  * KeepSheets(Outer) filled the cavities (phi > 0: inside the outer sheet).
  * Cavities below request.MinimumCavity are merged into the wall; drain
  * holes are drilled from each cavity kept, at its lowest points along
- * request.Down: f is made again with them (f = min(f, the distance to the
+ * request.Down or nearest to request.DrainPositions: f is made again with them (f = min(f, the distance to the
  * hole's surface)) and contoured again, so the part stays closed. Then the
  * part is checked against request.Scan: material is put back around the
  * points it lost (up to RestorableShare of them), and those still lost are

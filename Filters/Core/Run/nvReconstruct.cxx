@@ -370,21 +370,68 @@ std::vector<std::string> PartWarnings(const Settings& settings, const Reconstruc
             "ClosingRadius: raise it to bridge the gap.";
     warnings.push_back(text.str());
   }
+  const bool placed = !settings.DrainHolePositions.empty();
+  const std::int64_t positions = static_cast<std::int64_t>(settings.DrainHolePositions.size() / 3);
+  if (placed && print.KeptCavities == 0)
+  {
+    std::ostringstream text;
+    text << "DrainHolePositions gives " << Plural(positions, "place", "places")
+         << " for drain holes, but the part has no cavity: it is solid, and no hole was made.\n"
+         << "A part is hollow where the model is thicker than twice OffsetDistance and WallThickness; remove the "
+            "positions for a solid part.";
+    warnings.push_back(text.str());
+  }
   if (print.DrainHoles < print.DrainHolesAsked)
   {
     std::ostringstream text;
-    text << Plural(print.DrainHolesAsked, "drain hole was", "drain holes were") << " asked for ("
-         << "NumberOfDrainHoles " << settings.NumberOfDrainHoles << " for each of "
-         << Plural(print.KeptCavities, "cavity", "cavities") << "), and " << print.DrainHoles
-         << " made: holes start at least three diameters apart on a cavity's lowest points";
+    if (placed)
+    {
+      text << Plural(positions, "drain hole position was", "drain hole positions were")
+           << " given (DrainHolePositions), and " << print.DrainHoles << " made";
+    }
+    else
+    {
+      text << Plural(print.DrainHolesAsked, "drain hole was", "drain holes were") << " asked for ("
+           << "NumberOfDrainHoles " << settings.NumberOfDrainHoles << " for each of "
+           << Plural(print.KeptCavities, "cavity", "cavities") << "), and " << print.DrainHoles
+           << " made: holes start at least three diameters apart on a cavity's lowest points";
+    }
+    if (print.DrainPositionsAway > 0)
+    {
+      text << std::setprecision(4) << ": " << Plural(print.DrainPositionsAway, "position lies", "positions lie")
+           << " farther than twice OffsetDistance and WallThickness from every cavity (the first at "
+           << Place(print.FirstPositionAway) << ")";
+    }
     if (print.DrainHolesTooLong > 0)
     {
-      text << ", and " << Plural(print.DrainHolesTooLong, "place was", "places were")
-           << " passed over where the way out runs longer than twice the offset and the wall through the part (down "
-              "a limb, or through a wall at a slant)";
+      text << (placed && print.DrainPositionsAway == 0 ? ": " : ", and ")
+           << Plural(print.DrainHolesTooLong, "place was", "places were")
+           << " passed over where the shortest way out within DrainHoleAngle (" << settings.DrainHoleAngle
+           << " degrees) of DrainHoleAxis runs longer than twice OffsetDistance and WallThickness through the "
+              "part (down a limb, or through a wall at a slant)";
     }
-    text << ", and the cavities' floors have room for no more.\n"
-         << "Lower DrainHoleDiameter for more holes, or choose another DrainHoleAxis.";
+    if (placed)
+    {
+      text << ".\nPlace each position on the part's surface where a cavity lies behind the wall, raise "
+              "DrainHoleAngle, or choose another DrainHoleAxis.";
+    }
+    else
+    {
+      text << ", and the cavities' floors have room for no more.\n"
+           << "Lower DrainHoleDiameter for more holes, raise DrainHoleAngle, or choose another DrainHoleAxis.";
+    }
+    warnings.push_back(text.str());
+  }
+  if (print.CavitiesWithoutHoles > 0 && print.DrainHolesAsked > 0)
+  {
+    std::ostringstream text;
+    text << Plural(print.CavitiesWithoutHoles, "cavity", "cavities") << " of the "
+         << print.KeptCavities << " kept " << (print.CavitiesWithoutHoles == 1 ? "has" : "have")
+         << " no drain hole: resin or powder stays sealed in "
+         << (print.CavitiesWithoutHoles == 1 ? "it" : "them") << ".\n"
+         << (placed ? "Give a position in DrainHolePositions near each cavity, or raise MinimumCavityVolume to merge "
+                      "small ones into the wall."
+                    : "Raise DrainHoleAngle, choose another DrainHoleAxis, or give DrainHolePositions.");
     warnings.push_back(text.str());
   }
   return warnings;
@@ -393,9 +440,18 @@ std::vector<std::string> PartWarnings(const Settings& settings, const Reconstruc
 std::string DrainHolesWithoutWallWarning(const Settings& settings)
 {
   std::ostringstream text;
-  text << "NumberOfDrainHoles is " << settings.NumberOfDrainHoles
-       << ", but WallThickness is 0: the output is the shell, which has no drain holes.\n"
-       << "Set WallThickness to the wall to print for a hollow part with drain holes, or NumberOfDrainHoles to 0.";
+  if (settings.DrainHolePositions.empty())
+  {
+    text << "NumberOfDrainHoles is " << settings.NumberOfDrainHoles;
+  }
+  else
+  {
+    text << "DrainHolePositions gives " << Plural(static_cast<std::int64_t>(settings.DrainHolePositions.size() / 3),
+                                             "place", "places");
+  }
+  text << ", but WallThickness is 0: the output is the shell, which has no drain holes.\n"
+       << "Set WallThickness to the wall to print for a hollow part with drain holes, or "
+       << (settings.DrainHolePositions.empty() ? "NumberOfDrainHoles to 0." : "remove DrainHolePositions.");
   return text.str();
 }
 
@@ -500,6 +556,8 @@ bool MakePrintPart(Reconstruction& run, SurfaceSink& sink, const VolumeArrays& d
   request.DrainHoles = settings.NumberOfDrainHoles;
   request.DrainDiameter = settings.DrainHoleDiameter;
   request.Down = settings.DrainHoleAxis;
+  request.DrainAngle = settings.DrainHoleAngle;
+  request.DrainPositions = settings.DrainHolePositions;
   request.Scan = scan.data();
   request.ScanPoints = static_cast<std::int64_t>(scan.size() / 3);
   request.Progress[0] = OutputStage[0];
@@ -616,7 +674,7 @@ void WarnAboutResult(const Reconstruction& run, bool distributed, double surface
       outcome.Warnings.push_back(std::move(warning));
     }
   }
-  else if (settings.NumberOfDrainHoles > 0)
+  else if (settings.NumberOfDrainHoles > 0 || !settings.DrainHolePositions.empty())
   {
     outcome.Warnings.push_back(DrainHolesWithoutWallWarning(settings));
   }

@@ -250,6 +250,14 @@ Plan MakePlan(const Settings& chosen, const double bounds[6], const SamplingStat
     error << "CavityClosingDistance must be a finite value >= 0 (0: the exact offset), not "
           << chosen.CavityClosingDistance << ".";
   }
+  else if (chosen.DrainHolePositions.size() % 3 != 0 ||
+    !std::all_of(chosen.DrainHolePositions.begin(), chosen.DrainHolePositions.end(),
+      [](double x) { return std::isfinite(x); }))
+  {
+    error << "DrainHolePositions must be points, three finite coordinates each (x y z), not "
+          << chosen.DrainHolePositions.size() << " values"
+          << (chosen.DrainHolePositions.size() % 3 != 0 ? "" : " with one that is not finite") << ".";
+  }
   else if (!std::isfinite(chosen.MinimumCavityVolume) || chosen.MinimumCavityVolume < 0.0)
   {
     error << "MinimumCavityVolume must be a finite value >= 0 (0: automatic), not " << chosen.MinimumCavityVolume
@@ -271,7 +279,8 @@ Plan MakePlan(const Settings& chosen, const double bounds[6], const SamplingStat
   {
     error << "The input has no points: nothing to reconstruct.";
   }
-  else if (chosen.WallThickness > 0.0 && chosen.NumberOfDrainHoles > 0 && chosen.DrainHoleDiameter > 0.0)
+  else if (chosen.WallThickness > 0.0 && (chosen.NumberOfDrainHoles > 0 || !chosen.DrainHolePositions.empty()) &&
+    chosen.DrainHoleDiameter > 0.0)
   {
     // A hole wider than half the cloud across its axis cuts the part apart.
     const int axis = static_cast<int>(chosen.DrainHoleAxis) / 2;

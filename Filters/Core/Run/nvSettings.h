@@ -17,6 +17,8 @@
 #include "nvSettingsTable.h" // NV_SETTINGS, generated from the property table (committed)
 #include "nvSheets.h"        // Sheets
 
+#include <vector>
+
 namespace nv
 {
 
@@ -25,6 +27,12 @@ struct Settings
 #define NV_SETTINGS_FIELD(Type, Name, Default) Type Name = Default;
   NV_SETTINGS(NV_SETTINGS_FIELD)
 #undef NV_SETTINGS_FIELD
+
+  /// Where the drain holes go (the VTK filter's DrainHolePositions, a list
+  /// the panel edits as rows of x y z): x y z after one another, world
+  /// units. Empty (the default): NumberOfDrainHoles at each cavity's lowest
+  /// points. Not a row of the table, which holds single values.
+  std::vector<double> DrainHolePositions;
 
   /// For tests, not a property: Device GPU runs the GPU back end's kernels
   /// through its host launcher (nvDeviceLauncher.h) instead of CUDA, on any

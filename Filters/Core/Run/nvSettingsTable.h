@@ -40,6 +40,7 @@
   X(double, CavityClosingDistance, 0.0) \
   X(int, NumberOfDrainHoles, 0) \
   X(nv::DrainAxis, DrainHoleAxis, nv::DrainAxis(4)) \
+  X(double, DrainHoleAngle, 30.0) \
   X(double, DrainHoleDiameter, 0.0)
 
 // NV_SETTINGS_RANGES(X) calls X(Name, Low, High) for each property whose
@@ -56,7 +57,8 @@
   X(Device, 0, 2) \
   X(Sheets, 0, 2) \
   X(NumberOfDrainHoles, 0, 64) \
-  X(DrainHoleAxis, 0, 5)
+  X(DrainHoleAxis, 0, 5) \
+  X(DrainHoleAngle, 0.0, 90.0)
 
 // NV_PANEL_LABELS(X) calls X(Name, "Label") for each property: the VTK
 // filter's messages name the properties by their panel labels in ParaView.
@@ -89,7 +91,9 @@
   X(CavityClosingDistance, "Cavity Closing Distance") \
   X(NumberOfDrainHoles, "Number Of Drain Holes") \
   X(DrainHoleAxis, "Drain Hole Axis") \
-  X(DrainHoleDiameter, "Drain Hole Diameter")
+  X(DrainHoleAngle, "Drain Hole Angle") \
+  X(DrainHoleDiameter, "Drain Hole Diameter") \
+  X(DrainHolePositions, "Drain Hole Positions")
 
 // NV_RESULTS(X) calls X(Type, Name, Size) for each result of a run (the
 // table's RESULTS: a value the run chose, which the panel shows read-only):

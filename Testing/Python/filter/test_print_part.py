@@ -610,3 +610,114 @@ def test_cavity_closing_distance():
     _, _, _, errors = run_with_errors(xyz, OffsetDistance=l, SampleSpacing=h, WallThickness=w,
                                       CavityClosingDistance=-1.0)
     assert len(errors) == 1 and "CavityClosingDistance must be a finite value >= 0" in errors[0]
+
+
+# Drain holes where a printer user wants them (DrainHolePositions, DrainHoleAngle).
+
+def material_near_line(points, through, direction, beyond):
+    """How near the part's vertices come to the line through `through`
+    along `direction`, among those more than `beyond` along it."""
+    direction = np.asarray(direction, float)
+    offset = points - np.asarray(through, float)
+    along = offset @ direction
+    off_axis = np.linalg.norm(offset - np.outer(along, direction), axis=1)
+    return off_axis[along > beyond].min()
+
+
+def test_drain_holes_at_positions():
+    # A position on the sphere's side (a scan point): the hole runs from the
+    # cavity's nearest point through it, sideways although down is -z; a
+    # position inside the cavity: its hole leaves by the shortest way down.
+    # No hole elsewhere: the -z pole keeps its material in the first.
+    h, l, w = 0.01, 0.1, 0.05
+    xyz = nvshapes.sphere_points(h)
+    side, figures, warnings = part_of(xyz, OffsetDistance=l, SampleSpacing=h, WallThickness=w,
+                                      DrainHolePositions=[(1.0, 0.5, 0.5)])
+    assert warnings == [] and figures["DrainHoles"] == [1.0]
+    check_closed(side)
+    ids, points, _ = regions_of(side)
+    assert len(np.unique(ids)) == 1, "the cavity opens to the outside"
+    assert material_near_line(points, (0.5, 0.5, 0.5), (1, 0, 0), 0.5 * math.sqrt(3) / 2) > 0.9 * w
+    assert material_near_line(points, (0.5, 0.5, 0.5), (0, 0, -1), 0.5 * math.sqrt(3) / 2) < 0.5 * w
+    inside, figures, warnings = part_of(xyz, OffsetDistance=l, SampleSpacing=h, WallThickness=w,
+                                        DrainHolePositions=[(0.5, 0.5, 0.5)])
+    assert warnings == [] and figures["DrainHoles"] == [1.0]
+    check_closed(inside)
+    points = points_and_normals(inside)[0]
+    assert material_near_line(points, (0.5, 0.5, 0.5), (0, 0, -1), 0.5 * math.sqrt(3) / 2) > 0.9 * w
+    assert material_near_line(points, (0.5, 0.5, 0.5), (1, 0, 0), 0.5 * math.sqrt(3) / 2) < 0.5 * w
+
+
+def test_a_drain_hole_position_away_from_the_cavities_warns():
+    # A position far outside the part makes no hole, and the warnings say
+    # where it is and that the cavity is left sealed; a position on the
+    # part's surface, as the advice says, makes the hole and no warning.
+    h, l, w = 0.01, 0.1, 0.05
+    xyz = nvshapes.sphere_points(h)
+    _, figures, warnings = part_of(xyz, OffsetDistance=l, SampleSpacing=h, WallThickness=w,
+                                   DrainHolePositions=[(3.0, 0.5, 0.5)])
+    assert figures["DrainHoles"] == [0.0]
+    assert any("1 drain hole position was given" in t and "0 made" in t and "(3, 0.5, 0.5)" in t and
+               "Place each position on the part's surface" in t for t in warnings), warnings
+    assert any("1 cavity of the 1 kept has no drain hole" in t for t in warnings), warnings
+    _, figures, warnings = part_of(xyz, OffsetDistance=l, SampleSpacing=h, WallThickness=w,
+                                   DrainHolePositions=[(0.5, 0.5, 0.0)])
+    assert figures["DrainHoles"] == [1.0] and warnings == []
+
+
+def test_a_drain_hole_position_over_a_leg():
+    # A position in the cavity right above the leg: straight down would run
+    # the leg's length. Within DrainHoleAngle the hole leans off the leg and
+    # is made beside it; at angle 0 it is not made, and the warning names
+    # the angle as the way out. The leg stays whole either way.
+    xyz = body_on_a_leg()
+    settings = dict(OffsetDistance=0.04, SampleSpacing=0.01, WallThickness=0.05, DrainHolePositions=[(0.5, 0.5, 0.6)])
+    for angle, holes in ((30.0, 1.0), (0.0, 0.0)):
+        f, figures, warnings, errors = run_with_errors(xyz, DrainHoleAngle=angle, **settings)
+        surface = f.GetOutput(1)
+        assert errors == []
+        check_closed(surface)
+        assert figures["DrainHoles"] == [holes] and figures["PartPieces"] == [1.0]
+        if holes:
+            assert warnings == []
+        else:
+            assert any("passed over where the shortest way out within DrainHoleAngle (0 degrees)" in t and
+                       "raise DrainHoleAngle" in t for t in warnings), warnings
+        p = vtk_to_numpy(surface.GetPoints().GetData())
+        shank = p[(p[:, 2] > 0.1) & (p[:, 2] < 0.4) & (np.hypot(p[:, 0] - 0.5, p[:, 1] - 0.5) < 0.06)]
+        radius = np.hypot(shank[:, 0] - 0.5, shank[:, 1] - 0.5)
+        assert len(shank) > 100 and radius.min() > 0.02, "the leg is whole, not slotted or cut away"
+
+
+def test_drain_hole_positions_refused_or_warned():
+    # Positions without a wall warn (the shell has no holes); a position
+    # with a coordinate that is not finite is refused.
+    xyz = nvshapes.sphere_points(0.02)
+    _, _, warnings, errors = run_with_errors(xyz, OffsetDistance=0.1, SampleSpacing=0.02,
+                                             DrainHolePositions=[(0.5, 0.5, 0.0)])
+    assert errors == [] and any("DrainHolePositions gives 1 place, but WallThickness is 0" in t for t in warnings)
+    _, _, _, errors = run_with_errors(xyz, OffsetDistance=0.1, SampleSpacing=0.02, WallThickness=0.05,
+                                      DrainHolePositions=[(0.5, float("nan"), 0.0)])
+    assert any("DrainHolePositions must be points, three finite coordinates each" in t for t in errors), errors
+
+
+def test_drain_hole_positions_on_the_command_line_and_in_python(tmp_path):
+    # --drain-hole-positions X Y Z, in the cloud file's coordinates, scaled
+    # with it by --scale; reconstruct() takes an (n, 3) array.
+    import narrowvolume
+    cloud = tmp_path / "sphere.xyz"
+    np.savetxt(cloud, nvshapes.sphere_points(0.01))
+    run = subprocess.run(nvtesting.python_command() + ["-m", "narrowvolume", str(cloud), "--scale", "2",
+                                                       "--offset-distance", "0.2", "--sample-spacing", "0.02",
+                                                       "--wall-thickness", "0.1", "--drain-hole-positions",
+                                                       "1", "0.5", "0.5", "--drain-hole-positions", "0.5", "0.5", "0"],
+                         capture_output=True, text=True, cwd=tmp_path)
+    assert run.returncode == 0, run.stderr
+    assert "warning" not in run.stderr, run.stderr
+    line = [s for s in run.stdout.splitlines() if "part to print" in s][0]
+    assert line.endswith(", 2 drain holes"), line
+    volume, _ = narrowvolume.reconstruct(nvshapes.sphere_points(0.01), OffsetDistance=0.1, SampleSpacing=0.01,
+                                         WallThickness=0.05, drain_hole_positions=np.array([[1.0, 0.5, 0.5]]))
+    assert volume.GetFieldData().GetArray("DrainHoles").GetValue(0) == 1
+    with pytest.raises(ValueError, match="takes points"):
+        narrowvolume.reconstruct(nvshapes.sphere_points(0.02), WallThickness=0.05, drain_hole_positions=[1.0, 2.0])
