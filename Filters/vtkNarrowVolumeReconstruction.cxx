@@ -157,12 +157,11 @@ void vtkNarrowVolumeReconstruction::AddDrainHolePosition(double x, double y, dou
   this->SetDrainHolePosition(this->GetNumberOfDrainHolePositions(), x, y, z);
 }
 
-void vtkNarrowVolumeReconstruction::GetDrainHolePosition(int i, double position[3]) const
+double* vtkNarrowVolumeReconstruction::GetDrainHolePosition(int i)
 {
-  if (i >= 0 && i < this->GetNumberOfDrainHolePositions())
-  {
-    std::copy_n(&this->Settings->DrainHolePositions[3 * static_cast<std::size_t>(i)], 3, position);
-  }
+  return i >= 0 && i < this->GetNumberOfDrainHolePositions()
+    ? &this->Settings->DrainHolePositions[3 * static_cast<std::size_t>(i)]
+    : nullptr;
 }
 
 void vtkNarrowVolumeReconstruction::RemoveAllDrainHolePositions()

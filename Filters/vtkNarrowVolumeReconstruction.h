@@ -253,7 +253,7 @@ public:
   int GetNumberOfDrainHolePositions() const;
   void SetDrainHolePosition(int i, double x, double y, double z);
   void AddDrainHolePosition(double x, double y, double z);
-  void GetDrainHolePosition(int i, double position[3]) const;
+  double* GetDrainHolePosition(int i) VTK_SIZEHINT(3); ///< null for no such point
   void RemoveAllDrainHolePositions();
   ///@}
 

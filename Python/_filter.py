@@ -516,7 +516,9 @@ def _install_lists(cls):
             getattr(self, "Set" + one)(get_number(self), x, y, z)
 
         def get_one(self, i, values=values):
-            return tuple(values(self)[3 * i:3 * i + 3])
+            i = operator.index(i)
+            point = tuple(values(self)[3 * i:3 * i + 3]) if i >= 0 else ()
+            return point if len(point) == 3 else None
 
         def remove_all(self, set_number=set_number):
             set_number(self, 0)

@@ -358,7 +358,7 @@ RESULTS = (
     Result("GridDimensionsUsed", "Grid Dimensions Used", int, 3, "MaximumDimension", "hidden",
            "Grid nodes along x, y and z in the last Apply: three integers, for scripts (the panel shows them "
            "as Grid Used). Read-only."),
-    Result("PartSizeUsed", "Part Size", str, 1, "WallThickness", "default",
+    Result("PartSizeUsed", "Part Size Used", str, 1, "WallThickness", "default",
            "The size along x, y and z of the part to print of the last Apply, beside the cloud's, as one "
            "text: \"0.836 x 0.996 x 0.749 (the cloud 0.838 x 0.998 x 0.753)\"; empty when {WallThickness} "
            "is 0. Read-only."),

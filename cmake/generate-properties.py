@@ -140,7 +140,7 @@ def stub(table):
     out = ['"""Type stub of narrowvolume._filter (the wheel\'s filter), made from the property table',
            '(Python/_properties.py) by cmake/generate-properties.py: its Set/Get methods exist only',
            'once _filter.py has made them, so that editors and type checkers learn them here."""',
-           "from typing import ClassVar, Tuple", "",
+           "from typing import ClassVar, Optional, Tuple", "",
            "from vtkmodules.util.vtkAlgorithm import VTKPythonAlgorithmBase",
            "from vtkmodules.vtkCommonDataModel import vtkDataObject, vtkImageData, vtkPolyData", "", "",
            "class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):",
@@ -171,7 +171,7 @@ def stub(table):
                 "    def GetNumberOf%s(self) -> int: ..." % listed.name,
                 "    def Set%s(self, i: int, x: float, y: float, z: float) -> None: ..." % one,
                 "    def Add%s(self, x: float, y: float, z: float) -> None: ..." % one,
-                "    def Get%s(self, i: int) -> Tuple[float, float, float]: ..." % one,
+                "    def Get%s(self, i: int) -> Optional[Tuple[float, float, float]]: ..." % one,
                 "    def RemoveAll%s(self) -> None: ..." % listed.name]
     out += ["    def SetInputData(self, data: vtkDataObject) -> None: ...",
             "    def GetOutput(self, port: int = 0) -> vtkDataObject: ...",

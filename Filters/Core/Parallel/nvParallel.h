@@ -97,6 +97,33 @@ public:
 };
 
 /**
+ * A monitor that passes another's stages on within a share of its progress,
+ * [Begin, Begin + Width): a run's stages, which say where they lie in the
+ * run, when the run is a share of a longer job.
+ */
+class ShareMonitor : public Monitor
+{
+public:
+  ShareMonitor(Monitor& whole, double begin, double width)
+    : Whole(whole)
+    , Begin(begin)
+    , Width(width)
+  {
+  }
+  void Stage(double begin, double width) override
+  {
+    this->Whole.Stage(this->Begin + this->Width * begin, this->Width * width);
+  }
+  void Progress(double fraction) override { this->Whole.Progress(fraction); }
+  bool Aborted() override { return this->Whole.Aborted(); }
+
+private:
+  Monitor& Whole;
+  double Begin;
+  double Width;
+};
+
+/**
  * A monitor for a caller that takes progress and answers "stop?" only on
  * its own thread (a GUI's event loop, Python's interpreter): the whole run's
  * progress as one fraction that never goes back, reported from the thread

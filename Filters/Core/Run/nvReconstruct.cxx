@@ -33,9 +33,6 @@ VolumeContents DenseArraysAsked(const Settings& settings)
 
 namespace
 {
-/// The progress stage of the outputs (the run itself takes [0, 0.65)): begin, width.
-constexpr double OutputStage[2] = { 0.65, 0.35 };
-
 /// Whether the surface is the part to print (nvPrintPart.h) rather than the shell.
 bool Printing(const Settings& settings)
 {
@@ -560,8 +557,8 @@ bool MakePrintPart(Reconstruction& run, SurfaceSink& sink, const VolumeArrays& d
   request.DrainPositions = settings.DrainHolePositions;
   request.Scan = scan.data();
   request.ScanPoints = static_cast<std::int64_t>(scan.size() / 3);
-  request.Progress[0] = OutputStage[0];
-  request.Progress[1] = OutputStage[1];
+  request.Progress[0] = run.OutputBegin();
+  request.Progress[1] = 1.0 - run.OutputBegin();
   const bool done = run.GetStageTimes().Time("part", [&]() {
     KeepSheets(grid, outer.data(), Sheets::Outer);
     return MakePart(grid, run.GetParameters(), outer.data(), request, sink, run.GetMonitor(), outcome.Print);
@@ -616,7 +613,7 @@ bool MakeSurface(Reconstruction& run, SurfaceSink& sink, const VolumeArrays& den
   Monitor* monitor = run.GetMonitor();
   if (monitor)
   {
-    monitor->Stage(OutputStage[0], OutputStage[1]);
+    monitor->Stage(run.OutputBegin(), 1.0 - run.OutputBegin());
   }
   const bool printing = Printing(settings);
   const bool done = printing ? MakePrintPart(run, sink, dense, scan, outcome)

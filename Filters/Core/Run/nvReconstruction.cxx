@@ -345,8 +345,15 @@ Plan MakePlan(const Settings& chosen, const double bounds[6], const SamplingStat
 Reconstruction::Reconstruction(const Settings& settings, Communicator* communicator, Monitor* monitor)
   : TheSettings(settings)
   , Comm(communicator)
-  , TheMonitor(monitor)
+  , Caller(monitor)
+  , RunStages(monitor ? new ShareMonitor(*monitor, 0.0, this->OutputBegin() / RunShare) : nullptr)
+  , TheMonitor(RunStages.get())
 {
+}
+
+double Reconstruction::OutputBegin() const
+{
+  return this->TheSettings.WallThickness > 0.0 ? PrintRunShare : RunShare;
 }
 
 Reconstruction::~Reconstruction() = default;

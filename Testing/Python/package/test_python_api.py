@@ -194,14 +194,41 @@ def test_setter_marks_modified():
     assert f.GetMTime() > before
 
 
+def test_list_property_methods():
+    """DrainHolePositions, as vtkContourFilter's values: SetNumberOf grows
+    with zeros and shrinks, Set at an index past the end grows, Add appends,
+    RemoveAll empties; a change marks the filter modified, the same points
+    do not. The same in both flavours."""
+    f = narrowvolume.vtkNarrowVolumeReconstruction()
+    assert f.GetNumberOfDrainHolePositions() == 0
+    f.SetNumberOfDrainHolePositions(2)
+    assert f.GetNumberOfDrainHolePositions() == 2 and f.GetDrainHolePosition(1) == (0.0, 0.0, 0.0)
+    assert f.GetDrainHolePosition(2) is None
+    f.SetDrainHolePosition(3, 1.0, 2.0, 3.0)
+    f.AddDrainHolePosition(4.0, 5.0, 6.0)
+    assert f.GetNumberOfDrainHolePositions() == 5
+    before = f.GetMTime()
+    f.SetDrainHolePosition(3, 1.0, 2.0, 3.0)
+    assert f.GetMTime() == before
+    assert f.GetDrainHolePosition(3) == (1.0, 2.0, 3.0) and f.GetDrainHolePosition(4) == (4.0, 5.0, 6.0)
+    f.RemoveAllDrainHolePositions()
+    assert f.GetNumberOfDrainHolePositions() == 0 and f.GetMTime() > before
+
+
 @pytest.mark.skipif(WHEEL, reason="reads the C++ class itself (the wheel is compared with its record instead)")
 def test_table_covers_the_cpp_class():
     """Every Set/Get pair of the C++ filter is a row of the table (but
     SetController and SetPanelLabelsInMessages, which are not settings of
-    the method)."""
+    the method) or a list property's (SetNumberOf<Name>, Set<Name less s>),
+    and every list property has its six methods."""
     api = set(nvflavours.public_api(narrowvolume.vtkNarrowVolumeReconstruction))
     pairs = {n[3:] for n in api if n.startswith("Set") and "Get" + n[3:] in api}
-    assert pairs - {"Controller", "PanelLabelsInMessages"} == {p.name for p in _properties.PROPERTIES}
+    lists = set()
+    for listed in _properties.LIST_PROPERTIES:
+        one = _properties.singular(listed.name)
+        lists |= {"NumberOf" + listed.name, one}
+        assert {"Add" + one, "RemoveAll" + listed.name} <= api, listed.name
+    assert pairs - {"Controller", "PanelLabelsInMessages"} == {p.name for p in _properties.PROPERTIES} | lists
 
 
 def test_messages_in_the_panels_words():

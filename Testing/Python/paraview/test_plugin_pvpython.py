@@ -155,3 +155,19 @@ def test_messages_name_the_panels_labels(pvs, sphere):
     assert f.OffsetDistanceUsed == pytest.approx(0.01) and f.SampleSpacingUsed > 0.01 / 3  # coarse, as warned
     assert max(f.GridDimensionsUsed) == 41
     assert f.GridUsed == " x ".join(str(n) for n in f.GridDimensionsUsed)  # the panel's text
+
+
+def test_a_part_with_drain_hole_positions(pvs, sphere):
+    """The printing properties in pvpython: DrainHolePositions as a flat
+    list of x y z, one name for the part's size (PartSizeUsed, as in C++
+    and Python), and group titles that say what 0 does (Wall Thickness 0 is
+    the shell, not "automatic")."""
+    f = pvs.NarrowVolumeReconstruction(Input=sphere, OffsetDistance=0.1, SampleSpacing=0.02, WallThickness=0.05)
+    f.DrainHolePositions = [0.5, 0.0, 0.0, 0.0, 0.0, -0.5]  # the sphere's +x side and its bottom
+    f.UpdatePipeline()
+    volume = servermanager.Fetch(f)
+    assert volume.GetFieldData().GetArray("DrainHoles").GetValue(0) == 2
+    assert f.GetClientSideObject().GetNumberOfDrainHolePositions() == 2
+    assert f.PartSizeUsed.endswith(")") and "(the cloud " in f.PartSizeUsed, f.PartSizeUsed
+    titles = [f.SMProxy.GetPropertyGroup(g).GetXMLLabel() for g in range(f.SMProxy.GetNumberOfPropertyGroups())]
+    assert "Printing (a part when Wall Thickness > 0)" in titles and "Grid (0 = automatic)" in titles, titles
