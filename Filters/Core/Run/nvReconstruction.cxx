@@ -175,6 +175,25 @@ double DenseBytesPerNode(const Settings& settings)
     : output;
 }
 
+/// The ways to a smaller run that the too-large messages give: the grid,
+/// the limit, and OutputVolume off where that saves memory (not where the
+/// dense phi is needed anyway: a part to print, one sheet kept); for a part,
+/// the spacing its wall needs where the grid is finer than that.
+std::string SmallerRunAdvice(const Settings& settings, double spacing)
+{
+  Settings without = settings;
+  without.OutputVolume = false;
+  std::ostringstream text;
+  if (settings.WallThickness > 0.0 && spacing < settings.WallThickness / LeastCellsPerWall)
+  {
+    text << "A part's wall of " << settings.WallThickness << " needs a spacing of "
+         << settings.WallThickness / LeastCellsPerWall << " (SampleSpacing 0 chooses it). ";
+  }
+  text << "Increase SampleSpacing, lower MaximumDimension, raise MemoryLimit"
+       << (DenseBytesPerNode(without) < DenseBytesPerNode(settings) ? " or turn OutputVolume off." : ".");
+  return text.str();
+}
+
 std::string MiB(double bytes)
 {
   std::ostringstream text;
@@ -745,8 +764,7 @@ bool Reconstruction::BuildBand(std::vector<double> xyz)
           << " need about " << MiB(failed[0] * BytesPerBandNode) << ", more than the "
           << MiB(this->TheSettings.MemoryLimitBytes() - this->BytesBeforeBand) << " left under the limit of "
           << MiB(this->TheSettings.MemoryLimitBytes())
-          << ". Increase SampleSpacing, lower MaximumDimension, raise MemoryLimit"
-          << (this->TheSettings.OutputBytesPerNode() > 0.0 ? " or turn OutputVolume off." : ".");
+          << ". " << SmallerRunAdvice(this->TheSettings, this->ThePlan.TheGrid.Spacing);
     return this->Fail(error.str());
   }
   if (failed[1] > 0.0)
@@ -1175,8 +1193,7 @@ bool Reconstruction::CheckMemory(double gridNodes, double points)
     std::ostringstream error;
     error << "The grid is too large: about " << gridNodes << " nodes (spacing " << grid.Spacing << ") need about "
           << MiB(bytes) << (this->Comm ? " on some process" : "") << ", over the limit of " << MiB(limit)
-          << ". Increase SampleSpacing, lower MaximumDimension, raise MemoryLimit"
-          << (this->TheSettings.OutputBytesPerNode() > 0.0 ? " or turn OutputVolume off." : ".");
+          << ". " << SmallerRunAdvice(this->TheSettings, this->ThePlan.TheGrid.Spacing);
     return this->Fail(error.str());
   }
   if (!whole)

@@ -721,3 +721,18 @@ def test_drain_hole_positions_on_the_command_line_and_in_python(tmp_path):
     assert volume.GetFieldData().GetArray("DrainHoles").GetValue(0) == 1
     with pytest.raises(ValueError, match="takes points"):
         narrowvolume.reconstruct(nvshapes.sphere_points(0.02), WallThickness=0.05, drain_hole_positions=[1.0, 2.0])
+
+
+def test_a_part_over_the_memory_limit_gets_the_parts_advice():
+    # A part on a grid the user made finer than its wall needs, over
+    # MemoryLimit: refused with the spacing the wall needs; not with
+    # "turn OutputVolume off", which saves a part nothing (its dense phi is
+    # needed). Following the advice (the wall's spacing) runs.
+    xyz = nvshapes.sphere_points(0.02)
+    settings = dict(OffsetDistance=0.05, WallThickness=0.03, MemoryLimit=60)
+    _, _, _, errors = run_with_errors(xyz, SampleSpacing=0.002, **settings)
+    assert len(errors) == 1 and "too large" in errors[0], errors
+    assert "A part's wall of 0.03 needs a spacing of 0.01 (SampleSpacing 0 chooses it)" in errors[0], errors
+    assert "OutputVolume" not in errors[0], errors
+    _, figures, _, errors = run_with_errors(xyz, SampleSpacing=0.01, **settings)
+    assert errors == [] and figures["MaterialVolume"][0] > 0
