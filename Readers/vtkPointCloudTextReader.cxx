@@ -167,11 +167,15 @@ vtkPointCloudTextReader::~vtkPointCloudTextReader() = default;
 
 int vtkPointCloudTextReader::CanReadFile(const char* fileName)
 {
-  // The first line of data decides (after comments, and a header of column
-  // names or a point count): a cloud whose later line is damaged is still
-  // this reader's, which names the line, rather than the next reader's of
-  // the extension (ParaView's PLOT3D reader takes .xyz and aborts on text).
+  // A .xyz of text is this reader's (below). Otherwise the first line of
+  // data decides (after comments, and a header of column names or a point
+  // count): a cloud whose later line is damaged is still this reader's,
+  // which names the line, rather than the next reader's of the extension.
   std::ifstream in(fileName, std::ios::binary);
+  const std::string name = fileName ? fileName : "";
+  const std::string extension = name.size() >= 4 ? name.substr(name.size() - 4) : "";
+  const bool xyz = extension.size() == 4 && extension[0] == '.' && std::tolower(extension[1]) == 'x' &&
+    std::tolower(extension[2]) == 'y' && std::tolower(extension[3]) == 'z';
   // Binary bytes: a .xyz that cannot begin a PLOT3D grid is this reader's to
   // refuse with its message (ParaView's PLOT3D reader aborts on it).
   char head[4096];
@@ -179,12 +183,14 @@ int vtkPointCloudTextReader::CanReadFile(const char* fileName)
   const std::string start(head, static_cast<std::size_t>(in.gcount()));
   if (start.find('\0') != std::string::npos)
   {
-    const std::string name = fileName ? fileName : "";
-    const std::string extension = name.size() >= 4 ? name.substr(name.size() - 4) : "";
-    const bool xyz = extension.size() == 4 && extension[0] == '.' && std::tolower(extension[1]) == 'x' &&
-      std::tolower(extension[2]) == 'y' && std::tolower(extension[3]) == 'z';
     return xyz && start.size() >= 4 && !MayBePlot3D(reinterpret_cast<const unsigned char*>(start.data())) ? 1 : 0;
   }
+  // Text in a .xyz (empty, words, a molecule's elements): this reader's,
+  // which says what is wrong with it. ParaView's PLOT3D reader, the other of
+  // the extension, reads text only as numbers (its ASCII grids), which this
+  // reader takes too, and crashes on the rest in pvpython. Other extensions
+  // (.txt, .csv) leave text that is not a cloud to the readers of tables:
+  // there the first line of data decides.
   in.clear();
   in.seekg(0);
   std::string line;
@@ -201,10 +207,10 @@ int vtkPointCloudTextReader::CanReadFile(const char* fileName)
       continue;
     }
     if (!ParseLine(line, values) || (values.size() < 3 && !(checked == 0 && values.size() == 1)))
-      return 0;
+      return xyz ? 1 : 0;
     ++checked;
   }
-  return checked > 0 ? 1 : 0;
+  return checked > 0 || xyz ? 1 : 0;
 }
 
 int vtkPointCloudTextReader::RequestData(

@@ -171,3 +171,27 @@ def test_a_part_with_drain_hole_positions(pvs, sphere):
     assert f.PartSizeUsed.endswith(")") and "(the cloud " in f.PartSizeUsed, f.PartSizeUsed
     titles = [f.SMProxy.GetPropertyGroup(g).GetXMLLabel() for g in range(f.SMProxy.GetNumberOfPropertyGroups())]
     assert "Printing (a part when Wall Thickness > 0)" in titles and "Grid (0 = automatic)" in titles, titles
+
+
+@pytest.mark.parametrize("text,says", [("", "the file is empty"), ("hello world\nfoo bar\n", "not a list of numbers"),
+                                       ("3\nwater\nO 0 0 0\nH 0.75 0.58 0\n", "molecular XYZ file")])
+def test_opening_a_text_xyz_that_is_no_cloud(pvs, tmp_path, text, says):
+    """OpenDataFile on an empty, a worded or a molecular .xyz: the plugin's
+    reader, and its message (ParaView's PLOT3D reader, which took them
+    before, crashed pvpython)."""
+    from vtkmodules.util.misc import calldata_type
+    from vtkmodules.util.vtkConstants import VTK_STRING
+    path = tmp_path / "not-a-cloud.xyz"
+    path.write_text(text)
+    reader = pvs.OpenDataFile(str(path))
+    assert reader.GetXMLName() == "ASCIIPointCloudReader", reader.GetXMLName()
+    texts = []
+
+    @calldata_type(VTK_STRING)
+    def on_error(caller, event, message):
+        texts.append(message)
+
+    reader.GetClientSideObject().AddObserver("ErrorEvent", on_error)
+    reader.UpdatePipeline()
+    assert any(says in t for t in texts), texts
+    assert reader.GetDataInformation().GetNumberOfPoints() == 0

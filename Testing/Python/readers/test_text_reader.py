@@ -113,3 +113,17 @@ def test_molecular_xyz(write):
     assert cloud.GetNumberOfPoints() == 0 and any("ParaView's XYZ Reader" in str(e) and "line 3" in str(e)
                                                   for e in errors), \
         "molecular XYZ: an empty output and an error naming line 3 and the XYZ Reader (%s)" % errors
+
+
+@pytest.mark.parametrize("text", ["", "hello world\nfoo bar\n", "3\nwater\nO 0 0 0\nH 0.75 0.58 0\nH -0.75 0.58 0\n"])
+def test_text_xyz_that_is_no_cloud_is_this_readers(write, text):
+    # An empty, a worded or a molecular .xyz is this reader's (CanReadFile
+    # 1), which says what is wrong, not the PLOT3D reader's, the other of
+    # the extension, which crashed pvpython on them; words in a .csv are
+    # left to the readers of tables.
+    path = write("not-a-cloud.xyz", text)
+    assert vtkPointCloudTextReader().CanReadFile(path) == 1
+    _, cloud, errors = read(path)
+    assert errors and cloud.GetNumberOfPoints() == 0
+    if text.startswith("hello"):
+        assert vtkPointCloudTextReader().CanReadFile(write("not-a-cloud.csv", text)) == 0
