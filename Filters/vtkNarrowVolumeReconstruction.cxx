@@ -211,9 +211,8 @@ namespace
 {
 
 /// The core's progress to the filter, and the filter's abort flag to the
-/// core, on the thread that runs the filter (see nv::CallerMonitor). Not
-/// abortable in the information pass: the pipeline clears the abort flag as
-/// a data pass begins, so there it may still hold the last run's.
+/// core, on the thread that runs the filter (see nv::CallerMonitor); not
+/// abortable where all processes must go on together.
 class FilterMonitor : public nv::CallerMonitor
 {
 public:
@@ -467,11 +466,21 @@ int vtkNarrowVolumeReconstruction::RequestInformation(
   // The measurement shows its progress (on a large cloud it takes seconds,
   // before the data pass begins) as the run's first stage; the data pass's
   // progress, which the pipeline starts again from 0, then fills the rest.
+  // It stops when asked (a GUI's abort, Ctrl-C in Python): the abort flag
+  // is cleared first, as the data pass does, since it may still hold the
+  // last run's; the data pass then leaves the outputs empty. Under several
+  // processes every one measures to the end, as one alone cannot stop.
   bool measured = false;
   this->SetProgressShiftScale(0.0, 1.0);
-  FilterMonitor progress(this, false);
+  this->AbortExecute = 0; // not SetAbortExecute, which would mark the filter modified
+  FilterMonitor progress(this, !several);
   const std::shared_ptr<const nv::Sampling> sampling =
     this->MeasureSampling(input, communicator.get(), progress, &measured);
+  this->StoppedBeforeData = !sampling;
+  if (!sampling)
+  {
+    return 1;
+  }
   if (measured)
   {
     this->SetProgressShiftScale(nv::SamplingStage, 1.0 - nv::SamplingStage);
@@ -509,6 +518,11 @@ int vtkNarrowVolumeReconstruction::RequestData(
   volume->Initialize();
   surface->Initialize();
   this->KeepResults(nullptr, nv::Outcome());
+  if (this->StoppedBeforeData)
+  {
+    this->StoppedBeforeData = false; // stopped in the information pass: no run, empty outputs
+    return 1;
+  }
   if (vtkTable::GetData(inputVector[0], 0))
   {
     vtkErrorMacro(<< this->InWordsOfReader(nv::TableInputError()));

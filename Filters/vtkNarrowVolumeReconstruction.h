@@ -377,6 +377,7 @@ protected:
   std::unique_ptr<nv::Results> Chosen; ///< the last run's results (NV_RESULTS)
   bool PanelLabelsInMessages = false;
   std::unique_ptr<nv::SamplingCache> Samplings; ///< the input's sampling, measured once per points
+  bool StoppedBeforeData = false; ///< the information pass's measurement was stopped (abort)
   double SamplingTime = 0.0;
   double SetupTime = 0.0;
   double EvolutionTime = 0.0;

@@ -74,6 +74,7 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
         # nv::Settings holds the C++ defaults.
         self._settings = _core.Settings()
         self._samplings = _core.SamplingCache()  # the input's sampling, measured once per points
+        self._stopped_before_data = False  # the information pass's measurement was stopped (abort)
         self._panel_labels = False  # SetPanelLabelsInMessages
         self._clear_results()
 
@@ -198,11 +199,16 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
             # The measurement shows its progress (seconds on a large cloud,
             # before the data pass) as the run's first stage; the data pass's
             # progress, which the pipeline starts again from 0, then fills
-            # the rest. AbortExecute does not stop it: the pipeline clears
-            # that flag only as a data pass begins (it may hold the last run's).
+            # the rest. It stops when asked (AbortExecute, cleared first as
+            # the data pass does, since it may hold the last run's): the data
+            # pass then leaves the outputs empty.
             self.SetProgressShiftScale(0.0, 1.0)
-            monitor = _core.Monitor(report=self.UpdateProgress, poll=None)
+            self.SetAbortExecute(0)
+            monitor = _core.Monitor(report=self.UpdateProgress, poll=lambda: bool(self.GetAbortExecute()))
             sampling, measured = self._measure_sampling(data, monitor)
+            self._stopped_before_data = sampling is None
+            if sampling is None:
+                return 1
             if measured:
                 self.SetProgressShiftScale(_core.SamplingStage, 1.0 - _core.SamplingStage)
         except (KeyboardInterrupt, Exception) as error:  # RequestData reports the run's own errors
@@ -244,6 +250,9 @@ class vtkNarrowVolumeReconstruction(VTKPythonAlgorithmBase):
         volume.Initialize()
         surface.Initialize()
         self._clear_results()
+        if self._stopped_before_data:  # stopped in the information pass: no run, empty outputs
+            self._stopped_before_data = False
+            return 1
         # One process computes everything: a request for another piece is left empty.
         piece_info = outInfoVec.GetInformationObject(1)
         if piece_info.Has(sddp.UPDATE_PIECE_NUMBER()) and piece_info.Get(sddp.UPDATE_PIECE_NUMBER()) > 0:

@@ -13,11 +13,12 @@ namespace
 {
 constexpr std::int64_t PointGrain = 4096; ///< points a task
 
-/// kernel(i) for i in [begin, end), `grain` a task, over the thread pool.
+/// kernel(i) for i in [begin, end), `grain` a task, over the thread pool;
+/// false if the monitor (may be null) asked to stop between rounds.
 template <typename Kernel>
-void ForEach(std::int64_t begin, std::int64_t end, std::int64_t grain, const Kernel& kernel)
+bool ForEach(std::int64_t begin, std::int64_t end, std::int64_t grain, const Kernel& kernel, Monitor* monitor = nullptr)
 {
-  ParallelFor(begin, end, grain, [&](std::int64_t first, std::int64_t last) {
+  return StoppableFor(begin, end, grain, monitor, [&](std::int64_t first, std::int64_t last) {
     for (std::int64_t i = first; i < last; ++i)
     {
       kernel(i);
@@ -65,8 +66,8 @@ PointConstants PointConstantsOf(const Grid& grid, double reach)
   return constants;
 }
 
-void SortPoints(const double* cloud, std::int64_t numberOfPoints, const PointConstants& constants, double* points,
-  std::int64_t* bucketStart)
+bool SortPoints(const double* cloud, std::int64_t numberOfPoints, const PointConstants& constants, double* points,
+  std::int64_t* bucketStart, Monitor* monitor)
 {
   PointArrays a = ArraysOf(constants, numberOfPoints);
   std::vector<std::int64_t> brickOf(static_cast<std::size_t>(numberOfPoints));
@@ -79,12 +80,15 @@ void SortPoints(const double* cloud, std::int64_t numberOfPoints, const PointCon
   a.Next = next.data();
   a.Points = points;
   a.ChunkCount = sums.data();
-  ForEach(0, numberOfPoints, PointGrain, BucketPointsKernel{ a, constants });
+  if (!ForEach(0, numberOfPoints, PointGrain, BucketPointsKernel{ a, constants }, monitor))
+  {
+    return false;
+  }
   ForEach(0, NumberOfChunks(a), 16, ChunkSumKernel<std::int64_t>{ a, a.BucketStart + 1 });
   ChunkStarts(sums, first);
   a.ChunkFirst = first.data();
   ForEach(0, NumberOfChunks(a), 16, ChunkScanKernel{ a });
-  ForEach(0, numberOfPoints, PointGrain, ScatterPointsKernel{ a, constants });
+  return ForEach(0, numberOfPoints, PointGrain, ScatterPointsKernel{ a, constants }, monitor);
 }
 
 std::vector<std::int64_t> ListReachedBricks(

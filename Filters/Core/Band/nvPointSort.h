@@ -262,6 +262,8 @@ struct Grid;
 /// chunks' sums, summed in order; returns their total.
 std::int64_t ChunkStarts(const std::vector<std::int64_t>& sums, std::vector<std::int64_t>& first);
 
+class Monitor;
+
 /// The constants of `grid` and the reach (l + eta/2, world units), in
 /// cells as the kernels read them.
 PointConstants PointConstantsOf(const Grid& grid, double reach);
@@ -269,9 +271,10 @@ PointConstants PointConstantsOf(const Grid& grid, double reach);
 /// The counting sort of `cloud` (numberOfPoints xyz triples, world
 /// coordinates) into `points` (3 a point, relative, sorted by brick) and
 /// `bucketStart` (a brick of the grid and one more), both allocated by the
-/// caller.
-void SortPoints(const double* cloud, std::int64_t numberOfPoints, const PointConstants& constants, double* points,
-  std::int64_t* bucketStart);
+/// caller. False, the sort unfinished, if the monitor (may be null) asked
+/// to stop between the passes' rounds (a sort of millions takes a second).
+bool SortPoints(const double* cloud, std::int64_t numberOfPoints, const PointConstants& constants, double* points,
+  std::int64_t* bucketStart, Monitor* monitor = nullptr);
 
 /// The bricks that the sorted `points` reach (eq. 7), ascending.
 std::vector<std::int64_t> ListReachedBricks(

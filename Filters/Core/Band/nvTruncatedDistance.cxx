@@ -22,7 +22,7 @@ TruncatedDistance::TruncatedDistance(const Grid& grid, double reach)
 }
 
 TruncatedDistance::TruncatedDistance(
-  const Grid& grid, const double* points, std::int64_t numberOfPoints, double reach)
+  const Grid& grid, const double* points, std::int64_t numberOfPoints, double reach, Monitor* monitor)
   : TruncatedDistance(grid, reach)
 {
   // Counting sort of the points by brick (nvPointSort.h, on the threads).
@@ -31,7 +31,12 @@ TruncatedDistance::TruncatedDistance(
   // and the inner loops need no division.
   this->Points.resize(static_cast<std::size_t>(3 * numberOfPoints));
   this->BucketStart.resize(static_cast<std::size_t>(this->GetNumberOfBricks() + 1));
-  SortPoints(points, numberOfPoints, PointConstantsOf(grid, reach), this->Points.data(), this->BucketStart.data());
+  if (!SortPoints(
+        points, numberOfPoints, PointConstantsOf(grid, reach), this->Points.data(), this->BucketStart.data(), monitor))
+  {
+    this->Points.clear(); // stopped: no points (the caller asks the monitor, and goes no further)
+    std::fill(this->BucketStart.begin(), this->BucketStart.end(), std::int64_t(0));
+  }
 }
 
 void TruncatedDistance::BrickFirstNode(std::int64_t brick, std::int64_t ijk[3]) const

@@ -20,6 +20,7 @@
 
 namespace nv
 {
+class Monitor;
 
 constexpr int BrickShift = 3;
 constexpr int BrickSize = 1 << BrickShift;               ///< nodes per brick side
@@ -42,7 +43,8 @@ public:
    * points: numberOfPoints xyz triples in world coordinates, all inside the
    * grid's box. reach: l + eta/2; distances at or beyond it are truncated.
    */
-  TruncatedDistance(const Grid& grid, const double* points, std::int64_t numberOfPoints, double reach);
+  TruncatedDistance(
+    const Grid& grid, const double* points, std::int64_t numberOfPoints, double reach, Monitor* monitor = nullptr);
   /**
    * The grid and the reach only, without points: for a source that sorts and
    * holds the points itself (the device back end, nvDeviceDistance.h), which

@@ -90,8 +90,10 @@ bool Lower(std::atomic<NearestKey>& node, NearestKey key)
 /// with when it begins, and lowers their neighbours' keys (an atomic least,
 /// whose outcome no order changes); the nodes it lowered are the next
 /// round's, in this bucket or a later one. So the result is the same on
-/// every run and for any number of threads.
-std::vector<float> SheetDistance(const Grid& grid, const float* outer, const std::vector<double>& sheet, double cap)
+/// every run and for any number of threads. Empty if the monitor (may be
+/// null) asked to stop between rounds.
+std::vector<float> SheetDistance(
+  const Grid& grid, const float* outer, const std::vector<double>& sheet, double cap, Monitor* monitor)
 {
   const std::int64_t nodes = grid.NumberOfNodes();
   const double h = grid.Spacing;
@@ -117,7 +119,7 @@ std::vector<float> SheetDistance(const Grid& grid, const float* outer, const std
   auto keyOf = [&](double d2, std::int64_t v) { return MakeKey(static_cast<float>(std::sqrt(d2)), v); };
   // The seeds: every node within two cells of a vertex.
   const std::int64_t vertices = static_cast<std::int64_t>(sheet.size() / 3);
-  ParallelFor(0, vertices, 256, [&](std::int64_t begin, std::int64_t end) {
+  StoppableFor(0, vertices, 256, monitor, [&](std::int64_t begin, std::int64_t end) {
     for (std::int64_t v = begin; v < end; ++v)
     {
       std::int64_t low[3], high[3], ijk[3];
@@ -170,6 +172,10 @@ std::vector<float> SheetDistance(const Grid& grid, const float* outer, const std
   {
     while (!queue[b].empty())
     {
+      if (StopAsked(monitor))
+      {
+        return {};
+      }
       std::vector<Entry> round;
       round.swap(queue[b]);
       const std::int64_t count = static_cast<std::int64_t>(round.size());
@@ -620,9 +626,10 @@ double ValueAt(const Grid& grid, const float* values, const double x[3])
 }
 
 /// The least distance from a vertex of the inner surface (D > l + w / 2)
-/// to a vertex of the outer surface; 0 without an inner surface.
+/// to a vertex of the outer surface; 0 without an inner surface. Stops
+/// early when the monitor (may be null) asks (the caller asks it again).
 double MinimumWall(const Grid& grid, const SurfaceArrays& part, const std::vector<float>& distance, double offset,
-  double wall, std::array<double, 3>& where)
+  double wall, std::array<double, 3>& where, Monitor* monitor)
 {
   const std::int64_t n = part.NumberOfPoints;
   std::vector<char> inner(static_cast<std::size_t>(n), 0);
@@ -650,7 +657,7 @@ double MinimumWall(const Grid& grid, const SurfaceArrays& part, const std::vecto
   // number of threads).
   std::pair<double, std::int64_t> least{ std::numeric_limits<double>::infinity(), 0 };
   std::mutex lock;
-  ParallelFor(0, count, 1024, [&](std::int64_t begin, std::int64_t end) {
+  StoppableFor(0, count, 1024, monitor, [&](std::int64_t begin, std::int64_t end) {
     std::pair<double, std::int64_t> mine{ std::numeric_limits<double>::infinity(), 0 };
     for (std::int64_t p = begin; p < end; ++p)
     {
@@ -981,6 +988,7 @@ std::vector<Drill> DrainHoles(const Grid& grid, const float* outer, const InnerF
   report.CavitiesWithoutHoles = static_cast<std::int64_t>(std::count(drilled.begin(), drilled.end(), 0));
   return drills;
 }
+
 /// The scan's lost points (PrintReport): those farther than
 /// report.LostDistance outside the part beyond what the closing explains,
 /// |D - l| for a point at D from the outer sheet (D = l on a surface smooth
@@ -991,13 +999,13 @@ std::vector<Drill> DrainHoles(const Grid& grid, const float* outer, const InnerF
 /// report.FarthestLost; the points' indices, ascending.
 std::vector<std::int64_t> LostPoints(const Grid& grid, const float* outer, const PartField& field,
   const SurfaceArrays& part, const std::vector<float>& distance, double offset, double cap, const PartRequest& request,
-  const std::vector<Drill>& drills, PrintReport& report)
+  const std::vector<Drill>& drills, PrintReport& report, Monitor* monitor)
 {
   const std::int64_t n = request.Scan ? request.ScanPoints : 0;
   const NearestPoints vertices(part.Points, part.NumberOfPoints);
   const double bound = report.LostDistance, h = grid.Spacing;
   std::vector<float> beyond(static_cast<std::size_t>(n), 0.0f); // how far outside, beyond the bound
-  ParallelFor(0, n, 1024, [&](std::int64_t begin, std::int64_t end) {
+  StoppableFor(0, n, 1024, monitor, [&](std::int64_t begin, std::int64_t end) {
     for (std::int64_t p = begin; p < end; ++p)
     {
       const double* x = request.Scan + 3 * p;
@@ -1151,7 +1159,7 @@ bool MakePart(const Grid& grid, const Parameters& parameters, const float* outer
   const double closing = request.CavityClosing;
   const double cap = l + wall + closing + 4.0 * h;
   step(0.1, 0.5);
-  const std::vector<float> distance = SheetDistance(grid, outer, sheet.Points, cap);
+  const std::vector<float> distance = SheetDistance(grid, outer, sheet.Points, cap, monitor);
   if (monitor && monitor->Aborted())
   {
     return false;
@@ -1176,7 +1184,11 @@ bool MakePart(const Grid& grid, const Parameters& parameters, const float* outer
         return false;
       }
     }
-    grown = SheetDistance(grid, outer, eroded.Points, closing + 4.0 * h);
+    grown = SheetDistance(grid, outer, eroded.Points, closing + 4.0 * h, monitor);
+    if (StopAsked(monitor))
+    {
+      return false;
+    }
   }
   const InnerField inner{ distance, closing > 0.0 ? &grown : nullptr, l + wall, closing };
   step(0.5, 0.7);
@@ -1217,7 +1229,11 @@ bool MakePart(const Grid& grid, const Parameters& parameters, const float* outer
   }
   // The wall as made, before the holes cut through it.
   report.MinimumWallThickness =
-    report.KeptCavities > 0 ? MinimumWall(grid, sink.View(), distance, l, wall, report.ThinnestWallAt) : 0.0;
+    report.KeptCavities > 0 ? MinimumWall(grid, sink.View(), distance, l, wall, report.ThinnestWallAt, monitor) : 0.0;
+  if (StopAsked(monitor))
+  {
+    return false;
+  }
   step(0.7, 0.85);
   if ((request.DrainHoles > 0 || !request.DrainPositions.empty()) && report.KeptCavities > 0)
   {
@@ -1242,7 +1258,12 @@ bool MakePart(const Grid& grid, const Parameters& parameters, const float* outer
   step(0.85, 1.0);
   report.LostDistance = LostDistanceCells * h;
   report.ScanPoints = request.Scan ? request.ScanPoints : 0;
-  std::vector<std::int64_t> lost = LostPoints(grid, outer, *part, sink.View(), distance, l, cap, request, drills, report);
+  std::vector<std::int64_t> lost =
+    LostPoints(grid, outer, *part, sink.View(), distance, l, cap, request, drills, report, monitor);
+  if (StopAsked(monitor))
+  {
+    return false;
+  }
   if (!lost.empty() && static_cast<double>(lost.size()) <= RestorableShare * static_cast<double>(request.ScanPoints))
   {
     const Restoration restored(grid, request.Scan, request.ScanPoints, lost, LostRadiusCells * h, 2.0 * l);
@@ -1259,7 +1280,12 @@ bool MakePart(const Grid& grid, const Parameters& parameters, const float* outer
       report.CavityVolume = cavityVolume;
       report.KeptCavities = kept;
     }
-    const std::vector<std::int64_t> left = LostPoints(grid, outer, *part, sink.View(), distance, l, cap, request, drills, report);
+    const std::vector<std::int64_t> left =
+      LostPoints(grid, outer, *part, sink.View(), distance, l, cap, request, drills, report, monitor);
+    if (StopAsked(monitor))
+    {
+      return false;
+    }
     std::vector<std::int64_t> back; // the lost points held now
     std::set_difference(lost.begin(), lost.end(), left.begin(), left.end(), std::back_inserter(back));
     report.RestoredPoints = static_cast<std::int64_t>(back.size());

@@ -2,13 +2,15 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "nvSheets.h"
 
+#include "nvParallel.h"
+
 #include <cstdint>
 #include <vector>
 
 namespace nv
 {
 
-std::int64_t KeepSheets(const Grid& grid, float* phi, Sheets which)
+std::int64_t KeepSheets(const Grid& grid, float* phi, Sheets which, Monitor* monitor)
 {
   if (which == Sheets::Both)
   {
@@ -37,6 +39,10 @@ std::int64_t KeepSheets(const Grid& grid, float* phi, Sheets which)
       }
   for (std::size_t head = 0; head < queue.size(); ++head)
   {
+    if (head % (std::size_t(1) << 22) == 0 && StopAsked(monitor)) // tens of millions of nodes take seconds
+    {
+      return -1;
+    }
     const std::int64_t n = queue[head];
     const std::int64_t i = n % nx, j = (n / nx) % ny, k = n / (nx * ny);
     if (i > 0)

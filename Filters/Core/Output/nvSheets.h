@@ -12,6 +12,8 @@
 
 namespace nv
 {
+class Monitor;
+
 
 enum class Sheets
 {
@@ -26,9 +28,10 @@ enum class Sheets
  * sheets, or the exterior is (to drop the outer sheet). Both: no change.
  * Returns the number of cavity nodes (phi < 0, not reachable from the
  * grid's boundary): 0 when the shell encloses nothing, as around an open
- * scan whose two sheets join at its rim; -1 for Both.
+ * scan whose two sheets join at its rim; -1 for Both, or when the monitor
+ * (may be null) asked to stop the search (phi is then unchanged).
  */
-std::int64_t KeepSheets(const Grid& grid, float* phi, Sheets which);
+std::int64_t KeepSheets(const Grid& grid, float* phi, Sheets which, Monitor* monitor = nullptr);
 
 } // namespace nv
 

@@ -63,8 +63,11 @@ void WithThreads(int threads, const std::function<void()>& body)
   backend::Scope(threads, body);
 }
 
-bool MonitoredFor(
-  std::int64_t begin, std::int64_t end, std::int64_t grain, Monitor* monitor, const RangeFunction& fn)
+namespace
+{
+/// MonitoredFor and StoppableFor: rounds, reporting each round's end when `report`.
+bool ForInRounds(std::int64_t begin, std::int64_t end, std::int64_t grain, Monitor* monitor, bool report,
+  const RangeFunction& fn)
 {
   constexpr std::int64_t Rounds = 16;
   const std::int64_t n = end - begin;
@@ -76,12 +79,30 @@ bool MonitoredFor(
       return false;
     }
     ParallelFor(first, std::min(end, first + round), grain, fn);
-    if (monitor)
+    if (monitor && report)
     {
       monitor->Progress(static_cast<double>(std::min(end, first + round) - begin) / n);
     }
   }
   return !(monitor && monitor->Aborted());
+}
+} // namespace
+
+bool MonitoredFor(
+  std::int64_t begin, std::int64_t end, std::int64_t grain, Monitor* monitor, const RangeFunction& fn)
+{
+  return ForInRounds(begin, end, grain, monitor, true, fn);
+}
+
+bool StoppableFor(
+  std::int64_t begin, std::int64_t end, std::int64_t grain, Monitor* monitor, const RangeFunction& fn)
+{
+  return ForInRounds(begin, end, grain, monitor, false, fn);
+}
+
+bool StopAsked(Monitor* monitor)
+{
+  return monitor && monitor->Aborted();
 }
 
 double ParallelSum(std::int64_t n, const RangeReduction& fn)
@@ -135,6 +156,7 @@ void CallerMonitor::Progress(double fraction)
     if (progress > this->Last || fraction == 0.0)
     {
       this->Last = progress;
+      this->Reported = std::chrono::steady_clock::now();
       this->Report(progress);
     }
     this->Stop = this->Stop || this->Poll();
@@ -145,6 +167,16 @@ bool CallerMonitor::Aborted()
 {
   if (this->OnCallerThread())
   {
+    // The caller hears a stop only when the run reports (a GUI's abort
+    // button, Python's Ctrl-C run in its progress event): work that asks
+    // between reports, a sort of millions, reports the same figure again,
+    // at most every ReportAgain, so that the stop comes through.
+    const auto now = std::chrono::steady_clock::now();
+    if (!this->Stop && now - this->Reported >= ReportAgain)
+    {
+      this->Reported = now;
+      this->Report(this->Last);
+    }
     this->Stop = this->Stop || this->Poll();
   }
   return this->Stop;

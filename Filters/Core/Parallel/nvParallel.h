@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <thread>
@@ -41,23 +42,48 @@ class Monitor;
 bool MonitoredFor(
   std::int64_t begin, std::int64_t end, std::int64_t grain, Monitor* monitor, const RangeFunction& fn);
 
+/// ParallelFor in about 16 rounds, asking the monitor (may be null) to stop
+/// between them, on the calling thread, without reports of progress (a
+/// loop inside a step whose progress is reported as a whole). Returns false
+/// if it stopped early.
+bool StoppableFor(
+  std::int64_t begin, std::int64_t end, std::int64_t grain, Monitor* monitor, const RangeFunction& fn);
+
+/// Whether the monitor (may be null) asks to stop: for work between two
+/// reports of progress, asked on the calling thread (Monitor::Aborted).
+bool StopAsked(Monitor* monitor);
+
 /// Sorts v: fixed chunks sorted in parallel, then merged pairwise, in
 /// parallel while there are several pairs (the result is the sorted
-/// sequence, whatever the threads).
+/// sequence, whatever the threads). With a monitor, asks it to stop after
+/// every four chunks and every round of merges (a sort of millions takes
+/// seconds): false, and v unsorted, if it did.
 template <typename T, typename Allocator>
-void ParallelSort(std::vector<T, Allocator>& v)
+bool ParallelSort(std::vector<T, Allocator>& v, Monitor* monitor = nullptr)
 {
   constexpr std::int64_t Chunks = 32;
+  constexpr std::int64_t ChunksPerRound = 4;
   const std::int64_t n = static_cast<std::int64_t>(v.size());
   auto bound = [&](std::int64_t c) { return v.begin() + static_cast<std::ptrdiff_t>(n * c / Chunks); };
-  ParallelFor(0, Chunks, 1, [&](std::int64_t begin, std::int64_t end) {
-    for (std::int64_t c = begin; c < end; ++c)
+  for (std::int64_t first = 0; first < Chunks; first += ChunksPerRound)
+  {
+    if (StopAsked(monitor))
     {
-      std::sort(bound(c), bound(c + 1));
+      return false;
     }
-  });
+    ParallelFor(first, first + ChunksPerRound, 1, [&](std::int64_t begin, std::int64_t end) {
+      for (std::int64_t c = begin; c < end; ++c)
+      {
+        std::sort(bound(c), bound(c + 1));
+      }
+    });
+  }
   for (std::int64_t width = 1; width < Chunks; width *= 2)
   {
+    if (StopAsked(monitor))
+    {
+      return false;
+    }
     ParallelFor(0, Chunks / (2 * width), 1, [&](std::int64_t begin, std::int64_t end) {
       for (std::int64_t m = begin; m < end; ++m)
       {
@@ -66,6 +92,7 @@ void ParallelSort(std::vector<T, Allocator>& v)
       }
     });
   }
+  return !StopAsked(monitor);
 }
 
 /// Sum of fn over fixed chunks of [0, n), added in chunk order (deterministic).
@@ -148,7 +175,12 @@ protected:
 private:
   bool OnCallerThread() const { return std::this_thread::get_id() == this->Caller; }
 
+  /// The longest the caller goes without a report while the run asks
+  /// whether to stop.
+  static constexpr std::chrono::milliseconds ReportAgain{ 100 };
+
   std::thread::id Caller;
+  std::chrono::steady_clock::time_point Reported = std::chrono::steady_clock::now();
   double Begin = 0.0;
   double Width = 1.0;
   double Last = 0.0;

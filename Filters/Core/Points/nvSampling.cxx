@@ -57,7 +57,8 @@ bool Before(const double* a, const double* b)
 class CellIndex
 {
 public:
-  CellIndex(const std::vector<double>& xyz, double cellSize)
+  /// monitor (may be null): asked to stop during the sort; then Stopped().
+  CellIndex(const std::vector<double>& xyz, double cellSize, Monitor* monitor = nullptr)
     : Xyz(xyz)
     , Size(cellSize)
   {
@@ -80,7 +81,11 @@ public:
         keyed[p] = { Key(c), p };
       }
     });
-    ParallelSort(keyed);
+    if (!ParallelSort(keyed, monitor))
+    {
+      this->Incomplete = true;
+      return;
+    }
     this->Order.resize(keyed.size());
     this->Sorted.resize(xyz.size());
     ParallelFor(0, n, 4096, [&](std::int64_t begin, std::int64_t end) {
@@ -117,6 +122,9 @@ public:
       q = end;
     }
   }
+
+  /// Whether the monitor stopped the index before it was complete.
+  bool Stopped() const { return this->Incomplete; }
 
   /// The nearest point to x at a distance > 0 (x may be one of the points,
   /// or another), and that distance; partner -1 when there is none within
@@ -237,6 +245,7 @@ private:
 
   const std::vector<double>& Xyz;
   double Size;
+  bool Incomplete = false;
   double Low[3];
   std::vector<std::int64_t> Order; ///< the points in cell order
   std::vector<double> Sorted;      ///< their coordinates in that order (a cell's points side by side)
@@ -266,7 +275,8 @@ std::pair<double, std::int64_t> NearestByScan(const std::vector<double>& xyz, co
 
 /// A cell size near the typical spacing: the cloud is taken as a surface,
 /// whose area is estimated by the cells of a coarse grid that it occupies.
-double CellSizeFor(const std::vector<double>& xyz)
+/// monitor (may be null): asked to stop during the sort; 0 if it did.
+double CellSizeFor(const std::vector<double>& xyz, Monitor* monitor)
 {
   const std::int64_t n = static_cast<std::int64_t>(xyz.size() / 3);
   double bounds[6];
@@ -291,7 +301,10 @@ double CellSizeFor(const std::vector<double>& xyz)
       keys[p] = key;
     }
   });
-  ParallelSort(keys);
+  if (!ParallelSort(keys, monitor))
+  {
+    return 0.0;
+  }
   const double occupied = static_cast<double>(std::unique(keys.begin(), keys.end()) - keys.begin());
   // Area ~ occupied * coarse^2, spacing ~ sqrt(area / n); two spacings per
   // cell, so that most nearest neighbours are in the 27 cells around a point.
@@ -329,9 +342,20 @@ bool FindNearest(const std::vector<double>& points, const std::vector<double>& q
   }
   const double side = std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
   const bool selves = &points == &queries && pending.size() == points.size() / 3;
-  for (double cell = CellSizeFor(points); pending.size() > 1000; cell *= 4.0)
+  // The first pass's index asks the monitor to stop while it sorts the
+  // points (seconds for millions), as the pass itself does.
+  const double first = CellSizeFor(points, monitor);
+  if (StopAsked(monitor))
   {
-    const CellIndex index(points, cell);
+    return false;
+  }
+  for (double cell = first; pending.size() > 1000; cell *= 4.0)
+  {
+    const CellIndex index(points, cell, monitor);
+    if (index.Stopped())
+    {
+      return false;
+    }
     // The points themselves at first in cell order (neighbours one after the other).
     const std::vector<std::int64_t>& order = selves && pending.size() == points.size() / 3 ? index.CellOrder() : pending;
     const bool done =

@@ -61,7 +61,11 @@ bool ContourDense(
   const Reconstruction& run, float* phi, SurfaceSink& sink, Monitor* monitor, std::int64_t& cavities)
 {
   const Grid& grid = run.GetGrid();
-  cavities = KeepSheets(grid, phi, run.GetSettings().Sheets);
+  cavities = KeepSheets(grid, phi, run.GetSettings().Sheets, monitor);
+  if (StopAsked(monitor))
+  {
+    return false;
+  }
   const DenseField field(grid, phi, 0, grid.Dims[2], run.GetParameters());
   return ContourBricks(grid, field, sink, 0, -1, monitor);
 }
@@ -560,8 +564,9 @@ bool MakePrintPart(Reconstruction& run, SurfaceSink& sink, const VolumeArrays& d
   request.Progress[0] = run.OutputBegin();
   request.Progress[1] = 1.0 - run.OutputBegin();
   const bool done = run.GetStageTimes().Time("part", [&]() {
-    KeepSheets(grid, outer.data(), Sheets::Outer);
-    return MakePart(grid, run.GetParameters(), outer.data(), request, sink, run.GetMonitor(), outcome.Print);
+    KeepSheets(grid, outer.data(), Sheets::Outer, run.GetMonitor());
+    return !StopAsked(run.GetMonitor()) &&
+      MakePart(grid, run.GetParameters(), outer.data(), request, sink, run.GetMonitor(), outcome.Print);
   });
   outcome.Printed = done;
   outcome.Chosen.PartSizeUsed = PartSize(outcome.Print.Bounds.data(), run.GetPlan().PointsBounds.data());

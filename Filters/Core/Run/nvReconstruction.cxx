@@ -734,11 +734,15 @@ bool Reconstruction::BuildBand(std::vector<double> xyz)
   {
     // The points sorted into bricks, for the band only: gone once it is built.
     const auto sorting = StageTimes::Clock::now();
-    const TruncatedDistance distance(grid, xyz.data(), static_cast<std::int64_t>(xyz.size() / 3), reach);
+    const TruncatedDistance distance(
+      grid, xyz.data(), static_cast<std::int64_t>(xyz.size() / 3), reach, this->Comm ? nullptr : this->TheMonitor);
     std::vector<double>().swap(xyz);
     this->Stages.Add("distance", sorting);
-    this->Band =
-      BuildNarrowBand(distance, this->ThePlan.Scheme, this->TheMonitor, &this->Part, writeBrick, &this->Stages);
+    if (!StopAsked(this->Comm ? nullptr : this->TheMonitor))
+    {
+      this->Band =
+        BuildNarrowBand(distance, this->ThePlan.Scheme, this->TheMonitor, &this->Part, writeBrick, &this->Stages);
+    }
   }
   ReleaseFreedMemory();
   this->SetupTime = Seconds(start);

@@ -494,6 +494,36 @@ def test_ctrl_c_from_progress():
     assert signal.getsignal(signal.SIGINT) is signal.default_int_handler  # restored
 
 
+def test_abort_while_the_spacing_is_measured():
+    """An abort at the first report of a large cloud's measurement (the
+    points' spacing, in the information pass, before the data pass; its
+    sorts of millions report nothing): the run stops inside it, its progress
+    never past that stage's share, the outputs empty; the next Update runs
+    whole. The measurement could not be stopped before (seconds for millions
+    of points), and the data pass, which clears the flag, then ran whole."""
+    sampling_stage = 0.1  # the measurement's share of the progress (nv::SamplingStage)
+    rng = np.random.default_rng(7)
+    directions = rng.normal(size=(1000000, 3))
+    f = narrowvolume.vtkNarrowVolumeReconstruction()
+    f.SetInputData(nvclouds.cloud(0.5 * directions / np.linalg.norm(directions, axis=1)[:, None]))
+    f.SetSampleSpacing(0.05)
+    seen = []
+
+    def abort(caller, event):
+        seen.append(caller.GetProgress())
+        if len(seen) == 1:
+            caller.SetAbortExecute(1)  # as ParaView's abort button and reconstruct()'s Ctrl-C do
+    observer = f.AddObserver(vtkCommand.ProgressEvent, abort)
+    f.Update()
+    print("progress seen: %s" % seen)
+    assert max(v for v in seen if v < 1.0) < sampling_stage  # (the pipeline's own 1.0 as it ends)
+    assert f.GetOutput(1).GetNumberOfPoints() == 0 and f.GetOutput(0).GetNumberOfPoints() == 0
+    f.RemoveObserver(observer)
+    f.Modified()
+    f.Update()
+    assert f.GetOutput(1).GetNumberOfPoints() > 0
+
+
 @only_wheel
 def test_ctrl_c_while_the_core_runs():
     """Ctrl-C from outside while the core computes (the GIL released), with
