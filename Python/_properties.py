@@ -59,8 +59,8 @@ enum: for an enumerated property, the core's C++ enum (nv::<enum>) its field has
 group: the panel's group of properties.
 advanced: whether the panel shows it only in advanced mode (the gear).
 widget: None, or how the panel edits it beyond its type: ("bounds", f), a
-    value field whose reset button takes f times the input's smallest
-    extent; ("slider", low, high), a slider over that range (any value can
+    slider from 0 to f times the input's longest side (ParaView's
+    BoundsDomain, scaled_extent), whose reset button gives 0, the default; ("slider", low, high), a slider over that range (any value can
     still be typed).
 doc: what it means, its unit and its default, with {OtherProperty} for the
     names of other properties."""
@@ -216,7 +216,7 @@ PROPERTIES = (
         "Add the point array \"NarrowBand\" (1 on the nodes the scheme updates) to the Volume output."),
     # --- Printing
     Property(
-        "WallThickness", "Wall Thickness", float, 0.0, None, None, (), None, "Printing", False, ("bounds", 0.02),
+        "WallThickness", "Wall Thickness", float, 0.0, None, None, (), None, "Printing", False, ("bounds", 0.05),
         "Make a part to print instead of the shell: above 0, the Surface output is a hollow solid whose outer "
         "surface is the cloud's closing (the solid the shell's outer sheet encloses, eroded back by the "
         "offset distance: it lies on the scan where the surface is smooth on the scale of the offset, and "

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkPointCloudTextReader.h"
 
+#include "nvTextCloud.h"
+
 #include "vtkCellArray.h"
 #include "vtkFloatArray.h"
 #include "vtkInformation.h"
@@ -26,25 +28,12 @@ vtkStandardNewMacro(vtkPointCloudTextReader);
 namespace
 {
 
-/// The numbers of one line; false if a field is not a number.
-bool ParseLine(const std::string& line, std::vector<double>& values)
+using nv::text::LineKind;
+
+/// What a line is, and its numbers (nvTextCloud.h: the rule of every route).
+LineKind KindOf(const std::string& line, std::vector<double>& values, std::size_t* fields = nullptr)
 {
-  values.clear();
-  const char* p = line.c_str();
-  while (*p)
-  {
-    while (*p == ' ' || *p == '\t' || *p == ',' || *p == ';' || *p == '\r')
-      ++p;
-    if (!*p)
-      break;
-    char* end = nullptr;
-    const double v = std::strtod(p, &end);
-    if (end == p)
-      return false;
-    values.push_back(v);
-    p = end;
-  }
-  return true;
+  return nv::text::ReadLine(line.data(), line.size(), values, fields);
 }
 
 /// "C 0.1 2.3 4.5": an element symbol, then x y z, as in molecular XYZ files
@@ -59,8 +48,8 @@ bool LooksLikeAtom(const std::string& line)
     ++letters;
   }
   std::vector<double> values;
-  return letters >= 1 && letters <= 3 && at < line.size() && ParseLine(line.substr(at), values) &&
-    values.size() >= 3;
+  return letters >= 1 && letters <= 3 && at < line.size() &&
+    KindOf(line.substr(at), values) == LineKind::Point;
 }
 
 /// True if a line holds bytes that no text has (NUL and other control
@@ -98,12 +87,6 @@ std::string Quoted(const std::string& line)
     c = byte < 32 || byte > 126 ? '?' : c;
   }
   return "\"" + shown + (line.size() > 60 ? "...\"" : "\"");
-}
-
-bool IsComment(const std::string& line)
-{
-  const auto first = line.find_first_not_of(" \t\r");
-  return first == std::string::npos || line[first] == '#' || line.compare(first, 2, "//") == 0;
 }
 
 bool LooksLikeColour(const double* v)
@@ -195,22 +178,28 @@ int vtkPointCloudTextReader::CanReadFile(const char* fileName)
   in.seekg(0);
   std::string line;
   std::vector<double> values;
-  int checked = 0;
-  bool header = false;
-  while (checked < 1 && std::getline(in, line))
+  std::size_t fields = 0;
+  bool header = false, counted = false;
+  while (std::getline(in, line))
   {
-    if (IsComment(line))
+    const LineKind kind = KindOf(line, values, &fields);
+    if (kind == LineKind::Comment)
       continue;
-    if (checked == 0 && !header && !ParseLine(line, values))
+    if (kind == LineKind::Words && !header && !counted)
     {
       header = true; // column names
       continue;
     }
-    if (!ParseLine(line, values) || (values.size() < 3 && !(checked == 0 && values.size() == 1)))
-      return xyz ? 1 : 0;
-    ++checked;
+    if (kind == LineKind::Count && !counted && !header)
+    {
+      counted = true; // a .pts file's point count
+      continue;
+    }
+    // A point whose every field is a number: a table with a text column is
+    // left to ParaView's CSV reader (which a .xyz has not).
+    return (kind == LineKind::Point && fields == values.size()) || xyz ? 1 : 0;
   }
-  return checked > 0 || xyz ? 1 : 0;
+  return xyz ? 1 : 0;
 }
 
 int vtkPointCloudTextReader::RequestData(
@@ -225,85 +214,46 @@ int vtkPointCloudTextReader::RequestData(
   }
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
-  vtkNew<vtkFloatArray> intensity, normals;
-  vtkNew<vtkUnsignedCharArray> colors;
-  std::vector<vtkSmartPointer<vtkFloatArray>> others;
-  Layout layout;
-  std::size_t columns = 0;
+  // The rule of every route (nvTextCloud.h): x y z, then the numbers that
+  // follow; the columns every row has become arrays, the rest are dropped.
+  std::vector<double> v, firstRow;
+  std::vector<std::vector<float>> extra; // the further columns every row so far has
   std::string line;
-  std::vector<double> v;
   long lineNumber = 0;
-  bool first = true;
-  bool headerSkipped = false;
   while (std::getline(in, line))
   {
     ++lineNumber;
-    if (IsComment(line))
+    const LineKind kind = KindOf(line, v);
+    if (kind == LineKind::Comment)
       continue;
-    if (!ParseLine(line, v) && first && !headerSkipped)
+    if (kind != LineKind::Point)
     {
-      headerSkipped = true; // a header line of column names, as CSV files have
-      continue;
-    }
-    if (!ParseLine(line, v))
-    {
+      const bool atom = LooksLikeAtom(line);
+      if (firstRow.empty() && kind != LineKind::Short && !atom && !IsBinary(line))
+        continue; // before the first point: a header of column names, or a .pts file's point count
       if (IsBinary(line))
       {
         vtkErrorMacro(<< this->FileName << ", line " << lineNumber
                       << ": binary data, not text: a text point cloud holds lines of x y z numbers.");
         return nv::ReadFailed(output);
       }
-      vtkErrorMacro(<< this->FileName << ", line " << lineNumber << ": not a list of numbers: " << Quoted(line)
+      vtkErrorMacro(<< this->FileName << ", line " << lineNumber << ": not a point (x y z): " << Quoted(line)
                     << "."
-                    << (LooksLikeAtom(line)
-                           ? " This looks like a molecular XYZ file (an element, then x y z): open it with "
-                             "ParaView's XYZ Reader (File > Open, file type \"XMol Molecule Files\")."
-                           : ""));
+                    << (atom ? " This looks like a molecular XYZ file (an element, then x y z): open it with "
+                               "ParaView's XYZ Reader (File > Open, file type \"XMol Molecule Files\")."
+                             : ""));
       output->Initialize();
       return nv::ReadFailed(output);
     }
-    if (first && v.size() == 1)
+    if (firstRow.empty())
     {
-      continue; // the point count of a .pts file
+      firstRow = v;
+      extra.resize(v.size() - 3);
     }
-    if (first)
-    {
-      if (v.size() < 3)
-      {
-        vtkErrorMacro(<< this->FileName << ", line " << lineNumber << ": fewer than 3 coordinates.");
-        return nv::ReadFailed(output);
-      }
-      columns = v.size();
-      layout = LayoutFor(v);
-      intensity->SetName("Intensity");
-      normals->SetName("Normals");
-      normals->SetNumberOfComponents(3);
-      colors->SetName("Colors");
-      colors->SetNumberOfComponents(3);
-      for (int c : layout.Others)
-      {
-        auto array = vtkSmartPointer<vtkFloatArray>::New();
-        array->SetName(("Column" + std::to_string(c + 1)).c_str());
-        others.push_back(array);
-      }
-      first = false;
-    }
-    if (v.size() != columns)
-    {
-      vtkErrorMacro(<< this->FileName << ", line " << lineNumber << ": " << v.size() << " columns where the first point had "
-                    << columns << ".");
-      output->Initialize();
-      return nv::ReadFailed(output);
-    }
+    extra.resize(std::min(extra.size(), v.size() - 3)); // a row with fewer: those columns are dropped
     points->InsertNextPoint(v.data());
-    if (layout.IntensityColumn >= 0)
-      intensity->InsertNextValue(static_cast<float>(v[layout.IntensityColumn]));
-    if (layout.NormalColumn >= 0)
-      normals->InsertNextTuple(&v[layout.NormalColumn]);
-    if (layout.ColorColumn >= 0)
-      colors->InsertNextTuple(&v[layout.ColorColumn]);
-    for (std::size_t o = 0; o < others.size(); ++o)
-      others[o]->InsertNextValue(static_cast<float>(v[layout.Others[o]]));
+    for (std::size_t c = 0; c < extra.size(); ++c)
+      extra[c].push_back(static_cast<float>(v[3 + c]));
   }
 
   if (points->GetNumberOfPoints() == 0)
@@ -314,14 +264,42 @@ int vtkPointCloudTextReader::RequestData(
   }
   output->SetPoints(points);
   output->SetVerts(nv::VertexCells(points->GetNumberOfPoints()));
+  firstRow.resize(3 + extra.size());
+  const Layout layout = LayoutFor(firstRow);
+  const vtkIdType n = points->GetNumberOfPoints();
+  // The array of `components` columns from `column` on (3, 4, ...), named.
+  const auto columnsOf = [&](vtkDataArray* array, int column, int components, const char* name) {
+    array->SetName(name);
+    array->SetNumberOfComponents(components);
+    array->SetNumberOfTuples(n);
+    for (vtkIdType p = 0; p < n; ++p)
+      for (int c = 0; c < components; ++c)
+        array->SetComponent(p, c, extra[static_cast<std::size_t>(column - 3 + c)][static_cast<std::size_t>(p)]);
+  };
   if (layout.IntensityColumn >= 0)
+  {
+    vtkNew<vtkFloatArray> intensity;
+    columnsOf(intensity, layout.IntensityColumn, 1, "Intensity");
     output->GetPointData()->AddArray(intensity);
+  }
   if (layout.NormalColumn >= 0)
+  {
+    vtkNew<vtkFloatArray> normals;
+    columnsOf(normals, layout.NormalColumn, 3, "Normals");
     output->GetPointData()->SetNormals(normals);
+  }
   if (layout.ColorColumn >= 0)
+  {
+    vtkNew<vtkUnsignedCharArray> colors;
+    columnsOf(colors, layout.ColorColumn, 3, "Colors");
     output->GetPointData()->SetScalars(colors);
-  for (auto& array : others)
-    output->GetPointData()->AddArray(array);
+  }
+  for (int c : layout.Others)
+  {
+    vtkNew<vtkFloatArray> other;
+    columnsOf(other, c, 1, ("Column" + std::to_string(c + 1)).c_str());
+    output->GetPointData()->AddArray(other);
+  }
   return 1;
 }
 

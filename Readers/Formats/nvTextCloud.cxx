@@ -8,10 +8,12 @@
 
 namespace
 {
-/// Bytes that split fields: ASCII white space (Python's str.split), and commas.
+/// Bytes that split fields: ASCII white space (Python's str.split), commas
+/// and semicolons (a CSV of a locale whose decimal mark is the comma).
 bool IsSeparator(unsigned char c)
 {
-  return c == ' ' || c == '\t' || c == '\v' || c == '\f' || c == '\r' || (c >= 0x1c && c <= 0x1f) || c == ',';
+  return c == ' ' || c == '\t' || c == '\v' || c == '\f' || c == '\r' || (c >= 0x1c && c <= 0x1f) || c == ',' ||
+    c == ';';
 }
 
 /// The length of the line break at `at` (0 where there is none): \r\n, and
@@ -76,34 +78,6 @@ bool IsText(const char* text, std::size_t size)
   return true;
 }
 
-/// The fields of a line, at most `most` of them, and whether there are more.
-std::size_t Fields(const char* line, std::size_t size, std::string* fields, std::size_t most)
-{
-  std::size_t count = 0;
-  for (std::size_t at = 0; at < size;)
-  {
-    while (at < size && IsSeparator(static_cast<unsigned char>(line[at])))
-    {
-      ++at;
-    }
-    if (at == size)
-    {
-      break;
-    }
-    std::size_t end = at;
-    while (end < size && !IsSeparator(static_cast<unsigned char>(line[end])))
-    {
-      ++end;
-    }
-    if (count < most)
-    {
-      fields[count].assign(line + at, end - at);
-    }
-    ++count;
-    at = end;
-  }
-  return count;
-}
 } // namespace
 
 bool nv::text::ParseNumber(const std::string& field, double& value)
@@ -139,11 +113,70 @@ bool nv::text::ParseNumber(const std::string& field, double& value)
   return end == digits.c_str() + digits.size();
 }
 
+nv::text::LineKind nv::text::ReadLine(
+  const char* line, std::size_t size, std::vector<double>& values, std::size_t* fields)
+{
+  values.clear();
+  std::size_t at = 0;
+  std::size_t count = 0;
+  bool numbers = true; // the fields so far
+  std::string field;
+  while (at < size)
+  {
+    while (at < size && IsSeparator(static_cast<unsigned char>(line[at])))
+    {
+      ++at;
+    }
+    if (at == size)
+    {
+      break;
+    }
+    std::size_t end = at;
+    while (end < size && !IsSeparator(static_cast<unsigned char>(line[end])))
+    {
+      ++end;
+    }
+    field.assign(line + at, end - at);
+    at = end;
+    if (count == 0 && (field[0] == '#' || field.compare(0, 2, "//") == 0))
+    {
+      return LineKind::Comment;
+    }
+    ++count;
+    double value = 0.0;
+    if (numbers && ParseNumber(field, value))
+    {
+      values.push_back(value);
+    }
+    else
+    {
+      numbers = false;
+      if (count <= 3)
+      {
+        return LineKind::Words;
+      }
+    }
+  }
+  if (fields)
+  {
+    *fields = count;
+  }
+  if (count == 0)
+  {
+    return LineKind::Comment;
+  }
+  if (count >= 3)
+  {
+    return LineKind::Point;
+  }
+  return count == 1 ? LineKind::Count : LineKind::Short;
+}
+
 bool nv::text::ReadCloudPoints(const char* text, std::size_t size, std::vector<double>& xyz, CloudProblem& problem)
 {
   xyz.clear();
   std::size_t lineNumber = 0;
-  std::string fields[3];
+  std::vector<double> values;
   for (std::size_t start = 0; start < size;)
   {
     std::size_t end = start;
@@ -156,22 +189,16 @@ bool nv::text::ReadCloudPoints(const char* text, std::size_t size, std::vector<d
     const char* line = text + start;
     const std::size_t length = end - start;
     start = end + breakSize;
-    const std::size_t count = Fields(line, length, fields, 3);
-    if (count == 0 || fields[0][0] == '#' || fields[0].compare(0, 2, "//") == 0)
+    const LineKind kind = ReadLine(line, length, values);
+    if (kind == LineKind::Comment)
     {
       continue;
     }
-    double values[3];
-    bool numbers = true;
-    for (std::size_t f = 0; f < count && f < 3 && numbers; ++f)
+    if (kind == LineKind::Point)
     {
-      numbers = ParseNumber(fields[f], values[f]);
+      xyz.insert(xyz.end(), values.begin(), values.begin() + 3);
     }
-    if (count >= 3 && numbers)
-    {
-      xyz.insert(xyz.end(), values, values + 3);
-    }
-    else if (xyz.empty() && (!numbers || count == 1))
+    else if (xyz.empty() && kind != LineKind::Short)
     {
       continue; // a header line, or a .pts file's point count
     }

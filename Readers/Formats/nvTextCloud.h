@@ -1,21 +1,23 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
 // SPDX-License-Identifier: BSD-3-Clause
-// Plain-text point clouds (.xyz, .txt, .csv) as the pip package reads them:
-// x y z in the first three fields of a line (fields split at spaces, tabs
-// and commas), every other field ignored.
+// Plain-text point clouds (.xyz, .txt, .csv): the one rule of every route
+// (the pip package's command line, vtkPointCloudTextReader in ParaView, the
+// CMake build's package and C++), which the formats page states.
 //
+// - Fields split at white space, commas and semicolons.
 // - A line that is blank, or whose first field starts with # or //, is a
 //   comment.
+// - A point: x y z in the first three fields, all numbers. The numbers that
+//   follow, up to the first field that is not one, are the row's further
+//   columns (vtkPointCloudTextReader makes arrays of those every row has;
+//   the pip package reads the points only); a text column ends them.
 // - Before the first point, a line whose first three fields are not all
 //   numbers is a header line (column names), and a line of one number is a
 //   .pts file's point count: both are skipped.
-// - After the first point, such a line, and anywhere a line of two fields,
+// - After the first point, such a line, and anywhere a line of two numbers,
 //   is an error naming the line.
 // Numbers are decimal as Python's float() writes and reads them ("1.5e-3",
 // "nan", "inf"; digits grouped by "_").
-//
-// The CMake build's vtkPointCloudTextReader reads the same files with more
-// (the extra columns as arrays) and refuses rows of different lengths.
 #ifndef nvTextCloud_h
 #define nvTextCloud_h
 
@@ -38,6 +40,21 @@ struct CloudProblem
   /// The text holds bytes that text has not: a NUL, or bytes that are not UTF-8.
   bool Binary = false;
 };
+
+/// What a line of a text cloud is (the rule above).
+enum class LineKind
+{
+  Comment, ///< blank, or # or // first
+  Point,   ///< x y z, and maybe further numbers
+  Count,   ///< one number: a .pts file's point count
+  Short,   ///< two numbers: a point short of a coordinate
+  Words    ///< anything else: column names, an element and x y z
+};
+
+/// The kind of the `size` bytes at `line` (no line break); for a Point,
+/// `values` gets x y z and the numbers that follow them, up to the first
+/// field that is not a number, and `fields` (if given) its number of fields.
+LineKind ReadLine(const char* line, std::size_t size, std::vector<double>& values, std::size_t* fields = nullptr);
 
 /// The points (x y z, one after the other in `xyz`) of a text cloud's
 /// `size` bytes at `text`. Lines end at \n, \r\n, \r and the other breaks

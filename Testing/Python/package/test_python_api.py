@@ -724,7 +724,7 @@ def test_cli_text_layouts(tmp_path):
     from narrowvolume import _cli
     texts = ["1 2 3\n4 5 6\n", "x y z\n1,2,3\n4,5,6", "2\n1 2 3 0.5\n4 5 6 0.5\n",
              "1\t2\t3\r\n4\t5\t6\r\n\n", "1 2 3\n# a comment\n4 5 6\n", "1 2 3\n\n4 5 6 7\n",
-             "1 2 3 red\n4 5 6 blue\n"]
+             "1 2 3 red\n4 5 6 blue\n", "x;y;z;name\n1;2;3;a\n4;5;6;b\n", "1;2;3\n4;5;6\n"]
     for number, text in enumerate(texts):
         path = tmp_path / ("cloud%d.xyz" % number)
         path.write_text(text)

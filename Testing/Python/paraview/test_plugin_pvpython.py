@@ -173,7 +173,7 @@ def test_a_part_with_drain_hole_positions(pvs, sphere):
     assert "Printing (a part when Wall Thickness > 0)" in titles and "Grid (0 = automatic)" in titles, titles
 
 
-@pytest.mark.parametrize("text,says", [("", "the file is empty"), ("hello world\nfoo bar\n", "not a list of numbers"),
+@pytest.mark.parametrize("text,says", [("", "the file is empty"), ("hello world\nfoo bar\n", "no line of x y z numbers"),
                                        ("3\nwater\nO 0 0 0\nH 0.75 0.58 0\n", "molecular XYZ file")])
 def test_opening_a_text_xyz_that_is_no_cloud(pvs, tmp_path, text, says):
     """OpenDataFile on an empty, a worded or a molecular .xyz: the plugin's
@@ -195,3 +195,19 @@ def test_opening_a_text_xyz_that_is_no_cloud(pvs, tmp_path, text, says):
     reader.UpdatePipeline()
     assert any(says in t for t in texts), texts
     assert reader.GetDataInformation().GetNumberOfPoints() == 0
+
+
+def test_wall_thickness_slider_and_reset(pvs, sphere):
+    """The Wall Thickness slider reaches 5 % of the cloud's longest side
+    (past the how-to's 2 % of the diagonal on any cloud), and its reset
+    button gives 0, the shell, as the how-to says."""
+    f = pvs.NarrowVolumeReconstruction(Input=sphere, WallThickness=0.03)
+    prop = f.GetProperty("WallThickness").SMProperty
+    domain = prop.GetDomain("bounds")
+    domain.Update(None)
+    bounds = sphere.GetDataInformation().GetBounds()
+    longest = max(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4])
+    diagonal = (sum((bounds[2 * a + 1] - bounds[2 * a]) ** 2 for a in range(3))) ** 0.5
+    assert domain.GetMaximum(0) == pytest.approx(0.05 * longest) and domain.GetMaximum(0) > 0.02 * diagonal
+    prop.ResetToDomainDefaults()
+    assert f.WallThickness == 0.0

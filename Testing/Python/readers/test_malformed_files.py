@@ -53,7 +53,7 @@ MALFORMED = {
     "binary_noise.xyz": (b"x y z\n1 2 3\n" + NOISE, "binary"),
     "all_noise.xyz": (NOISE, "x y z"),
     "empty.xyz": (b"", "empty"),
-    "missing_z.xyz": ("1 2\n3 4\n", "fewer than 3"),
+    "missing_z.xyz": ("1 2\n3 4\n", "line 1: not a point (x y z)"),
     "huge_count.pcd": ("VERSION .7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 1000000000000\n"
                        "HEIGHT 1\nPOINTS 1000000000000\nDATA binary\n", "points"),
     "empty.pcd": (b"", ""),

@@ -101,8 +101,32 @@ def test_malformed_file(write):
 
 
 def test_ragged_columns(write):
-    _, cloud, errors = read(write("ragged.xyz", "0 0 0\n1 1 1 5\n"))
-    assert cloud.GetNumberOfPoints() == 0 and errors, "ragged columns: an error and an empty output"
+    # A column that not every row has is dropped (every route reads the
+    # points alike, nvTextCloud.h); the columns every row has stay arrays.
+    _, cloud, errors = read(write("ragged.xyz", "0 0 0 7\n1 1 1 8 5\n"))
+    assert cloud.GetNumberOfPoints() == 2 and not errors
+    assert list(vtk_to_numpy(cloud.GetPointData().GetArray("Intensity"))) == [7, 8]
+
+
+# The one rule of every route (nvTextCloud.h, the formats page): the texts
+# the pip package's test (test_python_api.test_cli_text_layouts) reads to
+# the same two points, and semicolons; and the lines it refuses.
+SAME_POINTS = ["1 2 3\n4 5 6\n", "x y z\n1,2,3\n4,5,6", "2\n1 2 3 0.5\n4 5 6 0.5\n",
+               "1\t2\t3\r\n4\t5\t6\r\n\n", "1 2 3\n# a comment\n4 5 6\n", "1 2 3\n\n4 5 6 7\n",
+               "1 2 3 red\n4 5 6 blue\n", "x;y;z;name\n1;2;3;a\n4;5;6;b\n", "1;2;3\n4;5;6\n"]
+
+
+@pytest.mark.parametrize("number", range(len(SAME_POINTS)))
+def test_the_rule_of_every_route(write, number):
+    _, cloud, errors = read(write("rule%d.csv" % number, SAME_POINTS[number]))
+    assert not errors and np.array_equal(nvtesting.points_of(cloud), [[1, 2, 3], [4, 5, 6]]), errors
+
+
+@pytest.mark.parametrize("text,line", [("1 2 3\n4 5 six\n", 2), ("1 2\n1 2 3\n", 1), ("1 2 3\n4 5\n", 2)])
+def test_lines_that_are_no_point(write, text, line):
+    _, cloud, errors = nvpointfiles.read(vtkPointCloudTextReader, write("bad.xyz", text))
+    assert cloud.GetNumberOfPoints() == 0
+    assert any(", line %d: not a point (x y z)" % line in str(e) for e in errors), errors
 
 
 def test_molecular_xyz(write):
