@@ -378,7 +378,7 @@ std::vector<std::string> PartWarnings(const Settings& settings, const Reconstruc
     std::ostringstream text;
     text << "DrainHolePositions gives " << Plural(positions, "place", "places")
          << " for drain holes, but the part has no cavity: it is solid, and no hole was made.\n"
-         << "A part is hollow where the model is thicker than twice OffsetDistance and WallThickness; remove the "
+         << "A part is hollow where the model is thicker than twice WallThickness; remove the "
             "positions for a solid part.";
     warnings.push_back(text.str());
   }
@@ -400,16 +400,18 @@ std::vector<std::string> PartWarnings(const Settings& settings, const Reconstruc
     if (print.DrainPositionsAway > 0)
     {
       text << std::setprecision(4) << ": " << Plural(print.DrainPositionsAway, "position lies", "positions lie")
-           << " farther than twice OffsetDistance and WallThickness from every cavity (the first at "
+           << " farther than 2 (OffsetDistance + WallThickness) from every cavity (the first at "
            << Place(print.FirstPositionAway) << ")";
     }
     if (print.DrainHolesTooLong > 0)
     {
       text << (placed && print.DrainPositionsAway == 0 ? ": " : ", and ")
-           << Plural(print.DrainHolesTooLong, "place was", "places were")
-           << " passed over where the shortest way out within DrainHoleAngle (" << settings.DrainHoleAngle
-           << " degrees) of DrainHoleAxis runs longer than twice OffsetDistance and WallThickness through the "
-              "part (down a limb, or through a wall at a slant)";
+           << Plural(print.DrainHolesTooLong, "place was", "places were") << " passed over where the hole's way ("
+           << (placed ? "from the cavity through its position, or from a position in a cavity the shortest "
+                      : "the shortest ")
+           << "within DrainHoleAngle (" << settings.DrainHoleAngle
+           << " degrees) of DrainHoleAxis) runs through more than 2 (OffsetDistance + WallThickness) of the "
+              "part (down or along a limb, or through a wall at a slant)";
     }
     if (placed)
     {
