@@ -36,6 +36,10 @@ CASES = {
                         "MaximumNumberOfIterations": 5},
     "keep-pieces": {"MaximumDimension": 80, "OffsetDistance": 0.12, "RemoveSmallPieces": False},
     "inner-sheet-volume-off": {"SampleSpacing": 0.03, "OffsetDistance": 0.12, "Sheets": 2, "OutputVolume": False},
+    # A part to print with a drain hole placed on the sphere's +x side, one
+    # leaning within DrainHoleAngle: the printing mode's route through the wheel.
+    "part": {"SampleSpacing": 0.03, "OffsetDistance": 0.09, "WallThickness": 0.09, "CavityClosingDistance": 0.05,
+             "DrainHoleAngle": 45.0, "DrainHolePositions": [(2.9, 0.0, 0.0), (2.5, 0.0, 0.0)]},
 }
 
 
@@ -69,7 +73,11 @@ def run_case(cls, cloud, properties):
     f = cls()
     f.SetInputData(cloud)
     for key, value in properties.items():
-        getattr(f, "Set" + key)(value)
+        if hasattr(f, "RemoveAll" + key):  # a list property: its points
+            for point in value:
+                getattr(f, "Add" + key[:-1])(*point)
+        else:
+            getattr(f, "Set" + key)(value)
     f.Update()
     volume, surface = f.GetOutputDataObject(0), f.GetOutputDataObject(1)
     out = {"extent": np.array(volume.GetExtent()), "origin": np.array(volume.GetOrigin()),
