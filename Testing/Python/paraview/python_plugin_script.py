@@ -217,6 +217,17 @@ def record_all():
     result["abort"] = {"volume points": int(aborted["phi"].size), "surface points": len(aborted["points"]),
                        "after": len(outputs(shell)["points"])}
 
+    # A part with a drain hole placed (a list property: SetNumberOf... and
+    # Set...(i, x, y, z) on the algorithm, the Python one's too).
+    ball = pvs.Sphere(Radius=0.5, ThetaResolution=60, PhiResolution=60)
+    part = pvs.NarrowVolumeReconstruction(Input=ball, OffsetDistance=0.08, SampleSpacing=0.02, WallThickness=0.05,
+                                          DrainHolePositions=[0.5, 0.0, 0.0])
+    part.UpdatePipeline()
+    field = servermanager.Fetch(part, idx=0).GetFieldData()
+    result["part"] = {name: field.GetArray(name).GetValue(0) for name in ("DrainHoles", "KeptCavities")}
+    result["part"]["positions"] = list(part.DrainHolePositions)
+    pvs.Delete(part)
+
     # A cloud with a NaN coordinate: the filter's error, and empty outputs.
     errors = []
 

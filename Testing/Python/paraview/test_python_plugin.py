@@ -151,6 +151,15 @@ def test_progress_abort_and_errors(records):
     assert python["bad input"]["surface points"] == 0
 
 
+def test_a_part_with_placed_drain_holes(records):
+    """DrainHolePositions, a list property, set in pvpython on both plugins
+    (ParaView sets it point by point on the algorithm, the Python one's
+    too): the same part, with the hole made."""
+    (compiled, _), (python, _) = records
+    assert compiled["part"] == {"DrainHoles": 1.0, "KeptCavities": 1.0, "positions": [0.5, 0.0, 0.0]}
+    assert python["part"] == compiled["part"]
+
+
 def test_framing_alike(records):
     """The client's behaviours (NarrowVolumeClientBehaviors.cxx and
     _paraview_client.py) in pvpython: a cloud of points far from the origin,
