@@ -110,6 +110,7 @@ def _signatures(declaration):
         return [], None  # vtkTypeMacro and the like: no method of this class's own
     declaration = re.sub(r"\s*\{.*\}\s*$", "", declaration)  # an inline body
     declaration = declaration.rstrip(";").strip()
+    declaration = re.sub(r"\s*VTK_SIZEHINT\([^)]*\)", "", declaration)  # VTK's wrapping hint, not C++
     return [declaration], None
 
 
