@@ -13,10 +13,21 @@
 # device back end (nvcc, the CUDA runtime and CCCL 13 from PyPI, no GPU
 # needed) and runs its test; NV_SKIP_CUDA=1 skips it.
 #
+# `./scripts/test.sh --quick`: the quick check after a change, in minutes:
+# the build, then only the tests labelled "quick" (the core, the filter, the
+# readers, the property table, the messages, one pip-free Python run); no
+# docs, CUDA or sanitizer builds. The full script is what the README names
+# and CI runs.
+#
 # Every stage runs even when an earlier one failed (a stage that needs a
 # failed one is reported as not run), a summary of the stages is printed at
 # the end, and the script fails if any stage failed.
 set -uo pipefail
+if [ "${1:-}" = "--quick" ]; then
+  shift
+  set -- -L quick "$@"
+  export NV_SKIP_DOCS=1 NV_SKIP_CUDA=1 NV_SKIP_SANITIZE=1
+fi
 source_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build_dir="${BUILD_DIR:-$source_dir/build}"
 sanitize_dir="${build_dir}-sanitize"
@@ -46,7 +57,18 @@ skipped() {
   failed=1
 }
 
-run_ctest() { (cd "$1" && shift && ctest --output-on-failure --parallel "$(nproc)" "$@"); }
+# run_ctest DIR [ARGS...]: ctest in DIR, its times into DIR/Testing/times.xml (JUnit),
+# which the last stage reads (scripts/test-times.py).
+run_ctest() {
+  (cd "$1" && shift && ctest --output-on-failure --parallel "$(nproc)" --output-junit Testing/times.xml "$@")
+}
+# The seconds of every test of the builds that ran, slowest first, in
+# build/test-times.md, and each against its labels' budget (Testing/budgets.json).
+times=()
+test_times() {
+  /usr/bin/python3 "$source_dir/scripts/test-times.py" --out "$build_dir/test-times.md" \
+    --budgets "$source_dir/Testing/budgets.json" "${times[@]}"
+}
 
 build_sanitize() {
   if [ ! -f "$sanitize_dir/CMakeCache.txt" ]; then
@@ -101,6 +123,7 @@ build_tsan() {
 if stage "install packages" "$source_dir/scripts/install-deps.sh"; then
   if stage "build" "$source_dir/scripts/build.sh"; then
     stage "ctest (build/)" run_ctest "$build_dir" "$@"
+    times+=("build=$build_dir=$build_dir/Testing/times.xml")
     if [ "${NV_SKIP_DOCS:-0}" != "1" ]; then
       stage "docs (scripts/docs.sh)" env BUILD_DIR="$build_dir" "$source_dir/scripts/docs.sh" --clean
     fi
@@ -111,6 +134,7 @@ if stage "install packages" "$source_dir/scripts/install-deps.sh"; then
   if [ "${NV_SKIP_CUDA:-0}" != "1" ]; then
     if stage "CUDA build (core, nvcc 13 from PyPI)" build_cuda; then
       stage "ctest (CUDA build: TestCoreDevice)" cuda_ctest
+      times+=("cuda=$cuda_dir=$cuda_dir/Testing/times.xml")
     else
       skipped "ctest (CUDA build: TestCoreDevice)" "the CUDA build failed"
     fi
@@ -118,14 +142,19 @@ if stage "install packages" "$source_dir/scripts/install-deps.sh"; then
   if [ "${NV_SKIP_SANITIZE:-0}" != "1" ]; then
     if stage "sanitizer build" build_sanitize; then
       stage "ctest (sanitizers and fuzzer)" sanitize_ctest
+      times+=("sanitize=$sanitize_dir=$sanitize_dir/Testing/times.xml")
     else
       skipped "ctest (sanitizers and fuzzer)" "the sanitizer build failed"
     fi
     if stage "ThreadSanitizer build (the core alone)" build_tsan; then
       stage "ctest (ThreadSanitizer)" run_ctest "$tsan_dir"
+      times+=("tsan=$tsan_dir=$tsan_dir/Testing/times.xml")
     else
       skipped "ctest (ThreadSanitizer)" "the ThreadSanitizer build failed"
     fi
+  fi
+  if [ ${#times[@]} -gt 0 ]; then
+    stage "test times within their budgets (build/test-times.md)" test_times
   fi
 else
   skipped "build and tests" "packages missing"
