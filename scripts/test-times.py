@@ -11,9 +11,10 @@ Each NAME=BUILD_DIR=JUNIT_XML is one ctest run: its build's name in the
 table, its build folder (where `ctest --show-only=json-v1` gives each
 test's labels) and the JUnit file its `ctest --output-junit` wrote (ctest's
 own time for each test). A test's budget is the largest budget of its
-labels (Testing/budgets.json; "other" for a test with none of them); a
-test that ran longer than 1.5 times its budget is named with its time, and
-the script exits 1. The table also sums each label's seconds.
+labels in its build (Testing/budgets.json: {build: {label: seconds}};
+"other" for a test with none of them); a test that ran longer than 1.5
+times its budget is named with its time, and the script exits 1. The table
+also sums each label's seconds.
 """
 import argparse
 import json
@@ -59,6 +60,9 @@ def main():
     args = parser.parse_args()
     with open(args.budgets) as f:
         budgets = {k: v for k, v in json.load(f).items() if not k.startswith("_")}
+    for run in args.runs:
+        if run.split("=", 1)[0] not in budgets:
+            sys.exit("test-times: no budgets for the build %r in %s" % (run.split("=", 1)[0], args.budgets))
     rows = []
     for run in args.runs:
         name, build_dir, junit = run.split("=", 2)
@@ -68,13 +72,14 @@ def main():
         labels = labels_of(build_dir)
         for test, seconds, status in times_of(junit):
             own = labels.get(test, [])
-            budget = max([budgets[label] for label in own if label in budgets] or [budgets["other"]])
+            mine = budgets[name]
+            budget = max([mine[label] for label in own if label in mine] or [mine["other"]])
             rows.append((seconds, name, test, own, budget, status))
     rows.sort(key=lambda row: -row[0])
     over = [row for row in rows if row[5] == "passed" and row[0] > OVER * row[4]]
     lines = ["# Test times", "",
              "ctest's seconds for each test of the last `scripts/test.sh` (written by `scripts/test-times.py`), "
-             "slowest first. A test may take up to %.1f times the budget of its labels "
+             "slowest first. A test may take up to %.1f times the budget of its labels in its build "
              "(`Testing/budgets.json`, the largest of its labels')." % OVER, "",
              "| seconds | build | test | labels | budget | |", "|---|---|---|---|---|---|"]
     for seconds, name, test, own, budget, status in rows:
