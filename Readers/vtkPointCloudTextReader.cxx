@@ -228,10 +228,10 @@ int vtkPointCloudTextReader::RequestData(
       continue;
     if (kind != LineKind::Point)
     {
-      const bool atom = LooksLikeAtom(line);
-      if (firstRow.empty() && kind != LineKind::Short && !atom && !IsBinary(line))
+      const bool atom = LooksLikeAtom(line), binary = IsBinary(line);
+      if (firstRow.empty() && kind != LineKind::Short && !atom && !binary)
         continue; // before the first point: a header of column names, or a .pts file's point count
-      if (IsBinary(line))
+      if (binary)
       {
         vtkErrorMacro(<< this->FileName << ", line " << lineNumber
                       << ": binary data, not text: a text point cloud holds lines of x y z numbers.");

@@ -734,11 +734,12 @@ bool Reconstruction::BuildBand(std::vector<double> xyz)
   {
     // The points sorted into bricks, for the band only: gone once it is built.
     const auto sorting = StageTimes::Clock::now();
-    const TruncatedDistance distance(
-      grid, xyz.data(), static_cast<std::int64_t>(xyz.size() / 3), reach, this->Comm ? nullptr : this->TheMonitor);
+    // Stoppable in the sort only when serial: one process alone cannot stop a distributed run.
+    Monitor* stoppable = this->Comm ? nullptr : this->TheMonitor;
+    const TruncatedDistance distance(grid, xyz.data(), static_cast<std::int64_t>(xyz.size() / 3), reach, stoppable);
     std::vector<double>().swap(xyz);
     this->Stages.Add("distance", sorting);
-    if (!StopAsked(this->Comm ? nullptr : this->TheMonitor))
+    if (!StopAsked(stoppable))
     {
       this->Band =
         BuildNarrowBand(distance, this->ThePlan.Scheme, this->TheMonitor, &this->Part, writeBrick, &this->Stages);
