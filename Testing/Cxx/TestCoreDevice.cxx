@@ -444,9 +444,11 @@ void TestDistance()
 {
   const double center[3] = { 0.3, -0.1, 0.2 };
   nv::Parameters p;
-  p.OffsetDistance = 0.1;
-  p.Spacing = 0.01; // the Table 1 sphere at h = 0.01: bricks deep inside the shell are covered
-  CompareDistance("sphere (Table 1, h = 0.01)", nvtest::SpherePoints(30000, 0.5, center), p, true);
+  // A shell 2 l = 20 cells thick, as the Table 1 sphere's at h = 0.01 (l = 0.1),
+  // on an eighth of its nodes: bricks deep inside the shell are covered.
+  p.OffsetDistance = 0.2;
+  p.Spacing = 0.02;
+  CompareDistance("sphere (l = 10 h)", nvtest::SpherePoints(8000, 0.5, center), p, true);
   p.OffsetDistance = 0.08;
   p.Spacing = 0.02;
   CompareDistance("torus", TorusPoints(20000, 0.6, 0.25), p, false); // no brick inside the thin tube's shell
@@ -576,10 +578,10 @@ void TestRuns()
 {
   nv::Settings settings;
   settings.OffsetDistance = 0.1;
-  settings.SampleSpacing = 0.01; // the Table 1 sphere at h = 0.01
+  settings.SampleSpacing = 0.02;
   settings.OutputVolume = false;
   const double center[3] = { 0.0, 0.0, 0.0 };
-  CompareRuns("sphere (Table 1, h = 0.01)", nvtest::SpherePoints(30000, 0.5, center), settings);
+  CompareRuns("sphere (l = 5 h)", nvtest::SpherePoints(8000, 0.5, center), settings);
   settings.OffsetDistance = 0.08;
   settings.SampleSpacing = 0.02;
   CompareRuns("torus", TorusPoints(20000, 0.6, 0.25), settings);

@@ -98,7 +98,7 @@ def test(name, cache, work, reference, requirements):
     for variable in ("PYTHONPATH", "NV_PYTHON", "PYTHONHOME"):
         environment.pop(variable, None)
     # From the environment's folder, so that the tree's Filters/Python is not on the path.
-    step("pytest", [python, "-m", "pytest", "-p", "no:cacheprovider", "-rs", "-v",
+    step("pytest", [python, "-m", "pytest", "-p", "no:cacheprovider", "-rs", "-v", "--durations=8",
                     os.path.join(HERE, "test_python_api.py")], env=environment, cwd=os.path.join(work, name))
 
 
