@@ -48,8 +48,12 @@ def run(xyz_or_cloud, **settings):
 
 def hollow(cloud, **settings):
     """Inner over outer sheet's enclosed volume (0: no cavity), and the outer volume."""
-    outer = nvtesting.volume_of(run(cloud, Sheets=1, **settings)[0].GetOutput(1))
-    inner = -nvtesting.volume_of(run(cloud, Sheets=2, **settings)[0].GetOutput(1))
+    return hollow_of(run(cloud, **settings)[0].GetOutput(1))
+
+
+def hollow_of(surface):
+    """hollow() of a run's surface with both sheets."""
+    outer, inner = nvtesting.sheet_volumes(surface)
     return (inner / outer if outer > 0 else 0.0), outer
 
 
@@ -271,7 +275,7 @@ def scans_table(require_scans, scans_dir):
         f_off, figures_off, _ = run(cloud, OutputVolume=False, CloseGaps=False)
         after = before = float("nan")
         if name in CLOSED_STATUES:
-            after, before = hollow(cloud)[0], hollow(cloud, CloseGaps=False)[0]
+            after, before = hollow_of(f.GetOutput(1))[0], hollow_of(f_off.GetOutput(1))[0]
         open_edges = nvtesting.merged_surface(f.GetOutput(1))[1]
         print("%-24s %8d %9.4g %8.2f %8d | %8.2f %8d %6d %5s" % (
             name, cloud.GetNumberOfPoints(), figures["OffsetDistance"][0], before, figures_off["NumberOfGaps"][0],

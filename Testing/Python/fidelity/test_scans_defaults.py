@@ -98,9 +98,8 @@ def table(require_scans, scans_dir):
         l, median = figures["OffsetDistance"][0], figures["MedianPointSpacing"][0]
         hollow = float("nan")
         if name in STATUES:
-            outer = nvtesting.volume_of(run(cloud, Sheets=1)[0].GetOutput(1))
-            inner = nvtesting.volume_of(run(cloud, Sheets=2)[0].GetOutput(1))
-            hollow = -inner / outer  # the inner sheet faces the cavity: negative volume
+            outer, cavities = nvtesting.sheet_volumes(surface)  # the run's both sheets
+            hollow = cavities / outer
         dims = f.GetOutput(0).GetDimensions()
         print("%-24s %8d %10.4g %10.4g %6.2f %9s %7s %7.4f %5d %6.2f %8.2f" % (
             name, cloud.GetNumberOfPoints(), median, l, l / median, "x".join(map(str, dims)),
