@@ -33,14 +33,9 @@ def volume_of(surface):
     return float(np.einsum("ij,ij->i", a, np.cross(b, c)).sum() / 6.0)
 
 
-def sheet_volumes(surface):
-    """(the volume the outer sheets enclose, the volume of the cavities the
-    inner sheets enclose) of a shell's both sheets, from one surface: each
-    connected piece's signed volume, an outer sheet's positive, an inner
-    sheet's negative (it faces its cavity). The same as the volumes of the
-    runs with Sheets 1 and 2, to the rounding of the sums."""
-    if surface.GetNumberOfPolys() == 0:
-        return 0.0, 0.0
+def regions_of(surface):
+    """The surface's connected pieces: (each point's piece, the points, the
+    triangles as rows of point indices), by vtkPolyDataConnectivityFilter."""
     connectivity = vtkPolyDataConnectivityFilter()
     connectivity.SetInputData(surface)
     connectivity.SetExtractionModeToAllRegions()
@@ -50,6 +45,18 @@ def sheet_volumes(surface):
     region = vtk_to_numpy(pieces.GetPointData().GetArray("RegionId"))
     xyz = vtk_to_numpy(pieces.GetPoints().GetData()).astype(float)
     triangles = vtk_to_numpy(pieces.GetPolys().GetConnectivityArray()).reshape(-1, 3)
+    return region, xyz, triangles
+
+
+def sheet_volumes(surface):
+    """(the volume the outer sheets enclose, the volume of the cavities the
+    inner sheets enclose) of a shell's both sheets, from one surface: each
+    connected piece's signed volume, an outer sheet's positive, an inner
+    sheet's negative (it faces its cavity). The same as the volumes of the
+    runs with Sheets 1 and 2, to the rounding of the sums."""
+    if surface.GetNumberOfPolys() == 0:
+        return 0.0, 0.0
+    region, xyz, triangles = regions_of(surface)
     a, b, c = xyz[triangles[:, 0]], xyz[triangles[:, 1]], xyz[triangles[:, 2]]
     volumes = np.bincount(region[triangles[:, 0]], weights=np.einsum("ij,ij->i", a, np.cross(b, c)) / 6.0)
     return float(volumes[volumes > 0].sum()), float(-volumes[volumes < 0].sum())

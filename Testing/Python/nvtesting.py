@@ -16,7 +16,7 @@ import tempfile
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
 from nvmeasures import (boundary_edges, cut_edge_shift, euler_characteristic, face_normal_roughness,  # noqa: F401
-                        merged_surface, points_of, regions, sheet_volumes, volume_of)
+                        merged_surface, points_of, regions, regions_of, sheet_volumes, volume_of)
 
 
 def python_command():

@@ -38,7 +38,6 @@ import nvtesting
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkCommonCore import reference, vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkGenericCell, vtkPolyData, vtkStaticCellLocator
-from vtkmodules.vtkFiltersCore import vtkPolyDataConnectivityFilter
 
 rng = np.random.default_rng(39)
 
@@ -135,17 +134,8 @@ def surface_of(points, triangles):
 
 
 def regions_of(surface):
-    """The part's connected surfaces: [(points, triangles)], by region."""
-    connect = vtkPolyDataConnectivityFilter()
-    connect.SetInputData(surface)
-    connect.SetExtractionModeToAllRegions()
-    connect.ColorRegionsOn()
-    connect.Update()
-    out = connect.GetOutput()
-    ids = vtk_to_numpy(out.GetPointData().GetArray("RegionId"))
-    points = vtk_to_numpy(out.GetPoints().GetData()).astype(float)
-    triangles = vtk_to_numpy(out.GetPolys().GetConnectivityArray()).reshape(-1, 3)
-    return ids, points, triangles
+    """The part's connected surfaces: (each point's region, points, triangles)."""
+    return nvtesting.regions_of(surface)
 
 
 def test_uneven_cube_wall():
