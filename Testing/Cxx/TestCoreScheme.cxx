@@ -4,6 +4,7 @@
 // the exact solution of its linear system, and the reaction step (12) against
 // its fixed points and a fine numerical integration of (9).
 #include "nvAllenCahnSolver.h"
+#include "nvSchemeTerms.h"
 #include "nvNarrowBand.h"
 #include "nvParameters.h"
 #include "nvTestUtilities.h"
@@ -83,12 +84,12 @@ void TestReactionClosedForm()
   // Fixed points of F'(phi) = phi^3 - phi: -1, 0, 1.
   for (double decay : { 0.0, 0.3, 1.0 })
   {
-    NV_CHECK_NEAR(nv::AllenCahnSolver::React(1.0, decay), 1.0, 1e-15);
-    NV_CHECK_NEAR(nv::AllenCahnSolver::React(-1.0, decay), -1.0, 1e-15);
-    NV_CHECK_NEAR(nv::AllenCahnSolver::React(0.0, decay), 0.0, 0.0);
+    NV_CHECK_NEAR(nv::ReactionStep(1.0, decay), 1.0, 1e-15);
+    NV_CHECK_NEAR(nv::ReactionStep(-1.0, decay), -1.0, 1e-15);
+    NV_CHECK_NEAR(nv::ReactionStep(0.0, decay), 0.0, 0.0);
   }
   // g = 0 (decay = 1): no change.
-  NV_CHECK_NEAR(nv::AllenCahnSolver::React(0.37, 1.0), 0.37, 1e-15);
+  NV_CHECK_NEAR(nv::ReactionStep(0.37, 1.0), 0.37, 1e-15);
 
   // (9): dphi/dt = -g (phi^3 - phi) / eps^2, integrated by RK4 with small steps,
   // must match (12) with decay = exp(-2 g dt / eps^2).
@@ -105,16 +106,16 @@ void TestReactionClosedForm()
                    k4 = rate(phi + tau * k3);
       phi += tau * (k1 + 2 * k2 + 2 * k3 + k4) / 6;
     }
-    NV_CHECK_NEAR(nv::AllenCahnSolver::React(phi0, std::exp(-2 * g * dt / (eps * eps))), phi, 1e-12);
+    NV_CHECK_NEAR(nv::ReactionStep(phi0, std::exp(-2 * g * dt / (eps * eps))), phi, 1e-12);
   }
 }
 
 void TestEdgeStopping()
 {
-  NV_CHECK_NEAR(nv::AllenCahnSolver::EdgeStop(0.5, nv::EdgeStopping::Eq4), 0.25, 0.0);
-  NV_CHECK_NEAR(nv::AllenCahnSolver::EdgeStop(-0.2, nv::EdgeStopping::Eq4), 0.16, 1e-16);
-  NV_CHECK_NEAR(nv::AllenCahnSolver::EdgeStop(-0.2, nv::EdgeStopping::Eq3), 0.96, 1e-16);
-  NV_CHECK_NEAR(nv::AllenCahnSolver::EdgeStop(0.0, nv::EdgeStopping::Eq4), 0.0, 0.0);
+  NV_CHECK_NEAR(nv::EdgeStop(0.5, true), 0.25, 0.0);
+  NV_CHECK_NEAR(nv::EdgeStop(-0.2, true), 0.16, 1e-16);
+  NV_CHECK_NEAR(nv::EdgeStop(-0.2, false), 0.96, 1e-16);
+  NV_CHECK_NEAR(nv::EdgeStop(0.0, true), 0.0, 0.0);
 }
 
 void TestStepAndStoppingRule()

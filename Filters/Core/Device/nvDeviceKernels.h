@@ -13,9 +13,9 @@
 // both launchers (nvDeviceEvolution.cxx); a launcher only allocates, copies
 // and launches.
 //
-// The formulas are those of the CPU core's solver (nvAllenCahnSolver.cxx),
-// written the same way term for term, so that the host launcher gives the
-// CPU core's phi bit for bit (the DeviceBackEnd test checks it). On a GPU,
+// The formulas are the CPU core's solver's own: both call the scheme's terms
+// (Scheme/nvSchemeTerms.h), so that the host launcher gives the CPU core's
+// phi bit for bit (TestCoreDevice checks it). On a GPU,
 // nvcc contracts a * b + c into fused multiply-adds and the reductions sum
 // in another order: phi then differs in the last bits, not more.
 //
@@ -32,6 +32,7 @@
 
 #include "nvHostDevice.h"
 #include "nvPointSort.h"
+#include "nvSchemeTerms.h"
 
 #include <cmath>
 #include <cstdint>
@@ -91,28 +92,6 @@ struct EvolutionConstants
   bool EdgeStopEq4 = true;    ///< g of eq. (4), else of eq. (3)
 };
 
-/// phi0 = tanh((l - d) / (sqrt(2) xi)), eq. (2), as AllenCahnSolver::InitialPhi.
-NV_HD inline double InitialPhi(double distance, double offset, double xi)
-{
-  const double z = (offset - distance) / (::sqrt(2.0) * xi);
-  const double e = ::exp(-2.0 * ::fabs(z));
-  return ::copysign((1.0 - e) / (1.0 + e), z);
-}
-
-/// g of eq. (4) or eq. (3), as AllenCahnSolver::EdgeStop.
-NV_HD inline double EdgeStop(double phi0, bool eq4)
-{
-  const double a = ::fabs(phi0);
-  return eq4 ? (1.0 - a) * a : 1.0 - phi0 * phi0;
-}
-
-/// Eq. (12) over one step, as AllenCahnSolver::React.
-NV_HD inline double React(double phi, double decay)
-{
-  const double q = decay + phi * phi * (1.0 - decay);
-  return q > 0.0 ? phi / ::sqrt(q) : phi;
-}
-
 /// phi^0 of eq. (2) at node s (d = +inf gives -1).
 struct InitialPhiKernel
 {
@@ -129,10 +108,9 @@ struct CoefficientsKernel
   NV_HD void operator()(std::int64_t s) const
   {
     const double phi0 = A.Phi[s];
-    const double g = EdgeStop(phi0, C.EdgeStopEq4); // eq. (4) or (3)
-    const double c = C.TimeStep * g / (C.Spacing * C.Spacing);
-    A.Coupling[s] = c / (1.0 + 6.0 * c);
-    A.Decay[s] = static_cast<float>(::exp(-2.0 * g * C.TimeStep / (C.Epsilon * C.Epsilon)));
+    const double g = EdgeStop(phi0, C.EdgeStopEq4);             // eq. (4) or (3)
+    A.Coupling[s] = CouplingWeight(g, C.TimeStep, C.Spacing); // (10)-(11)
+    A.Decay[s] = ReactionDecay(g, C.TimeStep, C.Epsilon);     // (12)
     A.Previous[s] = phi0;
   }
 };
@@ -155,14 +133,7 @@ struct RelaxKernel
   double Omega = 1.0;
   NV_HD double operator()(std::int64_t s) const
   {
-    // (1 + 6 c) phi_s - c sum(neighbours) = phi^n_s, c = dt g_s / h^2, so
-    // phi_s = phi^n_s + w (sum - 6 phi^n_s) with w = c / (1 + 6 c).
-    const std::uint32_t* n = A.Neighbor + 6 * s;
-    const double* phi = A.Phi;
-    const double sum = phi[n[0]] + phi[n[1]] + phi[n[2]] + phi[n[3]] + phi[n[4]] + phi[n[5]];
-    const double rhs = A.Previous[s];
-    const double solved = rhs + A.Coupling[s] * (sum - 6.0 * rhs);
-    const double step = Omega * (solved - phi[s]);
+    const double step = RelaxationChange(A.Phi, A.Neighbor + 6 * s, s, A.Previous[s], A.Coupling[s], Omega);
     A.Phi[s] += step;
     return ::fabs(step);
   }
@@ -172,7 +143,7 @@ struct RelaxKernel
 struct ReactKernel
 {
   EvolutionArrays A;
-  NV_HD void operator()(std::int64_t s) const { A.Phi[s] = React(A.Phi[s], A.Decay[s]); }
+  NV_HD void operator()(std::int64_t s) const { A.Phi[s] = ReactionStep(A.Phi[s], A.Decay[s]); }
 };
 
 /// The terms of the stopping rule's norms (section 4) at node s.
@@ -181,7 +152,7 @@ struct ChangeSquaredKernel
   EvolutionArrays A;
   NV_HD double operator()(std::int64_t s) const
   {
-    return (A.Phi[s] - A.Previous[s]) * (A.Phi[s] - A.Previous[s]);
+    return SquaredChange(A.Phi[s], A.Previous[s]);
   }
 };
 struct NormSquaredKernel

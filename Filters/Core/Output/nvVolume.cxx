@@ -5,6 +5,7 @@
 #include "nvAllenCahnSolver.h"
 #include "nvNarrowBand.h"
 #include "nvParallel.h"
+#include "nvSchemeTerms.h"
 
 #include <algorithm>
 #include <cmath>
@@ -62,7 +63,7 @@ void VolumeWriter::WriteBrick(std::int64_t brick, const double distance[BrickNod
           continue; // beyond reach: as cleared
         }
         const std::int64_t node = grid.Index(corner[0] + i, corner[1] + j, corner[2] + k) - base;
-        const float phi0 = static_cast<float>(AllenCahnSolver::InitialPhi(d, offset, xi));
+        const float phi0 = static_cast<float>(InitialPhi(d, offset, xi));
         if (arrays.Phi)
           arrays.Phi[node] = phi0;
         if (arrays.InitialPhi)

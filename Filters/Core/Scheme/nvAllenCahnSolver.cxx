@@ -7,6 +7,7 @@
 #include "nvHalo.h"
 #include "nvNarrowBand.h"
 #include "nvParallel.h"
+#include "nvSchemeTerms.h"
 
 #include <algorithm>
 #include <cmath>
@@ -16,27 +17,6 @@ namespace nv
 namespace
 {
 constexpr std::int64_t Grain = 4096;
-/// Plain Gauss-Seidel sweeps before the over-relaxation factor is estimated
-/// (at the ninth, the ratio of successive changes has settled: estimated at
-/// the fifth, it comes out lower, and the sweeps of 7 cases add up to 15 %
-/// more).
-constexpr int EstimationSweeps = 8;
-}
-
-double AllenCahnSolver::InitialPhi(double distance, double offset, double xi)
-{
-  // tanh z = (1 - e^(-2|z|)) / (1 + e^(-2|z|)), signed as z: one exp, which
-  // costs a third of a tanh (the solver's start-up takes one per band node);
-  // within 1e-16 of tanh, and -1 at d = infinity.
-  const double z = (offset - distance) / (std::sqrt(2.0) * xi);
-  const double e = std::exp(-2.0 * std::fabs(z));
-  return std::copysign((1.0 - e) / (1.0 + e), z);
-}
-
-double AllenCahnSolver::EdgeStop(double phi0, EdgeStopping function)
-{
-  const double a = std::fabs(phi0);
-  return function == EdgeStopping::Eq4 ? (1.0 - a) * a : 1.0 - phi0 * phi0;
 }
 
 BandValues AllenCahnSolver::InitialField(const NarrowBand& band, const Parameters& parameters)
@@ -77,20 +57,15 @@ AllenCahnSolver::AllenCahnSolver(
   const double h = parameters.Spacing;
   const double dt = parameters.EffectiveTimeStep();
   const double eps = parameters.Epsilon();
-  const EdgeStopping function = parameters.EdgeStoppingFunction;
-  // Over-relaxation: a fixed factor if given, else estimated during the
-  // first sweeps (see Diffuse).
-  this->Omega = parameters.Relaxation > 0.0 ? parameters.Relaxation : 1.0;
-  this->EstimateOmega = !(parameters.Relaxation > 0.0);
+  const bool eq4 = parameters.EdgeStoppingFunction == EdgeStopping::Eq4;
 
   ParallelFor(0, size, Grain, [&](std::int64_t begin, std::int64_t end) {
     for (std::int64_t s = begin; s < end; ++s)
     {
       const double phi0 = this->Phi[s];
-      const double g = EdgeStop(phi0, function); // eq. (4) or (3)
-      const double c = dt * g / (h * h);
-      this->Coupling[s] = c / (1.0 + 6.0 * c);
-      this->Decay[s] = static_cast<float>(std::exp(-2.0 * g * dt / (eps * eps)));
+      const double g = EdgeStop(phi0, eq4); // eq. (4) or (3)
+      this->Coupling[s] = CouplingWeight(g, dt, h); // (10)-(11)
+      this->Decay[s] = ReactionDecay(g, dt, eps);   // (12)
       this->Previous[s] = phi0; // first touch here; each step sets it again
     }
   });
@@ -102,25 +77,18 @@ AllenCahnSolver::AllenCahnSolver(
 
 AllenCahnSolver::~AllenCahnSolver() = default;
 
-double AllenCahnSolver::HalfSweep(std::int64_t begin, std::int64_t end)
+double AllenCahnSolver::HalfSweep(std::int64_t begin, std::int64_t end, double omega)
 {
   double* phi = this->Phi.data();
   const double* previous = this->Previous.data();
   const double* coupling = this->Coupling.data();
   const std::uint32_t* neighbor = this->Band.Neighbor.data();
-  const double omega = this->Omega;
   return ParallelMax(end - begin, [&](std::int64_t first, std::int64_t last) {
     double change = 0.0;
     for (std::int64_t s = begin + first; s < begin + last; ++s)
     {
-      // (10)-(11) at node s with its neighbours held fixed:
-      // (1 + 6 c) phi_s - c sum(neighbours) = phi^n_s, c = dt g_s / h^2, so
-      // phi_s = phi^n_s + w (sum - 6 phi^n_s) with w = c / (1 + 6 c).
-      const std::uint32_t* n = neighbor + 6 * s;
-      const double sum = phi[n[0]] + phi[n[1]] + phi[n[2]] + phi[n[3]] + phi[n[4]] + phi[n[5]];
-      const double rhs = previous[s];
-      const double solved = rhs + coupling[s] * (sum - 6.0 * rhs);
-      const double step = omega * (solved - phi[s]);
+      // (10)-(11) at node s with its neighbours held fixed.
+      const double step = RelaxationChange(phi, neighbor + 6 * s, s, previous[s], coupling[s], omega);
       change = std::max(change, std::fabs(step));
       phi[s] += step;
     }
@@ -143,43 +111,23 @@ int AllenCahnSolver::Diffuse(double* lastChange)
   std::int64_t redBegin, redEnd, blackBegin, blackEnd;
   this->Band.OwnedNodes(true, redBegin, redEnd);
   this->Band.OwnedNodes(false, blackBegin, blackEnd);
-  int sweeps = 0;
   double change = 0.0;
-  double previousChange = 0.0;
-  do
-  {
-    const double red = this->HalfSweep(redBegin, redEnd);
-    if (this->Exchange)
-    {
-      this->Exchange->Exchange(this->Phi.data(), true);
-    }
-    const double black = this->HalfSweep(blackBegin, blackEnd);
-    if (this->Exchange)
-    {
-      this->Exchange->Exchange(this->Phi.data(), false);
-    }
-    change = std::max(red, black);
-    if (this->Exchange)
-    {
-      change = this->Exchange->GetCommunicator().MaxAll(change);
-    }
-    if (this->EstimateOmega && sweeps == EstimationSweeps && previousChange > 0.0)
-    {
-      // Plain Gauss-Seidel sweeps of a consistently ordered (red-black)
-      // system contract by rho^2, rho the spectral radius of the Jacobi
-      // iteration; the optimal over-relaxation is then 2 / (1 + sqrt(1 - rho^2)).
-      // rho depends on the band's thickness and on g across it, so it is
-      // measured here, once, from the ratio of two successive changes (the
-      // bound from the largest coupling, 6 c / (1 + 6 c), over-relaxes the
-      // thin band: 78 sweeps instead of 57 on the teacup's 7 steps). Every
-      // process and thread count sees the same changes, so the same factor.
-      const double contraction = std::min(change / previousChange, 0.99);
-      this->Omega = 2.0 / (1.0 + std::sqrt(1.0 - contraction));
-      this->EstimateOmega = false;
-    }
-    previousChange = change;
-    ++sweeps;
-  } while (change >= this->Params.GaussSeidelTolerance && sweeps < this->Params.MaximumNumberOfSweeps);
+  const int sweeps = SweepUntilSettled(
+    [&](double omega) {
+      const double red = this->HalfSweep(redBegin, redEnd, omega);
+      if (this->Exchange)
+      {
+        this->Exchange->Exchange(this->Phi.data(), true);
+      }
+      const double black = this->HalfSweep(blackBegin, blackEnd, omega);
+      if (this->Exchange)
+      {
+        this->Exchange->Exchange(this->Phi.data(), false);
+      }
+      const double both = std::max(red, black);
+      return this->Exchange ? this->Exchange->GetCommunicator().MaxAll(both) : both;
+    },
+    this->Params, this->Relaxation, change);
   if (lastChange)
   {
     *lastChange = change;
@@ -192,7 +140,7 @@ void AllenCahnSolver::React()
   ParallelFor(0, this->Band.Size(), Grain, [&](std::int64_t begin, std::int64_t end) {
     for (std::int64_t s = begin; s < end; ++s)
     {
-      this->Phi[s] = React(this->Phi[s], this->Decay[s]); // eq. (12)
+      this->Phi[s] = ReactionStep(this->Phi[s], this->Decay[s]); // eq. (12)
     }
   });
 }
@@ -243,48 +191,23 @@ StepReport AllenCahnSolver::Step(bool last)
   const double* phi = this->Phi.data();
   const double* previous = this->Previous.data();
   double norms[2] = {
-    this->OwnedSum([&](std::int64_t s) { return (phi[s] - previous[s]) * (phi[s] - previous[s]); }),
+    this->OwnedSum([&](std::int64_t s) { return SquaredChange(phi[s], previous[s]); }),
     this->OwnedSum([&](std::int64_t s) { return previous[s] * previous[s]; }) };
   if (this->Exchange)
   {
     this->Exchange->GetCommunicator().SumAll(norms, 2);
   }
-  const double change2 = norms[0], norm2 = norms[1];
-  report.RelativeChange = norm2 > 0.0 ? std::sqrt(change2 / norm2) : 0.0;
+  report.RelativeChange = RelativeChange(norms[0], norms[1]);
   return report;
 }
 
 std::vector<StepReport> AllenCahnSolver::Run(Monitor* monitor)
 {
-  std::vector<StepReport> reports;
-  const int steps = std::max(0, this->Params.MaximumNumberOfIterations);
-  for (int n = 0; n < steps; ++n)
-  {
-    if (monitor)
-    {
-      monitor->Progress(static_cast<double>(n) / steps);
-      bool stop = monitor->Aborted();
-      if (this->Exchange) // every process stops, or none
-      {
-        stop = this->Exchange->GetCommunicator().MaxAll(stop ? 1.0 : 0.0) > 0.0;
-      }
-      if (stop)
-      {
-        break;
-      }
-    }
-    reports.push_back(this->Step(n + 1 == steps));
-    if (this->Params.ConvergenceTolerance > 0.0 &&
-      reports.back().RelativeChange < this->Params.ConvergenceTolerance)
-    {
-      break;
-    }
-  }
-  if (monitor)
-  {
-    monitor->Progress(1.0);
-  }
-  return reports;
+  return RunTimeSteps(
+    this->Params, monitor, [&](bool last) { return this->Step(last); },
+    [&](bool stop) { // every process stops, or none
+      return this->Exchange ? this->Exchange->GetCommunicator().MaxAll(stop ? 1.0 : 0.0) > 0.0 : stop;
+    });
 }
 
 } // namespace nv

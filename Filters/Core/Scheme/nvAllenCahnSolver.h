@@ -9,6 +9,7 @@
 #include "nvMemory.h"
 #include "nvNarrowBand.h"
 #include "nvParameters.h"
+#include "nvTimeLoop.h"
 
 #include <cmath>
 #include <cstdint>
@@ -23,14 +24,6 @@ class Monitor;
 
 using SolverValues = UninitializedVector<double>;
 using SolverFloats = UninitializedVector<float>;
-
-/// What happened in one time step.
-struct StepReport
-{
-  int Sweeps = 0;              ///< Gauss-Seidel sweeps of the diffusion step
-  double SweepChange = 0.0;    ///< max |change| of the last sweep
-  double RelativeChange = 0.0; ///< ||phi^{n+1} - phi^n||_2 / ||phi^n||_2 (section 4)
-};
 
 class AllenCahnSolver
 {
@@ -53,18 +46,6 @@ public:
   /// phi^0 of eq. (2) at the band nodes and the Dirichlet values of eq. (5)
   /// in slots L and L + 1: the only use of the band's distances.
   static BandValues InitialField(const NarrowBand& band, const Parameters& parameters);
-
-  /// phi0 = tanh((l - d) / (sqrt(2) xi)), eq. (2).
-  static double InitialPhi(double distance, double offset, double xi);
-  /// g of eq. (4) or eq. (3) for a given phi0.
-  static double EdgeStop(double phi0, EdgeStopping function);
-  /// Closed-form solution of (9) over one step, eq. (12); decay = exp(-2 g dt / eps^2).
-  /// A decay that underflows to 0 (huge dt) sends phi to sign(phi), and 0 stays 0.
-  static double React(double phi, double decay)
-  {
-    const double q = decay + phi * phi * (1.0 - decay);
-    return q > 0.0 ? phi / std::sqrt(q) : phi;
-  }
 
   /// One time step: diffusion (10) then reaction (12). With PreserveOffset,
   /// the multiplier of the last step first, and a measurement after (unless
@@ -92,26 +73,22 @@ public:
   BandValues& GetPhi() { return this->Phi; }
 
 private:
-  /// One red or black half sweep over [begin, end); returns the max |change|.
-  double HalfSweep(std::int64_t begin, std::int64_t end);
+  /// One red or black half sweep over [begin, end), over-relaxed by omega;
+  /// returns the max |change|.
+  double HalfSweep(std::int64_t begin, std::int64_t end, double omega);
 
   /// Sum over the owned nodes of fn(s), over all processes in a distributed run.
   template <typename Fn>
   double OwnedSum(Fn&& fn);
 
-  double Omega = 1.0;         ///< over-relaxation factor of the sweeps
-  bool EstimateOmega = false; ///< measure Omega during the next sweeps (see Diffuse)
   const NarrowBand& Band;
   Halo* Exchange = nullptr;
   Parameters Params;
+  OverRelaxation Relaxation{ Params.Relaxation }; ///< the sweeps' factor, estimated once (nvTimeLoop.h)
   BandValues Phi;              ///< L + 2 values
   SolverValues Previous; ///< phi^n, the right-hand side of (10)
   SolverValues Coupling; ///< w_s = c_s / (1 + 6 c_s), c_s = dt g_s / h^2
-  /// exp(-2 g_s dt / eps^2) in single precision: read once a step by (12),
-  /// where its rounding (relative 6e-8) moves phi by at most 3e-8 a step,
-  /// less than the rounding of the volume output's float phi; 4 bytes a node
-  /// saved.
-  SolverFloats Decay;
+  SolverFloats Decay;    ///< exp(-2 g_s dt / eps^2), in float (ReactionDecay)
   std::unique_ptr<DriftCorrection> Correction; ///< with PreserveOffset only
 };
 
