@@ -248,9 +248,9 @@ struct VolumeBuffers
 class PythonRun
 {
 public:
-  PythonRun(const nv::Settings& settings, std::shared_ptr<PythonMonitor> monitor)
+  PythonRun(const nv::Settings& settings, std::shared_ptr<PythonMonitor> monitor, bool hostLauncher)
     : Watch(std::move(monitor))
-    , Run(settings, nullptr, this->Watch.get())
+    , Run(settings, nullptr, this->Watch.get(), hostLauncher ? nv::GpuKernels::OnHost : nv::GpuKernels::OnGpu)
   {
   }
 
@@ -366,8 +366,6 @@ NB_MODULE(_core, m)
   NV_SETTINGS(NV_BIND)
   // The list properties (_properties.py's LIST_PROPERTIES): x y z after one another.
   settings.def_rw("DrainHolePositions", &nv::Settings::DrainHolePositions);
-  // Not a property: for tests and benchmarks (nvSettings.h).
-  settings.def_rw("DeviceOnHost", &nv::Settings::DeviceOnHost);
 #undef NV_BIND
 
   nb::class_<nv::Grid>(m, "Grid", "The uniform grid: nodes Origin + (i, j, k) Spacing.")
@@ -544,7 +542,10 @@ NB_MODULE(_core, m)
       "[(name, 'int' | 'id' | 'double', components, values, component names)]: the volume's field data.");
 
   nb::class_<PythonRun>(m, "Reconstruction", "The whole run of the method (nv::Reconstruction), serial.")
-    .def(nb::init<const nv::Settings&, std::shared_ptr<PythonMonitor>>(), "settings"_a, "monitor"_a = nb::none())
+    .def(nb::init<const nv::Settings&, std::shared_ptr<PythonMonitor>, bool>(), "settings"_a,
+      "monitor"_a = nb::none(), "host_launcher"_a = false,
+      "host_launcher: Device GPU's kernels through the host launcher, on the host's threads (tests and "
+      "benchmarks of the device back end without a GPU).")
     .def("Reconstruct", &PythonRun::Reconstruct, "points"_a, "sampling"_a.none(), "sink"_a,
       "The run on the points ((n, 3) float64, C order) and its outputs (nv::Reconstruct), without the GIL: "
       "the surface into the sink, the dense arrays for TakeVolume; returns the Outcome. sampling: the "
@@ -559,12 +560,10 @@ NB_MODULE(_core, m)
     .def("RelativeChanges", [](const PythonRun& r) { return r.Run.RelativeChanges(); })
     .def("SetupSeconds", [](const PythonRun& r) { return r.Run.SetupSeconds(); })
     .def("EvolutionSeconds", [](const PythonRun& r) { return r.Run.EvolutionSeconds(); })
-    .def("DeviceUsed", [](const PythonRun& r) { return r.Run.DeviceUsed(); },
-      "\"CPU\", \"GPU\", or \"GPU on the host\" (Settings.DeviceOnHost): where the evolution ran.")
+    .def("DeviceUsed", [](const PythonRun& r) { return r.Run.DeviceName(); },
+      "\"CPU\", \"GPU\", or \"GPU on the host\" (host_launcher): where the run computed.")
     .def("DeviceBytes", [](const PythonRun& r) { return r.Run.DeviceBytes(); },
-      "The most bytes the GPU held at once (0 on the CPU).")
-    .def("SurfaceDeviceError", [](const PythonRun& r) { return r.Run.SurfaceDeviceError(); },
-      "With Device GPU: empty when the device made the surface, else why the CPU made it.");
+      "The most bytes the GPU held at once (0 on the CPU).");
 
   m.attr("SamplingStage") = nv::SamplingStage;
 }

@@ -61,9 +61,14 @@ def load_core():
 
 
 def set_device(core, settings, device):
-    """Settings.Device (and DeviceOnHost) for "cpu", "gpu" or "gpu-host"."""
+    """Settings.Device for "cpu", "gpu" or "gpu-host"."""
     settings.Device = core.ComputeDevice.CPU if device == "cpu" else core.ComputeDevice.GPU
-    settings.DeviceOnHost = device == "gpu-host"
+
+
+def reconstruction(core, settings, device):
+    """The run on `device` ("gpu-host": the GPU's kernels through the host launcher)."""
+    set_device(core, settings, device)
+    return core.Reconstruction(settings, host_launcher=device == "gpu-host")
 
 
 def stage_seconds(outcome):
@@ -94,8 +99,7 @@ def child(args):
     settings.OutputVolume = False
     settings.NumberOfThreads = args.threads
     settings.MemoryLimit = 0.0
-    set_device(core, settings, args.device)
-    run = core.Reconstruction(settings)
+    run = reconstruction(core, settings, args.device)
     sink = core.MeshSink()
     start = time.perf_counter()
     outcome = run.Reconstruct(xyz, None, sink)

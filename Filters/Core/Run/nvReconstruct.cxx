@@ -504,7 +504,7 @@ std::vector<SummaryArray> RunSummary(const Reconstruction& run, const RemovedPie
     { "RemovedPieces", SummaryArray::Double, 1, { static_cast<double>(removed.Pieces) } },
     { "RemovedVoids", SummaryArray::Double, 1, { static_cast<double>(removed.Voids) } },
     // The Device property's value that ran: 1 (CPU) or 2 (GPU, also its kernels on the host in tests).
-    { "DeviceUsed", SummaryArray::Int, 1, { run.DeviceUsed() == "CPU" ? 1.0 : 2.0 } },
+    { "DeviceUsed", SummaryArray::Int, 1, { static_cast<double>(run.DeviceUsed()) } },
     StageSeconds(run.GetStageTimes()),
   };
 }

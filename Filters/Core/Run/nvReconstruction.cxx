@@ -3,9 +3,6 @@
 #include "nvReconstruction.h"
 
 #include "nvCommunicator.h"
-#include "nvDeviceDistance.h"
-#include "nvDeviceEvolution.h"
-#include "nvDeviceSurface.h"
 #include "nvHoleProbe.h"
 #include "nvMemory.h"
 #include "nvParallel.h"
@@ -361,8 +358,10 @@ Plan MakePlan(const Settings& chosen, const double bounds[6], const SamplingStat
 }
 
 //------------------------------------------------------------------------------
-Reconstruction::Reconstruction(const Settings& settings, Communicator* communicator, Monitor* monitor)
+Reconstruction::Reconstruction(
+  const Settings& settings, Communicator* communicator, Monitor* monitor, GpuKernels kernels)
   : TheSettings(settings)
+  , Kernels(kernels)
   , Comm(communicator)
   , Caller(monitor)
   , RunStages(monitor ? new ShareMonitor(*monitor, 0.0, this->OutputBegin() / RunShare) : nullptr)
@@ -415,50 +414,47 @@ bool Reconstruction::RunSteps(std::vector<double> xyz, std::shared_ptr<const Sam
 {
   // Steps 1-6 of nvReconstruct.h's list, each false when the run stops.
   double bounds[6];
-  return this->ChooseDevice() && this->CheckPoints(xyz, bounds) && this->PlanGrid(xyz, bounds, std::move(measured)) &&
-    this->GatherPoints(xyz) && this->BuildBand(std::move(xyz)) && this->Evolve() &&
-    this->Stages.Time("hole probe", [&]() { return this->ProbeHoles(); });
-}
-
-bool Reconstruction::ChooseDevice()
-{
-  // 0. Where the evolution runs. Automatic is the CPU: the GPU launcher has
-  // not yet passed its tests on a GPU (scripts/test-gpu.sh).
-  if (this->TheSettings.Device != ComputeDevice::GPU)
-  {
-    this->Used = "CPU";
-    return true;
-  }
-  if (this->Comm)
-  {
-    return this->Fail("Device GPU runs on one process only: choose Device CPU (or Automatic) for a distributed "
-                      "(MPI) run.");
-  }
-  if (this->TheSettings.PreserveOffset)
-  {
-    return this->Fail("Device GPU has no PreserveOffset yet: turn PreserveOffset off, or choose Device CPU.");
-  }
-  if (this->TheSettings.DeviceOnHost)
-  {
-    this->Launcher = device::MakeHostLauncher();
-    this->Used = "GPU on the host";
-    return true;
-  }
-  std::string why;
   try
   {
-    this->Launcher = device::MakeCudaLauncher(why);
+    return this->ChooseEngine() && this->CheckPoints(xyz, bounds) &&
+      this->PlanGrid(xyz, bounds, std::move(measured)) && this->GatherPoints(xyz) &&
+      this->BuildBand(std::move(xyz)) && this->Evolve() &&
+      this->Stages.Time("hole probe", [&]() { return this->ProbeHoles(); });
   }
-  catch (const device::DeviceError& error)
+  catch (const EngineError& error) // the device failed (nvEngine.h's one rule)
   {
-    why = error.what();
+    this->TheEngine->Release();
+    return this->Fail(error.what());
   }
-  if (!this->Launcher)
-  {
-    return this->Fail("Device is GPU, but " + why + ". Choose Device CPU or Automatic.");
-  }
-  this->Used = "GPU";
-  return true;
+}
+
+bool Reconstruction::ChooseEngine()
+{
+  // 1. Where the run computes: the CPU, or the device (nvEngine.h).
+  std::string error;
+  this->TheEngine = MakeEngine(this->TheSettings, this->Comm != nullptr, this->Kernels, error);
+  return this->TheEngine ? true : this->Fail(error);
+}
+
+DeviceKind Reconstruction::DeviceUsed() const
+{
+  return this->TheEngine ? this->TheEngine->Kind() : DeviceKind::CPU;
+}
+
+std::string Reconstruction::DeviceName() const
+{
+  return this->TheEngine ? this->TheEngine->Name() : std::string("CPU");
+}
+
+double Reconstruction::DeviceBytes() const
+{
+  return this->TheEngine ? this->TheEngine->DeviceBytes() : 0.0;
+}
+
+const BandValues& Reconstruction::GetPhi() const
+{
+  static const BandValues none;
+  return this->TheEngine ? this->TheEngine->Phi() : none;
 }
 
 bool Reconstruction::CheckPoints(const std::vector<double>& xyz, double bounds[6])
@@ -635,41 +631,6 @@ bool Reconstruction::GatherPoints(std::vector<double>& xyz)
   return this->Stages.Time("gap closing", [&]() { return this->CloseGaps(xyz, closing); });
 }
 
-namespace
-{
-/// The output's dense arrays as the device's kernels take them (nvVolumeKernels.h).
-device::DenseArrays DenseArraysOf(const VolumeArrays& arrays)
-{
-  device::DenseArrays dense;
-  dense.Phi = arrays.Phi;
-  dense.InitialPhi = arrays.InitialPhi;
-  dense.Distance = arrays.Distance;
-  dense.Band = arrays.Band;
-  return dense;
-}
-
-/// The constants of the dense kernels, by VolumeWriter's expressions, for
-/// the node layers [kBegin, kEnd).
-device::DenseConstants DenseConstantsOf(
-  const Grid& grid, const Parameters& scheme, std::int64_t kBegin, std::int64_t kEnd)
-{
-  device::DenseConstants constants;
-  const std::array<std::int64_t, 3> bricks = BrickDimensions(grid);
-  for (int a = 0; a < 3; ++a)
-  {
-    constants.GridDims[a] = grid.Dims[a];
-    constants.BrickDims[a] = bricks[a];
-  }
-  constants.Begin = kBegin;
-  constants.End = kEnd;
-  constants.Offset = scheme.OffsetDistance;
-  constants.Xi = scheme.Xi();
-  constants.Infinity = std::numeric_limits<double>::infinity();
-  constants.Far = static_cast<float>(grid.FarDistance());
-  return constants;
-}
-} // namespace
-
 bool Reconstruction::BuildBand(std::vector<double> xyz)
 {
   // 5. Distance (eq. 6, 7) and band (steps 1-3); the dense arrays, if
@@ -681,70 +642,18 @@ bool Reconstruction::BuildBand(std::vector<double> xyz)
   {
     this->TheMonitor->Stage(0.0, 0.3);
   }
-  BrickVisitor writeBrick;
-  VolumeArrays dense;
-  if (this->AllocateVolume && !this->EmptyPiece())
+  DenseVolume dense;
+  const bool filled = this->AllocateVolume && !this->EmptyPiece();
+  if (filled)
   {
     this->Volume[0] = std::max(this->Computed[0], this->Piece[0] - this->VolumeGhosts);
     this->Volume[1] = std::min(this->Computed[1], this->Piece[1] + this->VolumeGhosts);
-    dense = this->AllocateVolume(this->Volume[0], this->Volume[1]);
-    // With Device GPU the device fills them (below and EvolveOnDevice).
-    this->DenseOnDevice = this->Launcher != nullptr;
-    if (!this->DenseOnDevice)
-    {
-      this->Writer.reset(new VolumeWriter(grid, this->ThePlan.Scheme, dense, this->Volume[0], this->Volume[1]));
-      this->Writer->Clear();
-      VolumeWriter* writer = this->Writer.get();
-      writeBrick = [writer](std::int64_t brick, const double* d) { writer->WriteBrick(brick, d); };
-    }
+    dense.Arrays = this->AllocateVolume(this->Volume[0], this->Volume[1]);
+    dense.Begin = this->Volume[0];
+    dense.End = this->Volume[1];
   }
-  const double reach = this->ThePlan.Scheme.Reach();
-  if (this->Launcher)
-  {
-    // Device GPU: the points sorted into bricks, the distances of eq. (6)
-    // and the band built from them (steps 1 to 3) by the device's kernels,
-    // the CPU's bit for bit (nvDeviceDistance.h), its distances and
-    // neighbour table left there for the evolution; and the dense arrays,
-    // if asked for, from each batch's distances on the device
-    // (nvVolumeKernels.h).
-    try
-    {
-      const auto sorting = StageTimes::Clock::now();
-      const TruncatedDistance gridOnly(grid, reach); // the points are the device's
-      device::LauncherDistance onDevice(
-        gridOnly, xyz.data(), static_cast<std::int64_t>(xyz.size() / 3), *this->Launcher);
-      std::vector<double>().swap(xyz);
-      this->Stages.Add("distance", sorting);
-      if (this->DenseOnDevice)
-      {
-        this->Launcher->DenseBegin(DenseArraysOf(dense), DenseConstantsOf(grid, this->ThePlan.Scheme,
-                                                           this->Volume[0], this->Volume[1]));
-        onDevice.FillDense();
-      }
-      this->Band = BuildNarrowBand(
-        gridOnly, this->ThePlan.Scheme, this->TheMonitor, &this->Part, nullptr, &this->Stages, &onDevice);
-    }
-    catch (const device::DeviceError& error)
-    {
-      this->Launcher.reset();
-      return this->Fail(error.what());
-    }
-  }
-  else
-  {
-    // The points sorted into bricks, for the band only: gone once it is built.
-    const auto sorting = StageTimes::Clock::now();
-    // Stoppable in the sort only when serial: one process alone cannot stop a distributed run.
-    Monitor* stoppable = this->Comm ? nullptr : this->TheMonitor;
-    const TruncatedDistance distance(grid, xyz.data(), static_cast<std::int64_t>(xyz.size() / 3), reach, stoppable);
-    std::vector<double>().swap(xyz);
-    this->Stages.Add("distance", sorting);
-    if (!StopAsked(stoppable))
-    {
-      this->Band =
-        BuildNarrowBand(distance, this->ThePlan.Scheme, this->TheMonitor, &this->Part, writeBrick, &this->Stages);
-    }
-  }
+  this->Band = this->TheEngine->BuildBand(grid, this->ThePlan.Scheme, std::move(xyz), filled ? &dense : nullptr,
+    this->Context());
   ReleaseFreedMemory();
   this->SetupTime = Seconds(start);
   double failed[2] = { static_cast<double>(this->Band.RefusedSize),
@@ -800,19 +709,8 @@ bool Reconstruction::Evolve()
       return this->Fail("Internal error: neighbouring processes disagree on their shared band layers.");
     }
   }
-  if (this->Launcher)
-  {
-    return this->EvolveOnDevice();
-  }
-  {
-    // The distances serve phi^0 only: freed before the solver's other arrays
-    // are made, so that the two never hold memory together.
-    BandValues phi0 = AllenCahnSolver::InitialField(this->Band, this->ThePlan.Scheme);
-    Free(this->Band.Distance);
-    ReleaseFreedMemory();
-    this->Solver.reset(new AllenCahnSolver(this->Band, this->ThePlan.Scheme, std::move(phi0), this->TheHalo.get()));
-  }
-  for (const StepReport& step : this->Solver->Run(this->TheMonitor))
+  for (const StepReport& step : this->TheEngine->Evolve(this->Band, this->ThePlan.Scheme, this->TheHalo.get(),
+         this->Context()))
   {
     this->Changes.push_back(step.RelativeChange);
   }
@@ -820,96 +718,28 @@ bool Reconstruction::Evolve()
   this->Stages.Add("evolution", this->EvolutionTime);
   if (this->Anywhere(this->TheMonitor && this->TheMonitor->Aborted()))
   {
+    this->TheEngine->Release();
     this->Stopped = true;
     return false;
   }
-  // The outputs need the band's nodes and phi only.
-  this->Solver->ReleaseWorkspace();
-  Free(this->Band.Neighbor);
-  ReleaseFreedMemory();
-  if (this->Writer)
-  {
-    const auto writing = StageTimes::Clock::now();
-    this->Writer->WriteBand(this->Band, this->GetPhi());
-    this->Writer.reset();
-    this->Stages.Add("volume", writing);
-  }
+  this->TheEngine->FinishEvolution(this->Band, this->Context());
   return true;
 }
 
-bool Reconstruction::EvolveOnDevice()
+EngineContext Reconstruction::Context()
 {
-  // 6, with Device GPU: phi^0, g and the time steps by the device back end
-  // (one process: ChooseDevice refused a distributed run), the same scheme
-  // and stopping rule as the CPU's solver. The band's distances and
-  // neighbour table are on the device already (BuildBand), phi comes back.
-  const auto start = std::chrono::steady_clock::now();
-  std::vector<StepReport> reports;
-  try
-  {
-    this->DevicePhi = device::Evolve(this->Band, this->ThePlan.Scheme, *this->Launcher, this->TheMonitor, reports);
-  }
-  catch (const device::DeviceError& error)
-  {
-    this->Launcher.reset();
-    return this->Fail(error.what());
-  }
-  for (const StepReport& step : reports)
-  {
-    this->Changes.push_back(step.RelativeChange);
-  }
-  this->EvolutionTime = Seconds(start);
-  this->Stages.Add("evolution", this->EvolutionTime);
-  if (this->TheMonitor && this->TheMonitor->Aborted())
-  {
-    this->Launcher.reset();
-    this->Stopped = true;
-    return false;
-  }
-  if (this->DenseOnDevice)
-  {
-    // The band's phi into the dense arrays on the device (DenseBandKernel,
-    // the evolution's phi still there), then the arrays to the host, once.
-    const auto writing = StageTimes::Clock::now();
-    try
-    {
-      device::DenseBandArrays band;
-      band.Bricks = this->Band.Bricks.data();
-      band.RedStart = this->Band.RedStart.data();
-      band.BlackStart = this->Band.BlackStart.data();
-      band.Offset = this->Band.Offset.data();
-      band.Phi = this->DevicePhi.data();
-      this->Launcher->DenseBand(band, static_cast<std::int64_t>(this->Band.Bricks.size()), this->Band.Size());
-      this->Launcher->DenseDownload();
-    }
-    catch (const device::DeviceError& error)
-    {
-      this->Launcher.reset();
-      return this->Fail(error.what());
-    }
-    this->Stages.Add("volume", writing);
-  }
-  this->DevicePeakBytes = this->Launcher->DeviceBytes();
-  // The device's memory freed but phi's, which the surface takes there
-  // (SurfaceOnDevice); the launcher goes with the band (ReleaseBand).
-  this->Launcher->ReleaseEvolution();
-  // The outputs need the band's nodes and phi only.
-  Free(this->Band.Distance);
-  Free(this->Band.Neighbor);
-  ReleaseFreedMemory();
-  if (this->Writer)
-  {
-    const auto writing = StageTimes::Clock::now();
-    this->Writer->WriteBand(this->Band, this->DevicePhi);
-    this->Writer.reset();
-    this->Stages.Add("volume", writing);
-  }
-  return true;
+  EngineContext context;
+  context.TheMonitor = this->TheMonitor;
+  // Stoppable in the sort only when serial: one process alone cannot stop a distributed run.
+  context.StoppableSort = !this->Comm;
+  context.Part = &this->Part;
+  context.Stages = &this->Stages;
+  return context;
 }
 
 bool Reconstruction::ProbeHoles()
 {
-  // 6b. Whether each hole left open pierces the evolved shell
+  // 6, continued: whether each hole left open pierces the evolved shell
   // (nvHoleProbe.h). Each process probes the discs in its own brick layers.
   std::vector<OpenHole>& holes = this->Gaps.Holes;
   if (holes.empty())
@@ -944,9 +774,10 @@ bool Reconstruction::ProbeHoles()
 void Reconstruction::ReleaseBand()
 {
   this->TheHalo.reset();
-  this->Solver.reset();
-  this->Launcher.reset();
-  BandValues().swap(this->DevicePhi);
+  if (this->TheEngine)
+  {
+    this->TheEngine->Release();
+  }
   this->Band = NarrowBand{};
   ReleaseFreedMemory();
 }
@@ -957,7 +788,7 @@ void Reconstruction::RequestVolume(std::int64_t ghostLayers, VolumeAllocator all
   this->AllocateVolume = std::move(allocate);
 }
 
-bool Reconstruction::ExtractSurface(SurfaceSink& sink) const
+bool Reconstruction::ExtractSurface(SurfaceSink& sink)
 {
   if (this->EmptyPiece())
   {
@@ -965,66 +796,17 @@ bool Reconstruction::ExtractSurface(SurfaceSink& sink) const
   }
   bool done = false;
   WithThreads(this->TheSettings.NumberOfThreads, [&]() {
-    if (this->SurfaceOnDevice(sink))
+    try
     {
-      done = !(this->TheMonitor && this->TheMonitor->Aborted());
-      return;
+      done = this->TheEngine->Surface(
+        this->ThePlan.TheGrid, this->Band, this->ThePlan.Scheme, this->Part.Owned, sink, this->TheMonitor);
     }
-    const BandField field(this->Band, this->GetPhi(), this->ThePlan.Scheme);
-    done = ContourBricks(
-      this->ThePlan.TheGrid, field, sink, this->Part.Owned.Begin, this->Part.Owned.End, this->TheMonitor);
+    catch (const EngineError& error) // the device failed (nvEngine.h's one rule)
+    {
+      this->Fail(error.what());
+    }
   });
   return done;
-}
-
-bool Reconstruction::SurfaceOnDevice(SurfaceSink& sink) const
-{
-  // 7, with Device GPU: the surface by the device back end's kernels
-  // (nvDeviceSurface.h), the CPU's through the host launcher, on the
-  // evolution's launcher, whose device still holds phi (or a new one, where
-  // the evolution's failed). The band's tables go to the device, the
-  // vertices and triangles come back. Should the device fail here, the part
-  // of the surface it gave is dropped and the CPU makes it (false; the
-  // error in SurfaceDeviceError).
-  this->SurfaceError.clear();
-  if (this->Used.empty() || this->Used == "CPU" || this->Comm)
-  {
-    return false;
-  }
-  const SurfaceArrays before = sink.View();
-  try
-  {
-    std::string why;
-    std::unique_ptr<device::EvolutionLauncher> fresh;
-    device::EvolutionLauncher* launcher = this->Launcher.get();
-    if (!launcher)
-    {
-      fresh = this->TheSettings.DeviceOnHost ? device::MakeHostLauncher() : device::MakeCudaLauncher(why);
-      launcher = fresh.get();
-    }
-    if (!launcher)
-    {
-      this->SurfaceError = why;
-      return false;
-    }
-    if (this->TheMonitor)
-    {
-      this->TheMonitor->Progress(0.0);
-    }
-    ContourOnDevice(this->ThePlan.TheGrid, this->Band, this->GetPhi(), this->ThePlan.Scheme, *launcher, sink);
-    this->DevicePeakBytes = std::max(this->DevicePeakBytes, launcher->DeviceBytes());
-    if (this->TheMonitor)
-    {
-      this->TheMonitor->Progress(1.0);
-    }
-  }
-  catch (const device::DeviceError& error)
-  {
-    this->SurfaceError = error.what();
-    sink.Truncate(before);
-    return false;
-  }
-  return true;
 }
 
 //------------------------------------------------------------------------------

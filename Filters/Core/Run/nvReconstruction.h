@@ -10,8 +10,7 @@
 #ifndef nvReconstruction_h
 #define nvReconstruction_h
 
-#include "nvAllenCahnSolver.h"
-#include "nvDeviceLauncher.h"
+#include "nvEngine.h"
 #include "nvGapClosing.h"
 #include "nvGrid.h"
 #include "nvHalo.h"
@@ -94,8 +93,10 @@ class Reconstruction
 {
 public:
   /// communicator: the other processes of a distributed run, or null.
-  /// monitor: progress and abort, or null.
-  Reconstruction(const Settings& settings, Communicator* communicator, Monitor* monitor);
+  /// monitor: progress and abort, or null. kernels: where Device GPU's
+  /// kernels run (nvEngine.h; OnHost for tests and benchmarks).
+  Reconstruction(const Settings& settings, Communicator* communicator, Monitor* monitor,
+    GpuKernels kernels = GpuKernels::OnGpu);
   ~Reconstruction();
 
   /// Returns the dense arrays to fill for the node layers [kBegin, kEnd).
@@ -163,24 +164,23 @@ public:
   std::int64_t VolumeEnd() const { return this->Volume[1]; }
 
   /// Step 7: the phi = 0 surface of this process's piece, from the band
-  /// (nvSurfaceField.h, nvSurface.h). Returns false if the monitor stopped it.
-  bool ExtractSurface(SurfaceSink& sink) const;
-  /// With Device GPU, why the last ExtractSurface made the surface on the
-  /// CPU instead (the device failed); empty when the device made it.
-  const std::string& SurfaceDeviceError() const { return this->SurfaceError; }
+  /// (nvSurfaceField.h, nvSurface.h). Returns false if the monitor stopped
+  /// it, or if the device failed (Error() says so).
+  bool ExtractSurface(SurfaceSink& sink);
 
   /// The band (after Run, its nodes only: the solver's other arrays are freed).
   const NarrowBand& GetBand() const { return this->Band; }
-  const BandValues& GetPhi() const { return this->Solver ? this->Solver->GetPhi() : this->DevicePhi; }
+  const BandValues& GetPhi() const;
 
-  /// The device that ran the evolution: "CPU", "GPU" (CUDA), or "GPU on the
-  /// host" (the GPU's kernels through the host launcher, Settings::DeviceOnHost);
-  /// empty before the run has chosen.
-  const std::string& DeviceUsed() const { return this->Used; }
+  /// The device that ran the job (the field data's DeviceUsed), and its
+  /// name: "CPU", "GPU" (CUDA), or "GPU on the host" (GpuKernels::OnHost).
+  /// CPU before the run has chosen.
+  DeviceKind DeviceUsed() const;
+  std::string DeviceName() const;
   /// The most bytes the GPU held at once (0 on the CPU): from the distance
   /// to the evolution's end (the dense volume's included), or while it made
   /// the surface (ExtractSurface), whichever held more.
-  double DeviceBytes() const { return this->DevicePeakBytes; }
+  double DeviceBytes() const;
 
   /// Frees the band and phi once the outputs no longer need them (after the
   /// surface is extracted), so that the surface's last steps (small pieces,
@@ -196,10 +196,10 @@ private:
   bool PlanGrid(const std::vector<double>& xyz, const double bounds[6], std::shared_ptr<const Sampling> measured);
   bool GatherPoints(std::vector<double>& xyz);
   bool BuildBand(std::vector<double> xyz);
-  bool ChooseDevice();
+  bool ChooseEngine();
   bool Evolve();
-  bool EvolveOnDevice();
-  bool SurfaceOnDevice(SurfaceSink& sink) const;
+  /// Where the engine's stages report (nvEngine.h).
+  EngineContext Context();
   bool ProbeHoles();
   bool Fail(const std::string& message);
   bool CheckMemory(double gridNodes, double points);
@@ -212,6 +212,7 @@ private:
   bool CloseGaps(std::vector<double>& xyz, GapClosing& closing);
 
   Settings TheSettings;
+  GpuKernels Kernels;
   Communicator* Comm;
   Monitor* Caller;
   std::unique_ptr<ShareMonitor> RunStages; ///< the caller's, within [0, OutputBegin())
@@ -227,20 +228,11 @@ private:
   std::int64_t Volume[2] = { 0, 0 };
   std::int64_t VolumeGhosts = 0;
   VolumeAllocator AllocateVolume;
-  std::unique_ptr<VolumeWriter> Writer; ///< fills the dense arrays (steps 5 and 6)
-  bool DenseOnDevice = false;           ///< or the device does (Device GPU)
   double BytesBeforeBand = 0.0;
   double PointsBeforeBand = 0.0; ///< the points CheckMemory counted
   NarrowBand Band;
   std::unique_ptr<Halo> TheHalo;
-  std::unique_ptr<AllenCahnSolver> Solver;
-  /// With Device GPU, until the band is released (ReleaseBand): after the
-  /// evolution its device holds phi only, for the surface.
-  std::unique_ptr<device::EvolutionLauncher> Launcher;
-  BandValues DevicePhi; ///< phi from the device back end (no Solver then)
-  std::string Used;
-  mutable std::string SurfaceError; ///< SurfaceDeviceError
-  mutable double DevicePeakBytes = 0.0;
+  std::unique_ptr<Engine> TheEngine; ///< chosen once, the run's first step
   std::int64_t BandNodes = 0;
   std::vector<double> Changes;
   double SetupTime = 0.0;

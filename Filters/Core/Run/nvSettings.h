@@ -34,11 +34,6 @@ struct Settings
   /// points. Not a row of the table, which holds single values.
   std::vector<double> DrainHolePositions;
 
-  /// For tests, not a property: Device GPU runs the GPU back end's kernels
-  /// through its host launcher (nvDeviceLauncher.h) instead of CUDA, on any
-  /// machine.
-  bool DeviceOnHost = false;
-
   /// MemoryLimit in bytes (> 0).
   double MemoryLimitBytes() const;
   /// Bytes per node of the dense output piece: the arrays asked for and the

@@ -1,0 +1,201 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+// SPDX-License-Identifier: BSD-3-Clause
+// The device engine (nvEngine.h): the band, the evolution, the dense volume
+// and the surface by the device back end's kernels (Device/), on a GPU or
+// through the host launcher. One process, no PreserveOffset (DeviceCannot).
+// The points go up once; the band's distances and neighbour table are built
+// and stay there for the evolution; phi comes back once and stays there for
+// the dense volume and the surface.
+#include "nvEngine.h"
+
+#include "nvDeviceDistance.h"
+#include "nvDeviceEvolution.h"
+#include "nvDeviceLauncher.h"
+#include "nvDeviceSurface.h"
+#include "nvMemory.h"
+#include "nvSurface.h"
+#include "nvSurfaceField.h"
+#include "nvTruncatedDistance.h"
+
+#include <algorithm>
+#include <array>
+#include <limits>
+
+namespace nv
+{
+namespace
+{
+/// The dense kernels' constants, by VolumeWriter's expressions, for the
+/// node layers [kBegin, kEnd).
+device::DenseConstants DenseConstantsOf(const Grid& grid, const Parameters& scheme, std::int64_t kBegin, std::int64_t kEnd)
+{
+  device::DenseConstants constants;
+  const std::array<std::int64_t, 3> bricks = BrickDimensions(grid);
+  for (int a = 0; a < 3; ++a)
+  {
+    constants.GridDims[a] = grid.Dims[a];
+    constants.BrickDims[a] = bricks[a];
+  }
+  constants.Begin = kBegin;
+  constants.End = kEnd;
+  constants.Offset = scheme.OffsetDistance;
+  constants.Xi = scheme.Xi();
+  constants.Infinity = std::numeric_limits<double>::infinity();
+  constants.Far = static_cast<float>(grid.FarDistance());
+  return constants;
+}
+
+class DeviceEngine : public Engine
+{
+public:
+  DeviceEngine(std::unique_ptr<device::EvolutionLauncher> launcher, bool onHost)
+    : Launcher(std::move(launcher))
+    , OnHost(onHost)
+  {
+  }
+
+  DeviceKind Kind() const override { return DeviceKind::GPU; }
+  std::string Name() const override { return this->OnHost ? "GPU on the host" : "GPU"; }
+
+  NarrowBand BuildBand(const Grid& grid, const Parameters& scheme, std::vector<double> xyz, const DenseVolume* dense,
+    const EngineContext& context) override
+  {
+    // The points sorted into bricks, the distances of eq. (6) and the band
+    // built from them by the kernels, the CPU's bit for bit
+    // (nvDeviceDistance.h); the dense arrays, if asked for, from each
+    // batch's distances there (nvVolumeKernels.h).
+    return Guard([&]() {
+      const auto sorting = StageTimes::Clock::now();
+      const TruncatedDistance gridOnly(grid, scheme.Reach()); // the points are the device's
+      device::LauncherDistance onDevice(
+        gridOnly, xyz.data(), static_cast<std::int64_t>(xyz.size() / 3), *this->Launcher);
+      std::vector<double>().swap(xyz);
+      context.Stages->Add("distance", sorting);
+      if (dense)
+      {
+        device::DenseArrays arrays;
+        arrays.Phi = dense->Arrays.Phi;
+        arrays.InitialPhi = dense->Arrays.InitialPhi;
+        arrays.Distance = dense->Arrays.Distance;
+        arrays.Band = dense->Arrays.Band;
+        this->Launcher->DenseBegin(arrays, DenseConstantsOf(grid, scheme, dense->Begin, dense->End));
+        this->Dense = true;
+        onDevice.FillDense();
+      }
+      return BuildNarrowBand(gridOnly, scheme, context.TheMonitor, context.Part, nullptr, context.Stages, &onDevice);
+    });
+  }
+
+  std::vector<StepReport> Evolve(NarrowBand& band, const Parameters& scheme, Halo*, const EngineContext& context) override
+  {
+    std::vector<StepReport> reports;
+    Guard([&]() { this->DevicePhi = device::Evolve(band, scheme, *this->Launcher, context.TheMonitor, reports); });
+    return reports;
+  }
+
+  void FinishEvolution(NarrowBand& band, const EngineContext& context) override
+  {
+    if (this->Dense)
+    {
+      // The band's phi into the dense arrays on the device (DenseBandKernel,
+      // the evolution's phi still there), then the arrays to the host, once.
+      const auto writing = StageTimes::Clock::now();
+      Guard([&]() {
+        device::DenseBandArrays arrays;
+        arrays.Bricks = band.Bricks.data();
+        arrays.RedStart = band.RedStart.data();
+        arrays.BlackStart = band.BlackStart.data();
+        arrays.Offset = band.Offset.data();
+        arrays.Phi = this->DevicePhi.data();
+        this->Launcher->DenseBand(arrays, static_cast<std::int64_t>(band.Bricks.size()), band.Size());
+        this->Launcher->DenseDownload();
+      });
+      context.Stages->Add("volume", writing);
+    }
+    this->PeakBytes = this->Launcher->DeviceBytes();
+    // The device's memory freed but phi's, which the surface takes there.
+    this->Launcher->ReleaseEvolution();
+    Free(band.Distance);
+    Free(band.Neighbor);
+    ReleaseFreedMemory();
+  }
+
+  const BandValues& Phi() const override { return this->DevicePhi; }
+
+  bool Surface(const Grid& grid, const NarrowBand& band, const Parameters& scheme, const LayerRange&,
+    SurfaceSink& sink, Monitor* monitor) override
+  {
+    // The band's tables go to the device (phi is there), the vertices and
+    // triangles come back (nvDeviceSurface.h).
+    if (monitor)
+    {
+      monitor->Progress(0.0);
+    }
+    Guard([&]() { ContourOnDevice(grid, band, this->DevicePhi, scheme, *this->Launcher, sink); });
+    this->PeakBytes = std::max(this->PeakBytes, this->Launcher->DeviceBytes());
+    if (monitor)
+    {
+      monitor->Progress(1.0);
+    }
+    return !(monitor && monitor->Aborted());
+  }
+
+  double DeviceBytes() const override { return this->PeakBytes; }
+
+  void Release() override
+  {
+    BandValues().swap(this->DevicePhi);
+    this->Launcher.reset(); // and phi's copy on the device
+  }
+
+private:
+  /// fn(), its device's failure the run's error (EngineError).
+  template <typename Fn>
+  static auto Guard(Fn&& fn) -> decltype(fn())
+  {
+    try
+    {
+      return fn();
+    }
+    catch (const device::DeviceError& error)
+    {
+      throw EngineError(std::string(error.what()) + "\nChoose Device CPU or Automatic.");
+    }
+  }
+
+  std::unique_ptr<device::EvolutionLauncher> Launcher;
+  bool OnHost = false;
+  bool Dense = false; ///< the device fills the dense arrays
+  BandValues DevicePhi;
+  double PeakBytes = 0.0;
+};
+} // namespace
+
+std::unique_ptr<Engine> MakeDeviceEngine(GpuKernels kernels, std::string& error)
+{
+  std::unique_ptr<device::EvolutionLauncher> launcher;
+  if (kernels == GpuKernels::OnHost)
+  {
+    launcher = device::MakeHostLauncher();
+  }
+  else
+  {
+    std::string why;
+    try
+    {
+      launcher = device::MakeCudaLauncher(why);
+    }
+    catch (const device::DeviceError& failure)
+    {
+      why = failure.what();
+    }
+    if (!launcher)
+    {
+      error = "Device is GPU, but " + why + ". Choose Device CPU or Automatic.";
+      return nullptr;
+    }
+  }
+  return std::unique_ptr<Engine>(new DeviceEngine(std::move(launcher), kernels == GpuKernels::OnHost));
+}
+
+} // namespace nv
