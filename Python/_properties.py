@@ -45,7 +45,8 @@ from collections import namedtuple
 import re
 from typing import Any, Callable, Dict
 
-Property = namedtuple("Property", "name label kind default low high choices enum group advanced widget doc")
+Property = namedtuple("Property", "name label kind default low high choices enum group advanced widget doc valid",
+                      defaults=(None,))
 Property.__doc__ = """One property of the filter.
 
 name: the Set/Get name (SetOffsetDistance), the field of nv::Settings and
@@ -63,7 +64,10 @@ widget: None, or how the panel edits it beyond its type: ("bounds", f), a
     BoundsDomain, scaled_extent), whose reset button gives 0, the default; ("slider", low, high), a slider over that range (any value can
     still be typed).
 doc: what it means, its unit and its default, with {OtherProperty} for the
-    names of other properties."""
+    names of other properties.
+valid: (low, high), the values a run accepts, where the setter does not
+    clamp: the run refuses others with an error that gives the range
+    (nv::MakePlan, from NV_SETTINGS_VALID); None: no such range."""
 
 Choice = namedtuple("Choice", "constant suffix value label")
 Choice.__doc__ = """One value of an enumerated property: the class constant
@@ -115,12 +119,12 @@ PROPERTIES = (
         "XiCells", "Xi Cells", float, 2.0, None, None, (), None, "Phase field", True, None,
         "Width m of the initial profile, xi = eps_m (eq. 2), in cells; the band is 2 m cells wide. From 1 to "
         "64 (other values are refused when the filter runs). Small values leave holes where the points are "
-        "sparse; large ones close thin gaps. Default 2 (the paper's)."),
+        "sparse; large ones close thin gaps. Default 2 (the paper's).", (1.0, 64.0)),
     Property(
         "EpsilonCells", "Epsilon Cells", float, 6.0, None, None, (), None, "Phase field", True, None,
         "Interface width m of the Allen-Cahn evolution, eps = eps_m (eq. 1, 12), in cells. From 0.5 to 256 "
         "(other values are refused when the filter runs). Larger values smooth the wrinkles of sparse or "
-        "noisy points more. Default 6 (the paper's)."),
+        "noisy points more. Default 6 (the paper's).", (0.5, 256.0)),
     Property(
         "EdgeStoppingFunction", "Edge Stopping Function", int, 4, 3, 4,
         (Choice("EQUATION_4", "Equation4", 4, "Eq. (4): (1-|phi0|)|phi0|"),

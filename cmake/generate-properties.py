@@ -106,6 +106,14 @@ def header(table):
             for p in table.PROPERTIES if p.low is not None]
     lines += [row + " \\" for row in rows[:-1]] + [rows[-1], ""]
     lines += [
+        "// NV_SETTINGS_VALID(X) calls X(Name, Low, High) for each property whose",
+        "// values outside [Low, High] a run refuses with an error (nv::MakePlan).",
+        "#define NV_SETTINGS_VALID(X) \\",
+    ]
+    rows = ["  X(%s, %s, %s)" % (p.name, cpp_number(p, p.valid[0]), cpp_number(p, p.valid[1]))
+            for p in table.PROPERTIES if p.valid is not None]
+    lines += [row + " \\" for row in rows[:-1]] + [rows[-1], ""]
+    lines += [
         "// NV_PANEL_LABELS(X) calls X(Name, \"Label\") for each property: the VTK",
         "// filter's messages name the properties by their panel labels in ParaView.",
         "#define NV_PANEL_LABELS(X) \\",

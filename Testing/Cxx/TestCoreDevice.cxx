@@ -612,6 +612,30 @@ void TestMissingGpu()
   NV_CHECK(automatic.DeviceUsed() == nv::DeviceKind::CPU);
 }
 
+/// The one fallback rule (nvEngine.h): what Device GPU cannot do stops the
+/// run with an error that says so and the way out; nothing falls back to
+/// the CPU. PreserveOffset through a whole run (the host launcher would run
+/// anything else), a distributed run by DeviceCannot (a run of several
+/// processes needs MPI: the MPI test runs Device CPU).
+void TestDeviceCannot()
+{
+  nv::Settings settings;
+  settings.Device = nv::ComputeDevice::GPU;
+  settings.PreserveOffset = true;
+  const double center[3] = { 0.0, 0.0, 0.0 };
+  nv::Reconstruction run(settings, nullptr, nullptr, nv::GpuKernels::OnHost);
+  NV_CHECK(!run.Run(nvtest::SpherePoints(2000, 0.5, center)));
+  std::printf("Device GPU with PreserveOffset: %s\n", run.Error().c_str());
+  NV_CHECK(run.Error() == "Device GPU has no PreserveOffset yet: turn PreserveOffset off, or choose Device CPU.");
+  NV_CHECK(run.RelativeChanges().empty()); // it stopped before the band
+  NV_CHECK(nv::DeviceCannot(settings, true).find("Device GPU runs on one process only") == 0);
+  settings.PreserveOffset = false;
+  NV_CHECK(nv::DeviceCannot(settings, false).empty());
+  settings.Device = nv::ComputeDevice::Automatic;
+  settings.PreserveOffset = true;
+  NV_CHECK(nv::DeviceCannot(settings, true).empty());
+}
+
 } // namespace
 
 int main(int argc, char* argv[])
@@ -622,5 +646,6 @@ int main(int argc, char* argv[])
   TestDistance();
   TestRuns();
   TestMissingGpu();
+  TestDeviceCannot();
   return nvtest::Result(NV_TEST_NAME);
 }

@@ -759,6 +759,11 @@ Outcome ReconstructSteps(Reconstruction& run, std::vector<double> xyz, std::shar
     done = MakeSurface(run, sink, dense, distributed, scan, outcome, explained);
   }
   outcome.OutputSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!done && !run.Error().empty())
+  {
+    outcome.Error = run.Error(); // the device failed making the surface (nvEngine.h's one rule)
+    return outcome;
+  }
   // Step 9. Every process agrees whether the run is done, whatever stage it
   // stopped in; the first speaks for the whole result.
   outcome.Done = !run.Anywhere(!done);

@@ -60,6 +60,12 @@
   X(DrainHoleAxis, 0, 5) \
   X(DrainHoleAngle, 0.0, 90.0)
 
+// NV_SETTINGS_VALID(X) calls X(Name, Low, High) for each property whose
+// values outside [Low, High] a run refuses with an error (nv::MakePlan).
+#define NV_SETTINGS_VALID(X) \
+  X(XiCells, 1.0, 64.0) \
+  X(EpsilonCells, 0.5, 256.0)
+
 // NV_PANEL_LABELS(X) calls X(Name, "Label") for each property: the VTK
 // filter's messages name the properties by their panel labels in ParaView.
 #define NV_PANEL_LABELS(X) \
