@@ -183,8 +183,10 @@ PROPERTIES = (
         "(0, the default), for now the CPU; DEVICE_CPU (1), the CPU's threads; DEVICE_GPU (2), an NVIDIA GPU "
         "through CUDA, with the CPU's distances and the same scheme and stopping rule (the sheets within 0.05 "
         "of a cell of the CPU's). The GPU needs a build "
-        "with CUDA and a CUDA device (else the run stops with an error that says which is missing), one "
-        "process, and {PreserveOffset} off. The GPU back end has not yet run on a GPU: Automatic stays on "
+        "with CUDA and a CUDA device, one process, and {PreserveOffset} off. DEVICE_GPU never falls back to "
+        "the CPU: where one of these is missing, or the GPU fails during the run, the run stops with an "
+        "error that says which and to choose DEVICE_CPU or DEVICE_AUTOMATIC. The GPU back end has not yet "
+        "run on a GPU: Automatic stays on "
         "the CPU until it has passed its tests there. Field data \"DeviceUsed\" holds the device that ran: "
         "1 (CPU) or 2 (GPU)."),
     # --- Output

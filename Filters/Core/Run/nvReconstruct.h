@@ -19,7 +19,9 @@
 // nv::Reconstruction::Run (nvReconstruction.h), the others are here
 // (their helpers in nvReconstruct.cxx):
 //
-//   1. check the user's settings and the points (a message says what to change);
+//   1. check the user's settings and the points (a message says what to change),
+//      and choose where the run computes: the CPU or, with Device GPU, the
+//      device back end (the engine, nvEngine.h, which steps 5-7 call);
 //   2. the points' spacing (nvSampling.h), and the grid around the points'
 //      box (all processes' box): offset l and spacing h given, from the
 //      number of cells along the longest side, or chosen from the spacing
@@ -31,18 +33,17 @@
 //      the holes left open;
 //   4. the memory budget: the dense output and the per-brick tables before
 //      anything large exists, the band once its size is known;
-//   5. the truncated distance (eq. 6, 7) and the narrow band (steps 1-3 of
-//      the paper's algorithm), and the dense arrays asked for (output 0's
+//   5. the truncated distance (eq. 6, 7) and the narrow band (the paper's
+//      band construction: collect, store, connect, nvNarrowBand.h), and the dense arrays asked for (output 0's
 //      phi and DenseArraysAsked, or phi alone to keep one sheet), which the
 //      caller allocates once the run knows its piece (VolumeRequest), from
 //      the same distances (nvVolume.h);
-//   6. the time steps of the operator-split scheme (eq. 10-12), on the CPU
-//      or, with Device GPU, by the device back end (nvDeviceEvolution.h),
-//      then the band's phi into the dense arrays, and whether each hole
-//      left open pierces the evolved shell (GapReport);
+//   6. the time steps of the operator-split scheme (eq. 10-12), then the
+//      band's phi into the dense arrays, and whether each hole left open
+//      pierces the evolved shell (GapReport);
 //   7. the phi = 0 surface, into the caller's sink: from the band
-//      (Reconstruction::ExtractSurface, nvSurface.h; with Device GPU by the
-//      device back end, nvDeviceSurface.h), or, to keep one
+//      (Reconstruction::ExtractSurface: nvSurface.h, or the device's
+//      kernels), or, to keep one
 //      sheet, from a copy of the dense phi that KeepSheets rewrote
 //      (nvSheets.h), or the part to print (nvPrintPart.h);
 //   8. its small pieces removed, and phi flipped in the same regions

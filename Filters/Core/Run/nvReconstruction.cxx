@@ -161,7 +161,7 @@ bool Reconstruction::RunSteps(std::vector<double> xyz, std::shared_ptr<const Sam
 
 bool Reconstruction::ChooseEngine()
 {
-  // 1. Where the run computes: the CPU, or the device (nvEngine.h).
+  // 1, continued: where the run computes, the CPU or the device (nvEngine.h).
   std::string error;
   this->TheEngine = MakeEngine(this->TheSettings, this->Comm != nullptr, this->Kernels, error);
   return this->TheEngine ? true : this->Fail(error);
@@ -364,7 +364,7 @@ bool Reconstruction::GatherPoints(std::vector<double>& xyz)
 
 bool Reconstruction::BuildBand(std::vector<double> xyz)
 {
-  // 5. Distance (eq. 6, 7) and band (steps 1-3); the dense arrays, if
+  // 5. Distance (eq. 6, 7) and band (collect, store, connect); the dense arrays, if
   // asked for, take each brick's distances as the band's construction
   // computes them.
   const auto start = std::chrono::steady_clock::now();
