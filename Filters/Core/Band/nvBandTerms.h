@@ -16,8 +16,8 @@
 //   FirstNodeOf, BrickNodeRange, BrickIndexOf, BucketRange   bricks, buckets
 //   BoxFirst, BoxLast, InBox            the point's box of nodes of eq. (7)
 //   AxisSquare, AddSquare, BeyondReach, TruncatedOf           eq. (6)
-//   CoversBrick, BrickCovered           a brick within l - eta/2 of a point
-//   IsRed, InBand, InsideShell, SetBit, ClassifyBrick         step 1
+//   Larger, CoversBrick, BucketCovers, BrickCovered   the covering test
+//   IsRed, InBand, InsideShell, ResetInside, SetBit, ClassifyBrick   step 1
 //   AdjacentBrick, NeighbourPlace, DirichletSlot              step 3
 //
 // The functions are plain C++ for the host compiler and CUDA (NV_HD; no STL
@@ -216,6 +216,14 @@ NV_HD inline double TruncatedOf(double d2, const DistanceConstants& c)
 // The covering test: whether one point lies within r (Cover2 = r^2) of every
 // node of a brick, so that d <= r on the whole brick.
 
+/// std::max(a, b), which is not device code: b when a < b, else a. By
+/// reference as std::max, so that the host compiler makes it one max
+/// instruction, as it does std::max.
+NV_HD inline const double& Larger(const double& a, const double& b)
+{
+  return a < b ? b : a;
+}
+
 /// Whether point x lies within r of every node of [first, last]: the
 /// farthest of them from x is a corner.
 NV_HD inline bool CoversBrick(
@@ -224,9 +232,7 @@ NV_HD inline bool CoversBrick(
   double far2 = 0.0;
   for (int a = 0; a < 3; ++a)
   {
-    const double below = ::fabs(x[a] - static_cast<double>(first[a]));
-    const double above = ::fabs(x[a] - static_cast<double>(last[a]));
-    const double far = below < above ? above : below; // std::max(below, above)
+    const double far = Larger(::fabs(x[a] - static_cast<double>(first[a])), ::fabs(x[a] - static_cast<double>(last[a])));
     far2 = AddRn(far2, MulRn(far, far));
   }
   return far2 <= c.Cover2;
@@ -314,6 +320,16 @@ NV_HD inline bool InBand(const BandBounds& b, double d)
 NV_HD inline bool InsideShell(const BandBounds& b, double d)
 {
   return d <= b.Lower;
+}
+
+/// A brick's Inside bits (8 words) before its nodes are classified: all
+/// set for a covered brick (d <= l - eta/2 on all of it), else none.
+NV_HD inline void ResetInside(std::uint64_t* inside, bool covered)
+{
+  for (int w = 0; w < BrickNodes / 64; ++w)
+  {
+    inside[w] = covered ? ~std::uint64_t(0) : std::uint64_t(0);
+  }
 }
 
 /// Sets bit n of a brick's mask of 512 bits (8 words).

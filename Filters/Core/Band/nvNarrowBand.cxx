@@ -50,12 +50,11 @@ void ForEachBandNode(const TruncatedDistance& distance, const Parameters& parame
   const BrickVisitor& visitor, double scratch[BrickNodes], std::uint64_t inside[BrickNodes / 64], Fn&& fn)
 {
   const double lower = parameters.OffsetDistance - parameters.HalfBandWidth();
-  std::fill(inside, inside + BrickNodes / 64, std::uint64_t(0));
-  if (SkipsCoveredBricks(parameters, visitor) && distance.BrickWithin(brick, lower))
+  const bool covered = SkipsCoveredBricks(parameters, visitor) && distance.BrickWithin(brick, lower);
+  ResetInside(inside, covered);
+  if (covered)
   {
-    // d <= l - eta/2 on the whole brick (deep inside the shell): no band node
-    std::fill(inside, inside + BrickNodes / 64, ~std::uint64_t(0));
-    return;
+    return; // d <= l - eta/2 on the whole brick (deep inside the shell): no band node
   }
   distance.ComputeBrick(brick, scratch);
   if (visitor)
@@ -227,7 +226,7 @@ bool CollectBandNodesFrom(BrickDistanceSource& source, const TruncatedDistance& 
         const std::int64_t a = done + c;
         std::uint64_t* inside = &band.Inside[a * BrickNodes / 64];
         const double* brickDistance = &d[c * BrickNodes];
-        std::fill(inside, inside + BrickNodes / 64, covered[c] ? ~std::uint64_t(0) : std::uint64_t(0));
+        ResetInside(inside, covered[c] != 0);
         if (covered[c])
         {
           continue; // d <= l - eta/2 on the whole brick, as ForEachBandNode

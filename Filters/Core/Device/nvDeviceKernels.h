@@ -363,10 +363,7 @@ struct BandCountKernel
   {
     std::int32_t red = 0, black = 0;
     std::uint64_t* inside = A.Inside + (BrickNodes / 64) * c;
-    for (int w = 0; w < BrickNodes / 64; ++w)
-    {
-      inside[w] = A.Covered[c] ? ~std::uint64_t(0) : std::uint64_t(0);
-    }
+    ResetInside(inside, A.Covered[c] != 0);
     if (!A.Covered[c])
     {
       std::int64_t first[3], last[3];
