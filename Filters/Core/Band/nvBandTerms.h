@@ -13,7 +13,7 @@
 //   BrickShift, BrickSize, BrickNodes   the bricks of 8 x 8 x 8 nodes
 //   MulRn, AddRn                        a * b, a + b, each rounded once
 //   DistanceConstants, DistanceConstantsOf, SetCoverRadius   in cells, once
-//   FirstNodeOf, BrickNodeRange, BrickIndexOf, BucketRange   bricks, buckets
+//   BrickAt, FirstNodeOf, BrickNodeRange, BrickIndexOf, BucketRange   bricks
 //   BoxFirst, BoxLast, InBox            the point's box of nodes of eq. (7)
 //   AxisSquare, AddSquare, BeyondReach, TruncatedOf           eq. (6)
 //   Larger, CoversBrick, BucketCovers, BrickCovered   the covering test
@@ -118,13 +118,23 @@ inline DistanceConstants DistanceConstantsOf(const Grid& grid, double reach, dou
 // Bricks and buckets: a brick of the grid is also the bucket of the points
 // sorted into it (nvPointSort.h).
 
+/// Brick `brick`'s place (bi, bj, bk) in a grid of brickDims bricks.
+NV_HD inline void BrickAt(const std::int64_t brickDims[3], std::int64_t brick, std::int64_t at[3])
+{
+  at[0] = brick % brickDims[0];
+  brick /= brickDims[0];
+  at[1] = brick % brickDims[1];
+  at[2] = brick / brickDims[1];
+}
+
 /// The first node (i, j, k) of brick `brick` of a grid of brickDims bricks.
 NV_HD inline void FirstNodeOf(const std::int64_t brickDims[3], std::int64_t brick, std::int64_t first[3])
 {
-  first[0] = (brick % brickDims[0]) * BrickSize;
-  brick /= brickDims[0];
-  first[1] = (brick % brickDims[1]) * BrickSize;
-  first[2] = (brick / brickDims[1]) * BrickSize;
+  BrickAt(brickDims, brick, first);
+  for (int a = 0; a < 3; ++a)
+  {
+    first[a] *= BrickSize;
+  }
 }
 
 /// The first node of a brick and its last one within the grid.
@@ -372,11 +382,11 @@ NV_HD inline void ClassifyBrick(const std::int64_t gridDims[3], const std::int64
 // ---------------------------------------------------------------------------
 // Step 3: the neighbour table.
 
-/// The brick across face `direction` (-x, +x, -y, +y, -z, +z) of brick b,
-/// or -1 past the grid's end.
-NV_HD inline std::int64_t AdjacentBrick(const std::int64_t brickDims[3], std::int64_t b, int direction)
+/// The brick across face `direction` (-x, +x, -y, +y, -z, +z) of the brick
+/// at `at` (BrickAt), or -1 past the grid's end.
+NV_HD inline std::int64_t AdjacentBrick(const std::int64_t brickDims[3], const std::int64_t at[3], int direction)
 {
-  std::int64_t next[3] = { b % brickDims[0], (b / brickDims[0]) % brickDims[1], b / (brickDims[0] * brickDims[1]) };
+  std::int64_t next[3] = { at[0], at[1], at[2] };
   const int axis = direction / 2;
   next[axis] += (direction % 2) ? 1 : -1;
   const bool inGrid = next[axis] >= 0 && next[axis] < brickDims[axis];

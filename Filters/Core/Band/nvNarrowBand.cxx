@@ -355,11 +355,13 @@ BrickIndex IndexBricks(const TruncatedDistance& distance, const NarrowBand& band
   ParallelFor(0, numberOfBricks, 64, [&](std::int64_t begin, std::int64_t end) {
     for (std::int64_t a = begin; a < end; ++a)
     {
+      std::int64_t at[3];
+      BrickAt(brickDims.data(), band.Bricks[a], at);
       for (int direction = 0; direction < 6; ++direction)
       {
         // The slot of the brick across the face (the device's
         // AdjacentBricksKernel finds it by a binary search of band.Bricks).
-        const std::int64_t next = AdjacentBrick(brickDims.data(), band.Bricks[a], direction);
+        const std::int64_t next = AdjacentBrick(brickDims.data(), at, direction);
         index.Adjacent[6 * a + direction] = next >= 0 ? slotOfBrick[next] : -1;
       }
       const std::int64_t t = index.BandBrick[a];

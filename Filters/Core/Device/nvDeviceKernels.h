@@ -497,9 +497,11 @@ struct AdjacentBricksKernel
   NeighbourConstants C;
   NV_HD void operator()(std::int64_t a) const
   {
+    std::int64_t at[3];
+    BrickAt(C.BrickDims, A.Bricks[a], at);
     for (int direction = 0; direction < 6; ++direction)
     {
-      const std::int64_t next = AdjacentBrick(C.BrickDims, A.Bricks[a], direction);
+      const std::int64_t next = AdjacentBrick(C.BrickDims, at, direction);
       A.Adjacent[6 * a + direction] =
         next >= 0 ? static_cast<std::int32_t>(IndexOf(A.Bricks, 0, A.NumberOfBricks, next)) : -1;
     }
