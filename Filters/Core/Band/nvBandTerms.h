@@ -10,15 +10,27 @@
 // not the loops; the loops that both sides run alike (the covering test's
 // scan of the buckets, one brick's band nodes) are shared whole.
 //
-//   BrickShift, BrickSize, BrickNodes   the bricks of 8 x 8 x 8 nodes
-//   MulRn, AddRn                        a * b, a + b, each rounded once
-//   DistanceConstants, DistanceConstantsOf, SetCoverRadius   in cells, once
-//   BrickAt, FirstNodeOf, BrickNodeRange, BrickIndexOf, BucketRange   bricks
-//   BoxFirst, BoxLast, InBox            the point's box of nodes of eq. (7)
-//   AxisSquare, AddSquare, BeyondReach, TruncatedOf           eq. (6)
-//   Larger, CoversBrick, BucketCovers, BrickCovered   the covering test
-//   IsRed, InBand, InsideShell, ResetInside, SetBit, ClassifyBrick   step 1
-//   AdjacentBrick, NeighbourPlace, DirichletSlot              step 3
+//   BrickShift, BrickSize, BrickNodes      the bricks of 8 x 8 x 8 nodes
+//   MulRn, AddRn                           a * b, a + b, each rounded once
+//   DistanceConstants, DistanceConstantsOf, SetCoverRadius: in cells, once
+//   BrickAt, FirstNodeOf, NodeAtPlace, BrickNodeRange, BrickIndexOf,
+//   BucketRange                            bricks and buckets
+//   BoxFirst, BoxLast, InBox               the point's box of eq. (7)
+//   AxisSquare, AddSquare, BeyondReach, TruncatedOf: d of eq. (6)
+//   Larger, CoversBrick, BucketCovers, BrickCovered: the covering test
+//   BandBounds, IsRed, InBand, InsideShell, ResetInside, SetBit,
+//   ClassifyBrick                          step 1's band nodes of a brick
+//   AdjacentBrick, NeighbourPlace, DirichletSlot: step 3's neighbours
+//
+// Written twice still, each side's way by design: the distance's loops
+// (ComputeBrick scatters each point over its box with a vectorised row
+// minimum, DistanceKernel gathers a node's points, a thread a node, with no
+// atomic minimum); where step 1's band nodes go (growing lists a brick on
+// the CPU, counts then a compaction on the device); how step 3 finds a
+// brick's slot and a neighbour's index (a table over the grid's bricks and
+// a rank table on the CPU, binary searches, IndexOf, on the device, which
+// also finds a node's brick by LastAtOrBelow where the CPU loops brick by
+// brick).
 //
 // The functions are plain C++ for the host compiler and CUDA (NV_HD; no STL
 // in them beyond <cmath> and <cstdint>); DistanceConstantsOf runs on the
@@ -135,6 +147,15 @@ NV_HD inline void FirstNodeOf(const std::int64_t brickDims[3], std::int64_t bric
   {
     first[a] *= BrickSize;
   }
+}
+
+/// Node (i, j, k) at place n = i' + 8 (j' + 8 k') of the brick whose first
+/// node is `first`.
+NV_HD inline void NodeAtPlace(const std::int64_t first[3], int n, std::int64_t ijk[3])
+{
+  ijk[0] = first[0] + (n & (BrickSize - 1));
+  ijk[1] = first[1] + ((n >> BrickShift) & (BrickSize - 1));
+  ijk[2] = first[2] + (n >> (2 * BrickShift));
 }
 
 /// The first node of a brick and its last one within the grid.

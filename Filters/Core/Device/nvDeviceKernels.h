@@ -266,7 +266,8 @@ struct DistanceKernel
     }
     std::int64_t first[3], last[3];
     BrickNodeRange(C, A.Bricks[a], first, last);
-    const std::int64_t node[3] = { first[0] + (n & 7), first[1] + ((n >> 3) & 7), first[2] + (n >> 6) };
+    std::int64_t node[3];
+    NodeAtPlace(first, n, node);
     const double at[3] = { static_cast<double>(node[0]), static_cast<double>(node[1]), static_cast<double>(node[2]) };
     double best = C.Infinity;
     if (node[0] <= last[0] && node[1] <= last[1] && node[2] <= last[2]) // else past the grid's end: +inf
