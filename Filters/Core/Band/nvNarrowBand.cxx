@@ -16,43 +16,22 @@ namespace nv
 namespace
 {
 
-bool IsRed(std::int64_t i, std::int64_t j, std::int64_t k)
-{
-  return ((i + j + k) & 1) == 0;
-}
-
 /// Visits the band nodes of one brick whose distances `d` are known, in
-/// ascending grid index: fn(i, j, k, n, d), n = i + 8 (j + 8 k) in the
-/// brick; sets the bits of its other nodes inside the shell in `inside`
-/// (cleared by the caller).
+/// ascending grid index: fn(n, red, d), n = i + 8 (j + 8 k) in the brick;
+/// sets the bits of its other nodes inside the shell in `inside` (cleared
+/// by the caller). nvBandTerms.h's ClassifyBrick, as the device's
+/// BandCountKernel and BandCompactKernel.
 template <typename Fn>
 void ClassifyBrickNodes(const TruncatedDistance& distance, const Parameters& parameters, std::int64_t brick,
   const double d[BrickNodes], std::uint64_t inside[BrickNodes / 64], Fn&& fn)
 {
-  const Grid& grid = distance.GetGrid();
-  const bool whole = parameters.Domain == Domain::WholeDomain;
-  const double lower = parameters.OffsetDistance - parameters.HalfBandWidth();
-  const double upper = distance.GetReach();
+  BandBounds bounds;
+  bounds.Whole = parameters.Domain == Domain::WholeDomain;
+  bounds.Lower = parameters.OffsetDistance - parameters.HalfBandWidth();
+  bounds.Upper = distance.GetReach();
   std::int64_t first[3];
   distance.BrickFirstNode(brick, first);
-  for (int k = 0; k < BrickSize && first[2] + k < grid.Dims[2]; ++k)
-  {
-    for (int j = 0; j < BrickSize && first[1] + j < grid.Dims[1]; ++j)
-    {
-      for (int i = 0; i < BrickSize && first[0] + i < grid.Dims[0]; ++i)
-      {
-        const int n = i + BrickSize * (j + BrickSize * k);
-        if (whole || (lower < d[n] && d[n] < upper))
-        {
-          fn(first[0] + i, first[1] + j, first[2] + k, n, d[n]);
-        }
-        else if (d[n] <= lower)
-        {
-          inside[n / 64] |= std::uint64_t(1) << (n % 64);
-        }
-      }
-    }
-  }
+  ClassifyBrick(distance.GetGrid().Dims.data(), first, d, bounds, inside, fn);
 }
 
 /// Whether step 1 may skip the bricks that BrickWithin(brick, lower) finds
@@ -71,12 +50,11 @@ void ForEachBandNode(const TruncatedDistance& distance, const Parameters& parame
   const BrickVisitor& visitor, double scratch[BrickNodes], std::uint64_t inside[BrickNodes / 64], Fn&& fn)
 {
   const double lower = parameters.OffsetDistance - parameters.HalfBandWidth();
-  std::fill(inside, inside + BrickNodes / 64, std::uint64_t(0));
-  if (SkipsCoveredBricks(parameters, visitor) && distance.BrickWithin(brick, lower))
+  const bool covered = SkipsCoveredBricks(parameters, visitor) && distance.BrickWithin(brick, lower);
+  ResetInside(inside, covered);
+  if (covered)
   {
-    // d <= l - eta/2 on the whole brick (deep inside the shell): no band node
-    std::fill(inside, inside + BrickNodes / 64, ~std::uint64_t(0));
-    return;
+    return; // d <= l - eta/2 on the whole brick (deep inside the shell): no band node
   }
   distance.ComputeBrick(brick, scratch);
   if (visitor)
@@ -101,12 +79,9 @@ void NarrowBand::NodesInLayers(LayerRange layers, bool red, std::int64_t& begin,
 
 void NarrowBand::BrickFirstNode(std::int64_t a, std::int64_t ijk[3]) const
 {
-  const std::int64_t dimX = (this->GridNodes.Dims[0] + BrickSize - 1) >> BrickShift;
-  const std::int64_t dimY = (this->GridNodes.Dims[1] + BrickSize - 1) >> BrickShift;
-  const std::int64_t brick = this->Bricks[a];
-  ijk[0] = (brick % dimX) << BrickShift;
-  ijk[1] = ((brick / dimX) % dimY) << BrickShift;
-  ijk[2] = (brick / (dimX * dimY)) << BrickShift;
+  const std::int64_t brickDims[3] = { (this->GridNodes.Dims[0] + BrickSize - 1) >> BrickShift,
+    (this->GridNodes.Dims[1] + BrickSize - 1) >> BrickShift, 0 }; // the layers' count is not read
+  FirstNodeOf(brickDims, this->Bricks[a], ijk);
 }
 
 std::int64_t NarrowBand::GridIndex(std::int64_t s) const
@@ -198,8 +173,8 @@ bool CollectBandNodes(const TruncatedDistance& distance, const Parameters& param
     {
       BrickBand& out = perBrick[a];
       ForEachBandNode(distance, parameters, band.Bricks[a], visitor, scratch, &band.Inside[a * BrickNodes / 64],
-        [&](std::int64_t i, std::int64_t j, std::int64_t k, int n, double d) {
-          (IsRed(i, j, k) ? out.Red : out.Black).push_back(BandEntry{ static_cast<std::uint16_t>(n), d });
+        [&](int n, bool red, double d) {
+          (red ? out.Red : out.Black).push_back(BandEntry{ static_cast<std::uint16_t>(n), d });
         });
     }
   });
@@ -251,7 +226,7 @@ bool CollectBandNodesFrom(BrickDistanceSource& source, const TruncatedDistance& 
         const std::int64_t a = done + c;
         std::uint64_t* inside = &band.Inside[a * BrickNodes / 64];
         const double* brickDistance = &d[c * BrickNodes];
-        std::fill(inside, inside + BrickNodes / 64, covered[c] ? ~std::uint64_t(0) : std::uint64_t(0));
+        ResetInside(inside, covered[c] != 0);
         if (covered[c])
         {
           continue; // d <= l - eta/2 on the whole brick, as ForEachBandNode
@@ -262,8 +237,8 @@ bool CollectBandNodesFrom(BrickDistanceSource& source, const TruncatedDistance& 
         }
         BrickBand& out = perBrick[a];
         ClassifyBrickNodes(distance, parameters, band.Bricks[a], brickDistance, inside,
-          [&](std::int64_t i, std::int64_t j, std::int64_t k, int n, double dn) {
-            (IsRed(i, j, k) ? out.Red : out.Black).push_back(BandEntry{ static_cast<std::uint16_t>(n), dn });
+          [&](int n, bool red, double dn) {
+            (red ? out.Red : out.Black).push_back(BandEntry{ static_cast<std::uint16_t>(n), dn });
           });
       }
     });
@@ -380,16 +355,14 @@ BrickIndex IndexBricks(const TruncatedDistance& distance, const NarrowBand& band
   ParallelFor(0, numberOfBricks, 64, [&](std::int64_t begin, std::int64_t end) {
     for (std::int64_t a = begin; a < end; ++a)
     {
-      const std::int64_t b = band.Bricks[a];
-      const std::int64_t at[3] = { b % brickDims[0], (b / brickDims[0]) % brickDims[1],
-        b / (brickDims[0] * brickDims[1]) };
+      std::int64_t at[3];
+      BrickAt(brickDims.data(), band.Bricks[a], at);
       for (int direction = 0; direction < 6; ++direction)
       {
-        std::int64_t next[3] = { at[0], at[1], at[2] };
-        next[direction / 2] += (direction % 2) ? 1 : -1;
-        const bool inGrid = next[direction / 2] >= 0 && next[direction / 2] < brickDims[direction / 2];
-        index.Adjacent[6 * a + direction] =
-          inGrid ? slotOfBrick[next[0] + brickDims[0] * (next[1] + brickDims[1] * next[2])] : -1;
+        // The slot of the brick across the face (the device's
+        // AdjacentBricksKernel finds it by a binary search of band.Bricks).
+        const std::int64_t next = AdjacentBrick(brickDims.data(), at, direction);
+        index.Adjacent[6 * a + direction] = next >= 0 ? slotOfBrick[next] : -1;
       }
       const std::int64_t t = index.BandBrick[a];
       for (const auto* start : { &band.RedStart, &band.BlackStart })
@@ -415,8 +388,7 @@ void ConnectNeighbours(const BrickIndex& index, const Parameters& parameters, Na
   const std::int64_t numberOfBricks = static_cast<std::int64_t>(band.Bricks.size());
   band.Neighbor.resize(6 * band.Offset.size());
   const double offset = parameters.OffsetDistance;
-  constexpr int Last = BrickSize - 1;
-  const int step[3] = { 1, BrickSize, BrickSize * BrickSize };
+  const std::int64_t size = band.Size();
   ParallelFor(0, numberOfBricks, 16, [&](std::int64_t begin, std::int64_t end) {
     for (std::int64_t a = begin; a < end; ++a)
     {
@@ -428,18 +400,15 @@ void ConnectNeighbours(const BrickIndex& index, const Parameters& parameters, Na
         for (std::int64_t s = own[a]; s < own[a + 1]; ++s)
         {
           const int n = band.Offset[s];
-          const int ijk[3] = { n & Last, (n >> BrickShift) & Last, n >> (2 * BrickShift) };
-          // phi0 > 0 exactly when d < l (eq. 2).
-          const std::uint32_t dirichlet = band.Distance[s] < offset ? band.InsideSlot() : band.OutsideSlot();
+          // phi0 > 0 exactly when d < l (eq. 2): InsideSlot, else OutsideSlot.
+          const std::uint32_t dirichlet = DirichletSlot(band.Distance[s], offset, size);
           for (int direction = 0; direction < 6; ++direction)
           {
             // Place n -/+ 1, 8 or 64 in this brick, or a side's length back
             // in the brick across the face the node lies on.
-            const int axis = direction / 2;
-            const bool up = direction % 2 == 1;
-            const bool across = up ? ijk[axis] == Last : ijk[axis] == 0;
+            bool across = false;
+            const int q = NeighbourPlace(n, direction, across);
             const std::int64_t b = across ? index.Adjacent[6 * a + direction] : a;
-            const int q = n + (up ? step[axis] : -step[axis]) * (across ? -Last : 1);
             band.Neighbor[6 * s + direction] = index.Holds(b, q)
               ? static_cast<std::uint32_t>(
                   other[b] + index.Rank[static_cast<std::size_t>(index.BandBrick[b]) * BrickNodes + q])

@@ -78,10 +78,7 @@ struct NarrowBand
   /// The grid node (i, j, k) of band node s of the brick whose first node is `first`.
   void NodeIjk(const std::int64_t first[3], std::int64_t s, std::int64_t ijk[3]) const
   {
-    const int offset = this->Offset[s];
-    ijk[0] = first[0] + (offset & (BrickSize - 1));
-    ijk[1] = first[1] + ((offset >> BrickShift) & (BrickSize - 1));
-    ijk[2] = first[2] + (offset >> (2 * BrickShift));
+    NodeAtPlace(first, this->Offset[s], ijk);
   }
   /// The grid index of band node s, found by a search over the bricks (for
   /// checks and tests; passes over the band go brick by brick instead).

@@ -21,6 +21,7 @@
 #ifndef nvPointSort_h
 #define nvPointSort_h
 
+#include "nvBandTerms.h"
 #include "nvHostDevice.h"
 
 #include <cmath>
@@ -214,8 +215,8 @@ struct ReachKernel
     for (int a = 0; a < 3; ++a)
     {
       const double x = A.Points[3 * p + a];
-      const std::int64_t up = static_cast<std::int64_t>(::ceil(x - C.Reach));
-      const std::int64_t down = static_cast<std::int64_t>(::floor(x + C.Reach));
+      const std::int64_t up = BoxFirst(x, C.Reach);
+      const std::int64_t down = BoxLast(x, C.Reach);
       const std::int64_t first = up > 0 ? up : 0;
       const std::int64_t last = down < C.GridDims[a] - 1 ? down : C.GridDims[a] - 1;
       lo[a] = first >> 3;

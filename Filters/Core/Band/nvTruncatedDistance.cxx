@@ -5,8 +5,6 @@
 #include "nvPointSort.h"
 
 #include <algorithm>
-#include <cmath>
-#include <limits>
 
 namespace nv
 {
@@ -14,10 +12,11 @@ namespace nv
 TruncatedDistance::TruncatedDistance(const Grid& grid, double reach)
   : GridNodes(grid)
   , Reach(reach)
+  , Constants(DistanceConstantsOf(grid, reach, 0.0))
 {
   for (int a = 0; a < 3; ++a)
   {
-    this->BrickDims[a] = (grid.Dims[a] + BrickSize - 1) / BrickSize;
+    this->BrickDims[a] = this->Constants.BrickDims[a];
   }
 }
 
@@ -41,10 +40,7 @@ TruncatedDistance::TruncatedDistance(
 
 void TruncatedDistance::BrickFirstNode(std::int64_t brick, std::int64_t ijk[3]) const
 {
-  ijk[0] = (brick % this->BrickDims[0]) * BrickSize;
-  brick /= this->BrickDims[0];
-  ijk[1] = (brick % this->BrickDims[1]) * BrickSize;
-  ijk[2] = (brick / this->BrickDims[1]) * BrickSize;
+  FirstNodeOf(this->Constants.BrickDims, brick, ijk);
 }
 
 std::vector<std::int64_t> TruncatedDistance::ReachedBricks() const
@@ -64,97 +60,28 @@ void BricksInLayers(const std::vector<std::int64_t>& bricks, std::int64_t bricks
 
 bool TruncatedDistance::BrickWithin(std::int64_t brick, double radius) const
 {
-  // In cells, with a relative margin so that a node whose computed distance
-  // rounds just above the radius is never left out.
-  const double r = radius / this->GridNodes.Spacing * (1.0 - 1e-9);
-  if (!(r > 0.0))
-  {
-    return false;
-  }
-  const double r2 = r * r;
-  std::int64_t first[3], last[3];
-  this->BrickFirstNode(brick, first);
-  for (int a = 0; a < 3; ++a)
-  {
-    last[a] = std::min<std::int64_t>(first[a] + BrickSize, this->GridNodes.Dims[a]) - 1;
-  }
-  // The farthest node of the brick from x is a corner.
-  auto coversBrick = [&](const double* x) {
-    double far2 = 0.0;
-    for (int a = 0; a < 3; ++a)
-    {
-      const double far = std::max(std::fabs(x[a] - first[a]), std::fabs(x[a] - last[a]));
-      far2 += far * far;
-    }
-    return far2 <= r2;
-  };
-  auto scanBucket = [&](std::int64_t bucket) {
-    for (std::int64_t p = this->BucketStart[bucket]; p < this->BucketStart[bucket + 1]; ++p)
-    {
-      if (coversBrick(&this->Points[3 * p]))
-      {
-        return true;
-      }
-    }
-    return false;
-  };
-  if (scanBucket(brick))
-  {
-    return true;
-  }
-  // A covering point is within r of the brick's nodes: in the buckets around.
-  const std::int64_t margin = static_cast<std::int64_t>(std::ceil(r)) + 1;
-  std::int64_t lo[3], hi[3];
-  for (int a = 0; a < 3; ++a)
-  {
-    lo[a] = std::max<std::int64_t>(0, last[a] - margin) >> BrickShift;
-    hi[a] = std::min<std::int64_t>(this->BrickDims[a] - 1, (first[a] + margin) >> BrickShift);
-  }
-  for (std::int64_t bk = lo[2]; bk <= hi[2]; ++bk)
-  {
-    for (std::int64_t bj = lo[1]; bj <= hi[1]; ++bj)
-    {
-      for (std::int64_t bi = lo[0]; bi <= hi[0]; ++bi)
-      {
-        const std::int64_t bucket = bi + this->BrickDims[0] * (bj + this->BrickDims[1] * bk);
-        if (bucket != brick && scanBucket(bucket))
-        {
-          return true;
-        }
-      }
-    }
-  }
-  return false;
+  // The covering test of nvBandTerms.h, as the device's CoveredKernel.
+  return BrickCovered(this->GetConstants(radius), this->Points.data(), this->BucketStart.data(), brick);
 }
 
 void TruncatedDistance::ComputeBrick(std::int64_t brick, double distance[BrickNodes]) const
 {
-  // Everything in cells: node (i, j, k) sits at (i, j, k), points at x / h.
-  const double h = this->GridNodes.Spacing;
-  const double reach = this->Reach / h;
-  const double reach2 = reach * reach;
-  const double infinity = std::numeric_limits<double>::infinity();
+  // Everything in cells: node (i, j, k) sits at (i, j, k), points at x / h
+  // (nvBandTerms.h's terms, which the device's DistanceKernel reads too).
+  const DistanceConstants c = this->Constants;
+  const double reach = c.Reach;
 
   std::int64_t first[3], last[3];
-  this->BrickFirstNode(brick, first);
-  for (int a = 0; a < 3; ++a)
-  {
-    last[a] = std::min<std::int64_t>(first[a] + BrickSize, this->GridNodes.Dims[a]) - 1;
-  }
+  BrickNodeRange(c, brick, first, last);
 
   // Squared distances first; the square root is taken once per node at the end.
   double d2[BrickNodes];
-  std::fill(d2, d2 + BrickNodes, infinity);
+  std::fill(d2, d2 + BrickNodes, c.Infinity);
 
   // Buckets whose points may reach this brick: a point reaches node i only if
   // |x - i| < reach, so its node index lies within reach + 1 of the brick.
-  const std::int64_t margin = static_cast<std::int64_t>(std::ceil(reach)) + 1;
   std::int64_t bucketLo[3], bucketHi[3];
-  for (int a = 0; a < 3; ++a)
-  {
-    bucketLo[a] = std::max<std::int64_t>(0, first[a] - margin) >> BrickShift;
-    bucketHi[a] = std::min<std::int64_t>(this->BrickDims[a] - 1, (last[a] + margin) >> BrickShift);
-  }
+  BucketRange(c.BrickDims, first, last, c.Margin, bucketLo, bucketHi);
 
   for (std::int64_t bk = bucketLo[2]; bk <= bucketHi[2]; ++bk)
   {
@@ -162,7 +89,7 @@ void TruncatedDistance::ComputeBrick(std::int64_t brick, double distance[BrickNo
     {
       for (std::int64_t bi = bucketLo[0]; bi <= bucketHi[0]; ++bi)
       {
-        const std::int64_t bucket = bi + this->BrickDims[0] * (bj + this->BrickDims[1] * bk);
+        const std::int64_t bucket = BrickIndexOf(c.BrickDims, bi, bj, bk);
         for (std::int64_t p = this->BucketStart[bucket]; p < this->BucketStart[bucket + 1]; ++p)
         {
           const double* x = &this->Points[3 * p];
@@ -171,8 +98,8 @@ void TruncatedDistance::ComputeBrick(std::int64_t brick, double distance[BrickNo
           bool empty = false;
           for (int a = 0; a < 3; ++a)
           {
-            lo[a] = std::max(first[a], static_cast<std::int64_t>(std::ceil(x[a] - reach)));
-            hi[a] = std::min(last[a], static_cast<std::int64_t>(std::floor(x[a] + reach)));
+            lo[a] = std::max(first[a], BoxFirst(x[a], reach));
+            hi[a] = std::min(last[a], BoxLast(x[a], reach));
             empty = empty || lo[a] > hi[a];
           }
           if (empty)
@@ -183,22 +110,20 @@ void TruncatedDistance::ComputeBrick(std::int64_t brick, double distance[BrickNo
           double dx2[BrickSize];
           for (std::int64_t i = lo[0]; i <= hi[0]; ++i)
           {
-            const double dx = static_cast<double>(i) - x[0];
-            dx2[i - lo[0]] = dx * dx;
+            dx2[i - lo[0]] = AxisSquare(static_cast<double>(i), x[0]);
           }
           const int rowLength = static_cast<int>(hi[0] - lo[0] + 1);
           for (std::int64_t k = lo[2]; k <= hi[2]; ++k)
           {
-            const double dz = static_cast<double>(k) - x[2];
-            const double dz2 = dz * dz;
+            const double dz2 = AxisSquare(static_cast<double>(k), x[2]);
             for (std::int64_t j = lo[1]; j <= hi[1]; ++j)
             {
-              const double dy = static_cast<double>(j) - x[1];
-              const double dyz2 = dz2 + dy * dy;
-              if (dyz2 >= reach2)
+              const double dyz2 = AddSquare(dz2, static_cast<double>(j), x[1]);
+              if (BeyondReach(dyz2, c))
               {
                 continue;
               }
+              // (dz^2 + dy^2) + dx^2, as AddSquare (a + b on the host).
               double* row = d2 + ((j - first[1]) + BrickSize * (k - first[2])) * BrickSize + (lo[0] - first[0]);
               for (int i = 0; i < rowLength; ++i)
               {
@@ -213,7 +138,7 @@ void TruncatedDistance::ComputeBrick(std::int64_t brick, double distance[BrickNo
 
   for (int n = 0; n < BrickNodes; ++n)
   {
-    distance[n] = d2[n] < reach2 ? std::sqrt(d2[n]) * h : infinity;
+    distance[n] = TruncatedOf(d2[n], c);
   }
 }
 

@@ -12,6 +12,7 @@
 #ifndef nvTruncatedDistance_h
 #define nvTruncatedDistance_h
 
+#include "nvBandTerms.h"
 #include "nvGrid.h"
 
 #include <array>
@@ -21,10 +22,6 @@
 namespace nv
 {
 class Monitor;
-
-constexpr int BrickShift = 3;
-constexpr int BrickSize = 1 << BrickShift;               ///< nodes per brick side
-constexpr int BrickNodes = BrickSize * BrickSize * BrickSize; ///< 512
 
 /// Set bits of x, for the bit masks over a brick's nodes (portable: no
 /// popcnt instruction is assumed).
@@ -55,6 +52,15 @@ public:
 
   const Grid& GetGrid() const { return this->GridNodes; }
   double GetReach() const { return this->Reach; }
+  /// The grid and the reach in cells (nvBandTerms.h), with the covering
+  /// radius `coverRadius` (world units; 0: none), as the device's kernels
+  /// read them too.
+  DistanceConstants GetConstants(double coverRadius = 0.0) const
+  {
+    DistanceConstants c = this->Constants;
+    SetCoverRadius(c, coverRadius);
+    return c;
+  }
   std::int64_t GetNumberOfPoints() const { return static_cast<std::int64_t>(this->Points.size() / 3); }
 
   const std::array<std::int64_t, 3>& GetBrickDims() const { return this->BrickDims; }
@@ -85,6 +91,7 @@ private:
   Grid GridNodes;
   double Reach;
   std::array<std::int64_t, 3> BrickDims;
+  DistanceConstants Constants;           ///< without a covering radius
   std::vector<double> Points;            ///< relative to the grid origin, sorted by brick
   std::vector<std::int64_t> BucketStart; ///< points of brick b: [BucketStart[b], BucketStart[b+1])
 };

@@ -3,8 +3,6 @@
 #include "nvDeviceDistance.h"
 
 #include <algorithm>
-#include <cmath>
-#include <limits>
 
 namespace nv
 {
@@ -13,25 +11,7 @@ namespace device
 
 DistanceConstants DistanceConstantsOf(const TruncatedDistance& distance, double coverRadius)
 {
-  const Grid& grid = distance.GetGrid();
-  DistanceConstants c;
-  for (int a = 0; a < 3; ++a)
-  {
-    c.GridDims[a] = grid.Dims[a];
-    c.BrickDims[a] = distance.GetBrickDims()[a];
-  }
-  // As ComputeBrick: everything in cells.
-  c.Spacing = grid.Spacing;
-  c.Reach = distance.GetReach() / grid.Spacing;
-  c.Reach2 = c.Reach * c.Reach;
-  c.Margin = static_cast<std::int64_t>(std::ceil(c.Reach)) + 1;
-  c.Infinity = std::numeric_limits<double>::infinity();
-  // As BrickWithin: the radius in cells with its relative margin.
-  const double r = coverRadius / grid.Spacing * (1.0 - 1e-9);
-  c.TestCover = r > 0.0;
-  c.Cover2 = c.TestCover ? r * r : 0.0;
-  c.CoverMargin = c.TestCover ? static_cast<std::int64_t>(std::ceil(r)) + 1 : 0;
-  return c;
+  return distance.GetConstants(coverRadius); // as ComputeBrick and BrickWithin
 }
 
 LauncherDistance::LauncherDistance(const TruncatedDistance& grid, const double* cloud, std::int64_t numberOfPoints,
@@ -64,9 +44,9 @@ void LauncherDistance::CountNodes(const std::int64_t* bricks, std::int64_t count
 {
   BandNodeConstants constants;
   constants.Grid = DistanceConstantsOf(this->Distance, this->Dense ? 0.0 : coverRadius);
-  constants.Lower = lower;
-  constants.Upper = upper;
-  constants.Whole = whole;
+  constants.Bounds.Lower = lower;
+  constants.Bounds.Upper = upper;
+  constants.Bounds.Whole = whole;
   this->Launcher.DistanceBricks(bricks, count, constants.Grid, nullptr, nullptr); // kept on the device
   if (this->Dense)
   {

@@ -35,9 +35,10 @@ namespace nv
 namespace device
 {
 
-/// The constants of DistanceKernel and CoveredKernel, by the expressions
-/// of ComputeBrick and BrickWithin(brick, coverRadius) (coverRadius 0: no
-/// brick is tested).
+/// The constants of DistanceKernel and CoveredKernel: those that
+/// ComputeBrick and BrickWithin(brick, coverRadius) read
+/// (TruncatedDistance::GetConstants, nvBandTerms.h's DistanceConstantsOf;
+/// coverRadius 0: no brick is tested).
 DistanceConstants DistanceConstantsOf(const TruncatedDistance& distance, double coverRadius);
 
 class LauncherDistance : public BrickDistanceSource

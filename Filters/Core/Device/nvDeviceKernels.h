@@ -19,10 +19,10 @@
 // nvcc contracts a * b + c into fused multiply-adds and the reductions sum
 // in another order: phi then differs in the last bits, not more.
 //
-// The truncated distance of eq. (6) (DistanceKernel, CoveredKernel) is here
-// too, written as the CPU core's (nvTruncatedDistance.cxx) so that both
-// launchers give its distances bit for bit (MulRn, AddRn keep nvcc from
-// fusing its products and sums).
+// The truncated distance of eq. (6) (DistanceKernel, CoveredKernel) and the
+// band's steps 1 and 3 are here too, from the terms of Band/nvBandTerms.h
+// that the CPU core (nvTruncatedDistance.cxx, nvNarrowBand.cxx) calls too,
+// so that both launchers give its distances and band bit for bit.
 //
 // This header is plain C++ for the host compiler: it includes nothing of
 // CUDA, and no STL beyond <cmath> and <cstdint>, whose math functions
@@ -30,6 +30,7 @@
 #ifndef nvDeviceKernels_h
 #define nvDeviceKernels_h
 
+#include "nvBandTerms.h"
 #include "nvHostDevice.h"
 #include "nvPointSort.h"
 #include "nvSchemeTerms.h"
@@ -162,30 +163,11 @@ struct NormSquaredKernel
 };
 
 // ---------------------------------------------------------------------------
-// The truncated distance of eq. (6), brick by brick (nvTruncatedDistance.h).
-
-/// a * b and a + b, each rounded once: nvcc would otherwise fuse
-/// a * b + c into one fused multiply-add, rounded once instead of twice, and
-/// the distances would differ from the CPU core's in the last bit. With
-/// them the GPU's distances should be ComputeBrick's bit for bit (CUDA's
-/// double square root is IEEE's correctly rounded one too), which
-/// TestCoreDevice cuda checks on a GPU: not yet run there.
-NV_HD inline double MulRn(double a, double b)
-{
-#if defined(__CUDA_ARCH__)
-  return __dmul_rn(a, b);
-#else
-  return a * b;
-#endif
-}
-NV_HD inline double AddRn(double a, double b)
-{
-#if defined(__CUDA_ARCH__)
-  return __dadd_rn(a, b);
-#else
-  return a + b;
-#endif
-}
+// The truncated distance of eq. (6), brick by brick (nvTruncatedDistance.h),
+// from the terms of Band/nvBandTerms.h that the CPU core calls too (the
+// constants, the brick's nodes and buckets, the box of eq. 7, the squared
+// distance and its truncation, the covering test; MulRn, AddRn keep nvcc
+// from fusing its products and sums).
 
 /**
  * The points sorted into bricks and one batch of bricks, as both sides hold
@@ -214,104 +196,18 @@ struct DistanceArrays
   std::uint8_t* Covered = nullptr;
 };
 
-/// The grid and the reach, computed once on the host by the expressions of
-/// ComputeBrick and BrickWithin (DistanceConstantsOf, nvDeviceDistance.h).
-struct DistanceConstants
-{
-  std::int64_t GridDims[3] = { 0, 0, 0 };
-  std::int64_t BrickDims[3] = { 0, 0, 0 };
-  double Spacing = 0.0;     ///< h
-  double Reach = 0.0;       ///< (l + eta/2) / h, in cells
-  double Reach2 = 0.0;      ///< Reach^2
-  std::int64_t Margin = 0;  ///< ceil(Reach) + 1: the bricks whose points may reach a brick
-  double Infinity = 0.0;    ///< +inf, made on the host
-  bool TestCover = false;   ///< whether CoveredKernel tests anything (radius > 0)
-  double Cover2 = 0.0;      ///< BrickWithin's r^2, r = radius / h (1 - 1e-9)
-  std::int64_t CoverMargin = 0; ///< ceil(r) + 1
-};
+// DistanceConstants (the grid and the reach in cells, the covering radius):
+// nvBandTerms.h's, made by DistanceConstantsOf as TruncatedDistance's.
 
-/// The first node (i, j, k) and the last one within the grid of a brick, as
-/// TruncatedDistance::BrickFirstNode and ComputeBrick.
-NV_HD inline void BrickNodeRange(const DistanceConstants& c, std::int64_t brick, std::int64_t first[3], std::int64_t last[3])
-{
-  first[0] = (brick % c.BrickDims[0]) * 8;
-  brick /= c.BrickDims[0];
-  first[1] = (brick % c.BrickDims[1]) * 8;
-  first[2] = (brick / c.BrickDims[1]) * 8;
-  for (int a = 0; a < 3; ++a)
-  {
-    last[a] = (first[a] + 8 < c.GridDims[a] ? first[a] + 8 : c.GridDims[a]) - 1;
-  }
-}
-
-/// BrickWithin(Bricks[a], radius) for batch brick a: whether one point lies
-/// within r of every node of the brick. Any order of the points gives the
-/// same answer; the brick's own points first, as the CPU core, because they
-/// are the likeliest to cover it.
+/// BrickWithin(Bricks[a], radius) for batch brick a: nvBandTerms.h's
+/// BrickCovered, which BrickWithin calls.
 struct CoveredKernel
 {
   DistanceArrays A;
   DistanceConstants C;
-  NV_HD bool CoversBrick(const double* x, const std::int64_t first[3], const std::int64_t last[3]) const
-  {
-    double far2 = 0.0;
-    for (int a = 0; a < 3; ++a)
-    {
-      const double below = ::fabs(x[a] - static_cast<double>(first[a]));
-      const double above = ::fabs(x[a] - static_cast<double>(last[a]));
-      const double far = below < above ? above : below; // std::max(below, above)
-      far2 = AddRn(far2, MulRn(far, far));
-    }
-    return far2 <= C.Cover2;
-  }
-  NV_HD bool ScanBucket(std::int64_t bucket, const std::int64_t first[3], const std::int64_t last[3]) const
-  {
-    for (std::int64_t p = A.BucketStart[bucket]; p < A.BucketStart[bucket + 1]; ++p)
-    {
-      if (CoversBrick(A.Points + 3 * p, first, last))
-      {
-        return true;
-      }
-    }
-    return false;
-  }
   NV_HD void operator()(std::int64_t a) const
   {
-    const std::int64_t brick = A.Bricks[a];
-    A.Covered[a] = 0;
-    if (!C.TestCover)
-    {
-      return;
-    }
-    std::int64_t first[3], last[3];
-    BrickNodeRange(C, brick, first, last);
-    if (ScanBucket(brick, first, last))
-    {
-      A.Covered[a] = 1;
-      return;
-    }
-    std::int64_t lo[3], hi[3];
-    for (int d = 0; d < 3; ++d)
-    {
-      lo[d] = (last[d] - C.CoverMargin > 0 ? last[d] - C.CoverMargin : 0) >> 3;
-      const std::int64_t h = (first[d] + C.CoverMargin) >> 3;
-      hi[d] = h < C.BrickDims[d] - 1 ? h : C.BrickDims[d] - 1;
-    }
-    for (std::int64_t bk = lo[2]; bk <= hi[2]; ++bk)
-    {
-      for (std::int64_t bj = lo[1]; bj <= hi[1]; ++bj)
-      {
-        for (std::int64_t bi = lo[0]; bi <= hi[0]; ++bi)
-        {
-          const std::int64_t bucket = bi + C.BrickDims[0] * (bj + C.BrickDims[1] * bk);
-          if (bucket != brick && ScanBucket(bucket, first, last))
-          {
-            A.Covered[a] = 1;
-            return;
-          }
-        }
-      }
-    }
+    A.Covered[a] = BrickCovered(C, A.Points, A.BucketStart, A.Bricks[a]) ? 1 : 0;
   }
 };
 
@@ -320,12 +216,12 @@ struct CoveredKernel
  * in it): the least distance to the points of the bricks within Margin,
  * truncated at the reach. A gather (each node reads the points) where
  * ComputeBrick scatters (each point writes its box of nodes), with the
- * same tests and the same arithmetic, so the same bits: a point counts for
- * node (i, j, k) when the node lies in the point's box of eq. (7),
- * x - reach <= i <= x + reach on each axis, and its squared
- * distance is (dz^2 + dy^2) + dx^2 in that order; the minimum of the same
- * values in any order is the same value. One thread a node: the threads of
- * a block share one brick and read mostly the same points.
+ * same terms (nvBandTerms.h), so the same bits: a point counts for node
+ * (i, j, k) when the node lies in the point's box of eq. (7) (InBox), and
+ * its squared distance is (dz^2 + dy^2) + dx^2 in that order (AddSquare);
+ * the minimum of the same values in any order is the same value. One
+ * thread a node: the threads of a block share one brick and read mostly
+ * the same points.
  */
 struct DistanceKernel
 {
@@ -333,15 +229,16 @@ struct DistanceKernel
   DistanceConstants C;
   NV_HD void operator()(std::int64_t t) const
   {
-    const std::int64_t a = t >> 9; // BrickNodes = 512
-    const int n = static_cast<int>(t & 511);
+    const std::int64_t a = t >> (3 * BrickShift);
+    const int n = static_cast<int>(t & (BrickNodes - 1));
     if (A.Covered[a])
     {
       return;
     }
     std::int64_t first[3], last[3];
     BrickNodeRange(C, A.Bricks[a], first, last);
-    const std::int64_t node[3] = { first[0] + (n & 7), first[1] + ((n >> 3) & 7), first[2] + (n >> 6) };
+    std::int64_t node[3];
+    NodeAtPlace(first, n, node);
     const double at[3] = { static_cast<double>(node[0]), static_cast<double>(node[1]), static_cast<double>(node[2]) };
     double best = C.Infinity;
     if (node[0] <= last[0] && node[1] <= last[1] && node[2] <= last[2]) // else past the grid's end: +inf
@@ -350,51 +247,35 @@ struct DistanceKernel
       // the whole brick: the points of the others fail the box test below,
       // those sorted into the grid's edge bricks included).
       std::int64_t lo[3], hi[3];
-      for (int d = 0; d < 3; ++d)
-      {
-        lo[d] = (node[d] - C.Margin > 0 ? node[d] - C.Margin : 0) >> 3;
-        const std::int64_t h = (node[d] + C.Margin) >> 3;
-        hi[d] = h < C.BrickDims[d] - 1 ? h : C.BrickDims[d] - 1;
-      }
+      BucketRange(C.BrickDims, node, node, C.Margin, lo, hi);
       for (std::int64_t bk = lo[2]; bk <= hi[2]; ++bk)
       {
         for (std::int64_t bj = lo[1]; bj <= hi[1]; ++bj)
         {
           for (std::int64_t bi = lo[0]; bi <= hi[0]; ++bi)
           {
-            const std::int64_t bucket = bi + C.BrickDims[0] * (bj + C.BrickDims[1] * bk);
+            const std::int64_t bucket = BrickIndexOf(C.BrickDims, bi, bj, bk);
             for (std::int64_t p = A.BucketStart[bucket]; p < A.BucketStart[bucket + 1]; ++p)
             {
               const double* x = A.Points + 3 * p;
-              // ComputeBrick's box, ceil(x - reach) <= i <= floor(x + reach):
-              // for an integer i, ceil(y) <= i exactly when y <= i, and
-              // i <= floor(y) when i <= y, so the same test without the
-              // rounding functions (library calls on x86-64's baseline).
-              bool inBox = true;
-              for (int d = 0; d < 3; ++d)
-              {
-                inBox = inBox && x[d] - C.Reach <= at[d] && at[d] <= x[d] + C.Reach;
-              }
-              if (!inBox)
+              // ComputeBrick's box BoxFirst(x) <= i <= BoxLast(x) (eq. 7).
+              if (!(InBox(x[0], C.Reach, at[0]) && InBox(x[1], C.Reach, at[1]) && InBox(x[2], C.Reach, at[2])))
               {
                 continue;
               }
-              const double dx = at[0] - x[0];
-              const double dy = at[1] - x[1];
-              const double dz = at[2] - x[2];
-              const double dyz2 = AddRn(MulRn(dz, dz), MulRn(dy, dy));
-              if (dyz2 >= C.Reach2)
+              const double dyz2 = AddSquare(AxisSquare(at[2], x[2]), at[1], x[1]);
+              if (BeyondReach(dyz2, C))
               {
                 continue; // as ComputeBrick's row test; d2 >= Reach2 anyway
               }
-              const double d2 = AddRn(dyz2, MulRn(dx, dx));
+              const double d2 = AddSquare(dyz2, at[0], x[0]);
               best = d2 < best ? d2 : best; // std::min(best, d2)
             }
           }
         }
       }
     }
-    A.Distance[t] = best < C.Reach2 ? MulRn(::sqrt(best), C.Spacing) : C.Infinity;
+    A.Distance[t] = TruncatedOf(best, C);
   }
 };
 
@@ -403,8 +284,8 @@ struct DistanceKernel
 
 // ---------------------------------------------------------------------------
 // The band's nodes of step 1 (eq. 7), picked from a batch's distances on the
-// device, so that only they come back to the host (nvNarrowBand.cxx's
-// ClassifyBrickNodes, written the same way).
+// device, so that only they come back to the host: nvBandTerms.h's
+// ClassifyBrick, which nvNarrowBand.cxx's ClassifyBrickNodes calls.
 
 /**
  * The band's nodes of one batch of bricks, as both sides hold them.
@@ -438,23 +319,12 @@ struct BandNodeArrays
   std::uint64_t* Inside = nullptr;
 };
 
-/// The band's bounds (nvNarrowBand.cxx's ClassifyBrickNodes).
+/// The grid and the band's bounds (nvNarrowBand.cxx's ClassifyBrickNodes).
 struct BandNodeConstants
 {
   DistanceConstants Grid; ///< GridDims and BrickDims are read
-  double Lower = 0.0;     ///< l - eta/2
-  double Upper = 0.0;     ///< the reach l + eta/2, world units
-  bool Whole = false;     ///< Domain::WholeDomain: every node in the grid
+  BandBounds Bounds;      ///< l -/+ eta/2, or the whole domain
 };
-
-/// Whether node n of a brick whose first node is `first` lies in the grid,
-/// and its colour (red: i + j + k even).
-NV_HD inline bool NodeInGrid(const DistanceConstants& c, const std::int64_t first[3], int n, bool& red)
-{
-  const std::int64_t i = first[0] + (n & 7), j = first[1] + ((n >> 3) & 7), k = first[2] + (n >> 6);
-  red = ((i + j + k) & 1) == 0;
-  return i < c.GridDims[0] && j < c.GridDims[1] && k < c.GridDims[2];
-}
 
 /// Counts batch brick c's band nodes of each colour and sets its Inside bits.
 struct BandCountKernel
@@ -464,33 +334,17 @@ struct BandCountKernel
   NV_HD void operator()(std::int64_t c) const
   {
     std::int32_t red = 0, black = 0;
-    std::uint64_t* inside = A.Inside + 8 * c;
-    for (int w = 0; w < 8; ++w)
-    {
-      inside[w] = A.Covered[c] ? ~std::uint64_t(0) : std::uint64_t(0);
-    }
+    std::uint64_t* inside = A.Inside + (BrickNodes / 64) * c;
+    ResetInside(inside, A.Covered[c] != 0);
     if (!A.Covered[c])
     {
       std::int64_t first[3], last[3];
       BrickNodeRange(C.Grid, A.Bricks[c], first, last);
-      const double* d = A.Distance + 512 * c;
-      for (int n = 0; n < 512; ++n)
-      {
-        bool isRed = false;
-        if (!NodeInGrid(C.Grid, first, n, isRed))
-        {
-          continue;
-        }
-        if (C.Whole || (C.Lower < d[n] && d[n] < C.Upper))
-        {
+      ClassifyBrick(C.Grid.GridDims, first, A.Distance + BrickNodes * c, C.Bounds, inside,
+        [&](int, bool isRed, double) {
           red += isRed ? 1 : 0;
           black += isRed ? 0 : 1;
-        }
-        else if (d[n] <= C.Lower)
-        {
-          inside[n / 64] |= std::uint64_t(1) << (n % 64);
-        }
-      }
+        });
     }
     A.RedCount[c] = red;
     A.BlackCount[c] = black;
@@ -512,25 +366,23 @@ struct BandCompactKernel
     }
     std::int64_t first[3], last[3];
     BrickNodeRange(C.Grid, A.Bricks[c], first, last);
-    const double* d = A.Distance + 512 * c;
     std::int64_t red = A.RedFirst[c], black = A.BlackFirst[c];
-    for (int n = 0; n < 512; ++n)
-    {
-      bool isRed = false;
-      if (NodeInGrid(C.Grid, first, n, isRed) && (C.Whole || (C.Lower < d[n] && d[n] < C.Upper)))
-      {
+    ClassifyBrick(C.Grid.GridDims, first, A.Distance + BrickNodes * c, C.Bounds, nullptr, // Inside: counted
+      [&](int n, bool isRed, double d) {
         const std::int64_t s = isRed ? red++ : black++;
         A.NodeOffset[s] = static_cast<std::uint16_t>(n);
-        A.NodeDistance[s] = d[n];
-      }
-    }
+        A.NodeDistance[s] = d;
+      });
   }
 };
 
 // ---------------------------------------------------------------------------
 // The band's neighbour table of step 3 (nvNarrowBand.cxx's IndexBricks and
 // ConnectNeighbours), built where the band's nodes are, so that neither it
-// nor the distances cross to the host and back before the evolution.
+// nor the distances cross to the host and back before the evolution. The
+// brick across a face, a neighbour's place and the Dirichlet slot are
+// nvBandTerms.h's, which the CPU core calls too; the lookups differ (a
+// binary search here, the CPU's slot and rank tables there).
 
 /**
  * The band after step 2, as both sides hold it. Precision, array by array:
@@ -617,30 +469,25 @@ struct AdjacentBricksKernel
   NeighbourConstants C;
   NV_HD void operator()(std::int64_t a) const
   {
-    const std::int64_t b = A.Bricks[a];
-    const std::int64_t at[3] = { b % C.BrickDims[0], (b / C.BrickDims[0]) % C.BrickDims[1],
-      b / (C.BrickDims[0] * C.BrickDims[1]) };
+    std::int64_t at[3];
+    BrickAt(C.BrickDims, A.Bricks[a], at);
     for (int direction = 0; direction < 6; ++direction)
     {
-      std::int64_t next[3] = { at[0], at[1], at[2] };
-      next[direction / 2] += (direction % 2) ? 1 : -1;
-      const bool inGrid = next[direction / 2] >= 0 && next[direction / 2] < C.BrickDims[direction / 2];
-      A.Adjacent[6 * a + direction] = inGrid
-        ? static_cast<std::int32_t>(IndexOf(A.Bricks, 0, A.NumberOfBricks,
-            next[0] + C.BrickDims[0] * (next[1] + C.BrickDims[1] * next[2])))
-        : -1;
+      const std::int64_t next = AdjacentBrick(C.BrickDims, at, direction);
+      A.Adjacent[6 * a + direction] =
+        next >= 0 ? static_cast<std::int32_t>(IndexOf(A.Bricks, 0, A.NumberOfBricks, next)) : -1;
     }
   }
 };
 
 /**
  * Band node s's six neighbours, as ConnectNeighbours: the neighbour at place
- * q of brick slot b (its own brick, or the one across the face it lies on)
- * is the band node with that place among b's nodes of the other colour,
- * found by a binary search there (ConnectNeighbours reads a rank table
- * instead: the same node, so the same index); a neighbour off the band is
- * the Dirichlet slot of s's side (eq. 5). s's brick is found by a binary
- * search of its colour's starts.
+ * q of brick slot b (its own brick, or the one across the face it lies on;
+ * NeighbourPlace) is the band node with that place among b's nodes of the
+ * other colour, found by a binary search there (ConnectNeighbours reads a
+ * rank table instead: the same node, so the same index); a neighbour off
+ * the band is the Dirichlet slot of s's side (DirichletSlot, eq. 5). s's
+ * brick is found by a binary search of its colour's starts.
  */
 struct NeighboursKernel
 {
@@ -652,19 +499,12 @@ struct NeighboursKernel
     const std::int64_t* other = red ? A.BlackStart : A.RedStart;
     const std::int64_t a = LastAtOrBelow(red ? A.RedStart : A.BlackStart, A.NumberOfBricks, s);
     const int n = A.Offset[s];
-    const int ijk[3] = { n & 7, (n >> 3) & 7, n >> 6 };
-    const int step[3] = { 1, 8, 64 };
-    const std::uint32_t dirichlet =
-      static_cast<std::uint32_t>(A.Distance[s] < C.Offset ? A.Size : A.Size + 1);
+    const std::uint32_t dirichlet = DirichletSlot(A.Distance[s], C.Offset, A.Size);
     for (int direction = 0; direction < 6; ++direction)
     {
-      // Place n -/+ 1, 8 or 64 in this brick, or a side's length back in
-      // the brick across the face the node lies on.
-      const int axis = direction / 2;
-      const bool up = direction % 2 == 1;
-      const bool across = up ? ijk[axis] == 7 : ijk[axis] == 0;
+      bool across = false;
+      const int q = NeighbourPlace(n, direction, across);
       const std::int64_t b = across ? A.Adjacent[6 * a + direction] : a;
-      const int q = n + (up ? step[axis] : -step[axis]) * (across ? -7 : 1);
       const std::int64_t t = b >= 0 ? IndexOf(A.Offset, other[b], other[b + 1], static_cast<std::uint16_t>(q)) : -1;
       A.Neighbor[6 * s + direction] = t >= 0 ? static_cast<std::uint32_t>(t) : dirichlet;
     }
