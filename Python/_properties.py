@@ -185,9 +185,8 @@ PROPERTIES = (
         "of a cell of the CPU's). The GPU needs a build "
         "with CUDA and a CUDA device, one process, and {PreserveOffset} off. DEVICE_GPU never falls back to "
         "the CPU: where one of these is missing, or the GPU fails during the run, the run stops with an "
-        "error that says which and to choose DEVICE_CPU or DEVICE_AUTOMATIC. The GPU back end has not yet "
-        "run on a GPU: Automatic stays on "
-        "the CPU until it has passed its tests there. Field data \"DeviceUsed\" holds the device that ran: "
+        "error that says which and to choose DEVICE_CPU or DEVICE_AUTOMATIC. Automatic stays on the CPU until the "
+        "GPU back end has passed its tests on a GPU (where it stands: the documentation's performance page). Field data \"DeviceUsed\" holds the device that ran: "
         "1 (CPU) or 2 (GPU)."),
     # --- Output
     Property(

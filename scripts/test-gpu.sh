@@ -22,8 +22,8 @@
 # build isolation and without dependencies, in a venv that sees the
 # system's packages.
 #
-# The GPU launcher has not yet run on a GPU: this script is its first check
-# there, and it has not been run itself either (no GPU where it was written).
+# Where the GPU stands (what this script has shown on which GPU) is written
+# in one place: doc/performance.md, "On a GPU".
 #
 #   ./scripts/test-gpu.sh                  # the 1024³ sphere in the table
 #   NV_GPU_GRIDS="512 1024 2048" ./scripts/test-gpu.sh

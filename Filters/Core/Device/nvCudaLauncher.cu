@@ -13,8 +13,8 @@
 //
 // Compiled where CMake finds a CUDA compiler (NARROWVOLUME_CUDA): the suite
 // compiles and links it on machines without a GPU (scripts/test.sh, nvcc
-// from PyPI). It has NOT yet run on a GPU: scripts/test-gpu.sh is the check
-// on a machine with one.
+// from PyPI); scripts/test-gpu.sh runs it on a machine with a GPU (where it
+// stands: doc/performance.md, "On a GPU").
 //
 // Reductions (the sweeps' max change, the stopping rule's norms): each block
 // reduces its nodes in shared memory and writes one partial; the host adds

@@ -6,8 +6,7 @@
 // launcher, batch by batch, for the band's step 1 (BuildNarrowBand's
 // BrickDistanceSource). They are TruncatedDistance::ComputeBrick's and
 // BrickWithin's bit for bit through the host launcher (TestCoreDevice), and
-// are written to be on the GPU too (not yet run there), so the band is the
-// CPU's.
+// are written to be on the GPU too, so the band is the CPU's.
 //
 // The band is built on the device too (BuildsBand: steps 1 to 3): each
 // batch's band nodes are picked there and kept, only their counts and

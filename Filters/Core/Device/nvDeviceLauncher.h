@@ -8,9 +8,9 @@
 //
 // The CUDA launcher is compiled only where CMake finds a CUDA compiler
 // (NARROWVOLUME_CUDA); without it, MakeCudaLauncher says the build has no
-// CUDA. It has not yet run on a GPU: the suite runs it through the host
-// launcher and compiles the CUDA one (scripts/test.sh), and
-// scripts/test-gpu.sh runs it on a machine with one.
+// CUDA. The suite runs the kernels through the host launcher and compiles
+// the CUDA one (scripts/test.sh); scripts/test-gpu.sh runs it on a machine
+// with a GPU (where it stands: doc/performance.md, "On a GPU").
 #ifndef nvDeviceLauncher_h
 #define nvDeviceLauncher_h
 

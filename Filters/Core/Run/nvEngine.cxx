@@ -29,8 +29,8 @@ std::string DeviceCannot(const Settings& settings, bool distributed)
 
 std::unique_ptr<Engine> MakeEngine(const Settings& settings, bool distributed, GpuKernels kernels, std::string& error)
 {
-  // Automatic is the CPU: the GPU's kernels have not yet passed their tests
-  // on a GPU (scripts/test-gpu.sh).
+  // Automatic is the CPU until the GPU's kernels pass scripts/test-gpu.sh on
+  // a GPU (where they stand: doc/performance.md, "On a GPU").
   if (settings.Device != ComputeDevice::GPU)
   {
     return MakeCpuEngine();
