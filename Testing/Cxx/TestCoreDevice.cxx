@@ -67,14 +67,14 @@ namespace
 {
 bool OnGpu = false; ///< the CUDA launcher instead of the host launcher
 
-std::unique_ptr<nv::device::EvolutionLauncher> Launcher()
+std::unique_ptr<nv::device::Launcher> Launcher()
 {
   if (!OnGpu)
   {
     return nv::device::MakeHostLauncher();
   }
   std::string why;
-  std::unique_ptr<nv::device::EvolutionLauncher> launcher = nv::device::MakeCudaLauncher(why);
+  std::unique_ptr<nv::device::Launcher> launcher = nv::device::MakeCudaLauncher(why);
   if (!launcher)
   {
     std::printf("FAILED: no CUDA launcher: %s\n", why.c_str());
@@ -122,7 +122,7 @@ nv::NarrowBand BandOf(const std::vector<double>& xyz, const nv::Parameters& para
 }
 
 void CompareSurface(const char* what, const nv::NarrowBand& band, const nv::BandValues& cpuPhi,
-  const nv::BandValues& devicePhi, const nv::Parameters& parameters, nv::device::EvolutionLauncher& launcher);
+  const nv::BandValues& devicePhi, const nv::Parameters& parameters, nv::device::Launcher& launcher);
 
 /// The device back end's phi against the CPU core's solver on one band,
 /// then its surface against the CPU core's.
@@ -134,7 +134,7 @@ void Compare(const char* what, const std::vector<double>& xyz, const nv::Paramet
   nv::AllenCahnSolver solver(band, parameters);
   const std::vector<nv::StepReport> cpu = solver.Run();
 
-  std::unique_ptr<nv::device::EvolutionLauncher> launcher = Launcher();
+  std::unique_ptr<nv::device::Launcher> launcher = Launcher();
   if (!launcher)
   {
     NV_CHECK(false);
@@ -285,7 +285,7 @@ bool Closed(const nv::SurfaceMesh& mesh, int& pieces)
 /// the same vertices, normals and triangles bit for bit; on a GPU, the
 /// vertices within 0.05 h of the CPU's; both sheets closed either way.
 void CompareSurface(const char* what, const nv::NarrowBand& band, const nv::BandValues& cpuPhi,
-  const nv::BandValues& devicePhi, const nv::Parameters& parameters, nv::device::EvolutionLauncher& launcher)
+  const nv::BandValues& devicePhi, const nv::Parameters& parameters, nv::device::Launcher& launcher)
 {
   nv::SurfaceMesh cpu, device;
   NV_CHECK(nv::ContourBricks(band.GridNodes, nv::BandField(band, cpuPhi, parameters), cpu));
@@ -335,7 +335,7 @@ void CompareDistance(
   const std::int64_t numberOfPoints = static_cast<std::int64_t>(xyz.size() / 3);
   const nv::TruncatedDistance distance(grid, xyz.data(), numberOfPoints, parameters.Reach());
   const nv::TruncatedDistance gridOnly(grid, parameters.Reach()); // the device sorts the points
-  std::unique_ptr<nv::device::EvolutionLauncher> launcher = Launcher();
+  std::unique_ptr<nv::device::Launcher> launcher = Launcher();
   if (!launcher)
   {
     NV_CHECK(false);

@@ -114,7 +114,7 @@ void Release(T*& memory, std::int64_t count, double& bytes)
   }
 }
 
-class CudaLauncher : public EvolutionLauncher
+class CudaLauncher : public Launcher
 {
 public:
   explicit CudaLauncher(int device)
@@ -754,7 +754,7 @@ bool CudaCompiled()
   return true;
 }
 
-std::unique_ptr<EvolutionLauncher> MakeCudaLauncher(std::string& why)
+std::unique_ptr<Launcher> MakeCudaLauncher(std::string& why)
 {
   int count = 0;
   const cudaError_t status = cudaGetDeviceCount(&count);
@@ -766,7 +766,7 @@ std::unique_ptr<EvolutionLauncher> MakeCudaLauncher(std::string& why)
   }
   int device = 0;
   Check(cudaGetDevice(&device), "cudaGetDevice");
-  return std::unique_ptr<EvolutionLauncher>(new CudaLauncher(device));
+  return std::unique_ptr<Launcher>(new CudaLauncher(device));
 }
 
 } // namespace device

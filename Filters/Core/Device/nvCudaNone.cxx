@@ -14,7 +14,7 @@ bool CudaCompiled()
   return false;
 }
 
-std::unique_ptr<EvolutionLauncher> MakeCudaLauncher(std::string& why)
+std::unique_ptr<Launcher> MakeCudaLauncher(std::string& why)
 {
   why = "this build of NarrowVolume has no CUDA (it was built without a CUDA compiler: see NARROWVOLUME_CUDA)";
   return nullptr;

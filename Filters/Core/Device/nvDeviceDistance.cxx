@@ -15,9 +15,9 @@ DistanceConstants DistanceConstantsOf(const TruncatedDistance& distance, double 
 }
 
 LauncherDistance::LauncherDistance(const TruncatedDistance& grid, const double* cloud, std::int64_t numberOfPoints,
-  EvolutionLauncher& launcher, std::int64_t batch)
+  Launcher& launcher, std::int64_t batch)
   : Distance(grid)
-  , Launcher(launcher)
+  , Kernels(launcher)
   , Batch(std::max<std::int64_t>(1, batch))
 {
   launcher.SortPoints(cloud, numberOfPoints, PointConstantsOf(grid.GetGrid(), grid.GetReach()), this->Reached);
@@ -25,17 +25,17 @@ LauncherDistance::LauncherDistance(const TruncatedDistance& grid, const double* 
 
 LauncherDistance::~LauncherDistance()
 {
-  this->Launcher.FreePoints();
+  this->Kernels.FreePoints();
 }
 
 void LauncherDistance::Compute(
   const std::int64_t* bricks, std::int64_t count, double coverRadius, double* distance, std::uint8_t* covered)
 {
-  this->Launcher.DistanceBricks(
+  this->Kernels.DistanceBricks(
     bricks, count, DistanceConstantsOf(this->Distance, this->Dense ? 0.0 : coverRadius), distance, covered);
   if (this->Dense)
   {
-    this->Launcher.DenseBricks(count);
+    this->Kernels.DenseBricks(count);
   }
 }
 
@@ -47,17 +47,17 @@ void LauncherDistance::CountNodes(const std::int64_t* bricks, std::int64_t count
   constants.Bounds.Lower = lower;
   constants.Bounds.Upper = upper;
   constants.Bounds.Whole = whole;
-  this->Launcher.DistanceBricks(bricks, count, constants.Grid, nullptr, nullptr); // kept on the device
+  this->Kernels.DistanceBricks(bricks, count, constants.Grid, nullptr, nullptr); // kept on the device
   if (this->Dense)
   {
-    this->Launcher.DenseBricks(count); // phi0 and d of eq. (2), (6) into the dense arrays
+    this->Kernels.DenseBricks(count); // phi0 and d of eq. (2), (6) into the dense arrays
   }
-  this->Launcher.BandNodes(count, constants, red, black, inside);
+  this->Kernels.BandNodes(count, constants, red, black, inside);
 }
 
 void LauncherDistance::StoreNodes(std::int64_t redCount, std::int64_t size, std::uint16_t* offset)
 {
-  this->Launcher.StoreBand(redCount, size, offset);
+  this->Kernels.StoreBand(redCount, size, offset);
 }
 
 void LauncherDistance::ConnectNeighbours(const NarrowBand& band, double offsetDistance)
@@ -68,11 +68,11 @@ void LauncherDistance::ConnectNeighbours(const NarrowBand& band, double offsetDi
     constants.BrickDims[a] = this->Distance.GetBrickDims()[a];
   }
   constants.Offset = offsetDistance;
-  this->Launcher.ConnectBand(band.Bricks.data(), band.RedStart.data(), band.BlackStart.data(),
+  this->Kernels.ConnectBand(band.Bricks.data(), band.RedStart.data(), band.BlackStart.data(),
     static_cast<std::int64_t>(band.Bricks.size()), constants);
 }
 
-void DownloadBand(EvolutionLauncher& launcher, NarrowBand& band)
+void DownloadBand(BandLauncher& launcher, NarrowBand& band)
 {
   band.Distance.resize(static_cast<std::size_t>(band.Size()));
   band.Neighbor.resize(static_cast<std::size_t>(6 * band.Size()));

@@ -53,7 +53,7 @@ public:
   /// only, made without points. `grid` and `launcher` must outlive this
   /// object, which lets the points go (FreePoints).
   LauncherDistance(const TruncatedDistance& grid, const double* cloud, std::int64_t numberOfPoints,
-    EvolutionLauncher& launcher, std::int64_t batch = DefaultBatch);
+    Launcher& launcher, std::int64_t batch = DefaultBatch);
   ~LauncherDistance() override;
   LauncherDistance(const LauncherDistance&) = delete;
   LauncherDistance& operator=(const LauncherDistance&) = delete;
@@ -80,7 +80,7 @@ public:
 
 private:
   const TruncatedDistance& Distance;
-  EvolutionLauncher& Launcher;
+  Launcher& Kernels;
   std::int64_t Batch;
   bool Dense = false;
   std::vector<std::int64_t> Reached;
@@ -89,7 +89,7 @@ private:
 /// The distances and neighbour table of the band that `launcher` built
 /// (BuildNarrowBand with a LauncherDistance) into `band`, as the CPU's band
 /// holds them: for the checks against it. Throws DeviceError.
-void DownloadBand(EvolutionLauncher& launcher, NarrowBand& band);
+void DownloadBand(BandLauncher& launcher, NarrowBand& band);
 
 } // namespace device
 } // namespace nv

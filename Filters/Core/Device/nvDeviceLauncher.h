@@ -38,13 +38,18 @@ public:
   using std::runtime_error::runtime_error;
 };
 
+// A launcher's kernels come in four groups, one interface each, so that a
+// stage's code sees only its own: the points' sort, the distances and the
+// band (BandLauncher: nvDeviceDistance.h), the evolution
+// (EvolutionLauncher: nvDeviceEvolution.h), the surface (SurfaceLauncher:
+// nvDeviceSurface.h) and the dense volume (DenseLauncher). Launcher is all
+// four, as the host and the CUDA launchers implement them.
+
+/// The evolution's kernels (nvDeviceKernels.h), run by nvDeviceEvolution.h.
 class EvolutionLauncher
 {
 public:
   virtual ~EvolutionLauncher();
-  /// "host launcher" or "CUDA (device name)".
-  virtual std::string Name() const = 0;
-
   /// Holds the arrays of a band of `size` nodes (EvolutionArrays) and copies
   /// the neighbour table (6 per node) and the distances there; phi's two
   /// Dirichlet slots (eq. 5) get `inside` and `outside`. The host launcher
@@ -72,13 +77,15 @@ public:
   /// the device for the dense volume (DenseBand) and the surface
   /// (ContourCounts), so that it does not go up again.
   virtual void ReleaseEvolution() = 0;
-  /// The most bytes the launcher has held on its device at once (0 for the
-  /// host launcher).
-  virtual double DeviceBytes() const { return 0.0; }
+};
 
-  // The truncated distance of eq. (6) (DistanceKernel, CoveredKernel), used
-  // before the evolution: nvDeviceDistance.h calls these.
-
+/// The truncated distance of eq. (6) and the band built from it
+/// (DistanceKernel, CoveredKernel, the band's kernels), before the
+/// evolution: nvDeviceDistance.h calls these.
+class BandLauncher
+{
+public:
+  virtual ~BandLauncher();
   /// Sorts the points on the device: `cloud` (host memory, 3 a point, world
   /// coordinates, all in the grid's box) copied to the device and sorted
   /// into the grid's bricks as TruncatedDistance's constructor does
@@ -118,10 +125,14 @@ public:
   /// Lets the points go (their device memory freed), with the batches'
   /// lists of band nodes that StoreBand did not take; the held band stays.
   virtual void FreePoints() = 0;
+};
 
-  // The surface (nvSurfaceKernels.h), after the evolution:
-  // Output/nvDeviceSurface.h calls these.
-
+/// The surface (nvSurfaceKernels.h), after the evolution:
+/// nvDeviceSurface.h calls these.
+class SurfaceLauncher
+{
+public:
+  virtual ~SurfaceLauncher();
   /// Holds the band's arrays, phi and the cut bricks of `band` (host memory:
   /// Bricks, RedStart, BlackStart, Inside of NumberOfBricks bricks, Offset
   /// and Phi of `numberOfNodes` nodes, CutBricks, Cases; the host launcher
@@ -140,12 +151,16 @@ public:
   virtual void ContourGeometry(const std::int64_t* firstVertex, const std::int64_t* firstTriangle,
     std::int64_t numberOfVertices, std::int64_t numberOfTriangles, double* points, float* normals,
     long long* triangles) = 0;
+};
 
-  // The dense volume (nvVolumeKernels.h), when the run fills one with
-  // Device GPU (nvReconstruction.cxx): DenseBegin before the band's
-  // construction, DenseBricks after each batch of its distances
-  // (nvDeviceDistance.h), DenseBand and DenseDownload after the evolution.
-
+/// The dense volume (nvVolumeKernels.h), when the run fills one with
+/// Device GPU (Run/nvDeviceEngine.cxx): DenseBegin before the band's
+/// construction, DenseBricks after each batch of its distances
+/// (nvDeviceDistance.h), DenseBand and DenseDownload after the evolution.
+class DenseLauncher
+{
+public:
+  virtual ~DenseLauncher();
   /// Holds the dense arrays `arrays` (host memory, constants.Nodes() values
   /// each; a null one is not filled) and clears them (DenseClearKernel):
   /// the host launcher fills them in place, the CUDA launcher on the device
@@ -162,6 +177,21 @@ public:
   virtual void DenseDownload() = 0;
 };
 
+/// A launcher: the four groups of kernels on one device.
+class Launcher
+  : public BandLauncher
+  , public EvolutionLauncher
+  , public SurfaceLauncher
+  , public DenseLauncher
+{
+public:
+  /// "host launcher" or "CUDA (device name)".
+  virtual std::string Name() const = 0;
+  /// The most bytes the launcher has held on its device at once (0 for the
+  /// host launcher).
+  virtual double DeviceBytes() const { return 0.0; }
+};
+
 /// Where each brick of a batch puts its band nodes (BandNodeArrays'
 /// RedFirst, BlackFirst) from its counts: the batch's red nodes first,
 /// brick after brick, then its black ones. count + 1 values each: the last
@@ -170,7 +200,7 @@ void FirstNodes(const std::int32_t* red, const std::int32_t* black, std::int64_t
   std::vector<std::int64_t>& redFirst, std::vector<std::int64_t>& blackFirst);
 
 /// The host launcher: the kernels over nv::ParallelFor and its reductions.
-std::unique_ptr<EvolutionLauncher> MakeHostLauncher();
+std::unique_ptr<Launcher> MakeHostLauncher();
 
 /// Whether this build has the CUDA launcher (NARROWVOLUME_CUDA).
 bool CudaCompiled();
@@ -178,7 +208,7 @@ bool CudaCompiled();
  * The CUDA launcher on the current CUDA device, or null with `why` set: the
  * build has no CUDA, or the CUDA runtime finds no device (its words in `why`).
  */
-std::unique_ptr<EvolutionLauncher> MakeCudaLauncher(std::string& why);
+std::unique_ptr<Launcher> MakeCudaLauncher(std::string& why);
 
 } // namespace device
 } // namespace nv

@@ -17,6 +17,9 @@ namespace nv
 namespace device
 {
 EvolutionLauncher::~EvolutionLauncher() = default;
+BandLauncher::~BandLauncher() = default;
+SurfaceLauncher::~SurfaceLauncher() = default;
+DenseLauncher::~DenseLauncher() = default;
 
 void FirstNodes(const std::int32_t* red, const std::int32_t* black, std::int64_t count,
   std::vector<std::int64_t>& redFirst, std::vector<std::int64_t>& blackFirst)
@@ -76,7 +79,7 @@ double Sum(std::int64_t begin, std::int64_t end, const Kernel& kernel)
   });
 }
 
-class HostLauncher : public EvolutionLauncher
+class HostLauncher : public Launcher
 {
 public:
   std::string Name() const override { return "host launcher"; }
@@ -349,9 +352,9 @@ private:
 };
 } // namespace
 
-std::unique_ptr<EvolutionLauncher> MakeHostLauncher()
+std::unique_ptr<Launcher> MakeHostLauncher()
 {
-  return std::unique_ptr<EvolutionLauncher>(new HostLauncher());
+  return std::unique_ptr<Launcher>(new HostLauncher());
 }
 
 } // namespace device

@@ -68,7 +68,7 @@ std::vector<std::int64_t> CutBricksOf(const NarrowBand& band)
 }
 
 void ContourOnDevice(const Grid& grid, const NarrowBand& band, const BandValues& phi, const Parameters& parameters,
-  device::EvolutionLauncher& launcher, SurfaceSink& sink)
+  device::SurfaceLauncher& launcher, SurfaceSink& sink)
 {
   device::ContourConstants constants;
   const std::array<std::int64_t, 3> dims = BrickDimensions(grid);

@@ -45,7 +45,7 @@ std::vector<std::int64_t> CutBricksOf(const NarrowBand& band);
  * the surface: the caller truncates it).
  */
 void ContourOnDevice(const Grid& grid, const NarrowBand& band, const BandValues& phi, const Parameters& parameters,
-  device::EvolutionLauncher& launcher, SurfaceSink& sink);
+  device::SurfaceLauncher& launcher, SurfaceSink& sink);
 
 } // namespace nv
 

@@ -48,7 +48,7 @@ device::DenseConstants DenseConstantsOf(const Grid& grid, const Parameters& sche
 class DeviceEngine : public Engine
 {
 public:
-  DeviceEngine(std::unique_ptr<device::EvolutionLauncher> launcher, bool onHost)
+  DeviceEngine(std::unique_ptr<device::Launcher> launcher, bool onHost)
     : Launcher(std::move(launcher))
     , OnHost(onHost)
   {
@@ -163,7 +163,7 @@ private:
     }
   }
 
-  std::unique_ptr<device::EvolutionLauncher> Launcher;
+  std::unique_ptr<device::Launcher> Launcher;
   bool OnHost = false;
   bool Dense = false; ///< the device fills the dense arrays
   BandValues DevicePhi;
@@ -173,7 +173,7 @@ private:
 
 std::unique_ptr<Engine> MakeDeviceEngine(GpuKernels kernels, std::string& error)
 {
-  std::unique_ptr<device::EvolutionLauncher> launcher;
+  std::unique_ptr<device::Launcher> launcher;
   if (kernels == GpuKernels::OnHost)
   {
     launcher = device::MakeHostLauncher();
