@@ -144,7 +144,7 @@ def compare(core, name, xyz, offset, spacing, device, chi, radius, volume):
         if table and (error.max() > table[0] or error.mean() > table[1]):
             errors += " (Table 1: %.3e, %.3e)" % table
             failures.append("the inner sheet's error exceeds Table 1's")
-    collect = "band: collect"  # the distances (eq. 6) and the band's nodes, step 1
+    collect = "band: collect"  # the distances (eq. 6) and the band's nodes, the collect pass
     nan = float("nan")
     print("%s: %d band nodes, %d vertices, the farthest %.3g h from the CPU's%s%s; whole run %.3f s (%s), "
           "%.3f s (CPU); distance and band nodes %.3f s and %.3f s; evolution %.3f s and %.3f s; "

@@ -394,7 +394,7 @@ void CompareDistance(
   NV_CHECK(differ == 0);
   NV_CHECK(coverDiffer == 0);
 
-  // The band built on the device (steps 1 to 3: BandCountKernel,
+  // The band built on the device (the collect, store and connect passes: BandCountKernel,
   // BandCompactKernel, StoreBand's joins, AdjacentBricksKernel,
   // NeighboursKernel; its distances and neighbour table brought back here),
   // and with a visitor (no brick skipped, each brick's distances handed

@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
 // SPDX-License-Identifier: BSD-3-Clause
 // The truncated distance (eq. 6) and the narrow band with its neighbour
-// indices (the paper's steps 1-3) on a tiny grid, against values computed by
+// indices (the paper's band construction: collect, store, connect) on a tiny grid, against values computed by
 // hand and by brute force over every node.
 #include "nvGrid.h"
 #include "nvNarrowBand.h"

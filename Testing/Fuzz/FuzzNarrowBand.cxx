@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
 // SPDX-License-Identifier: BSD-3-Clause
 // libFuzzer target for the truncated distance and the narrow band (eq. 6, 7
-// and the paper's steps 1-3). The input bytes choose the offset, xi, the
+// and the paper's band construction: collect, store, connect). The input bytes choose the offset, xi, the
 // spacing, the domain mode and up to 200 points; the target checks the band
 // against brute force and its neighbour indices for consistency, and aborts
 // on any violation.

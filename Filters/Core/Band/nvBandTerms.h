@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
 // SPDX-License-Identifier: BSD-3-Clause
 // The truncated distance's and the narrow band's terms (eq. 5-7), written
-// once for the CPU core (TruncatedDistance, NarrowBand's steps 1 and 3) and
+// once for the CPU core (TruncatedDistance, NarrowBand's collect and connect passes) and
 // the device back end's kernels (Device/nvDeviceKernels.h), as nvPointSort.h
 // does for the points' sort. The CPU core scatters each point over its box
 // of nodes and the kernels gather each node's points, so what is shared is
@@ -19,14 +19,14 @@
 //   AxisSquare, AddSquare, BeyondReach, TruncatedOf: d of eq. (6)
 //   Larger, CoversBrick, BucketCovers, BrickCovered: the covering test
 //   BandBounds, IsRed, InBand, InsideShell, ResetInside, SetBit,
-//   ClassifyBrick                          step 1's band nodes of a brick
-//   AdjacentBrick, NeighbourPlace, DirichletSlot: step 3's neighbours
+//   ClassifyBrick                          the collect pass's band nodes of a brick
+//   AdjacentBrick, NeighbourPlace, DirichletSlot: the connect pass's neighbours
 //
 // Written twice still, each side's way by design: the distance's loops
 // (ComputeBrick scatters each point over its box with a vectorised row
 // minimum, DistanceKernel gathers a node's points, a thread a node, with no
-// atomic minimum); where step 1's band nodes go (growing lists a brick on
-// the CPU, counts then a compaction on the device); how step 3 finds a
+// atomic minimum); where the collect pass's band nodes go (growing lists a brick on
+// the CPU, counts then a compaction on the device); how the connect pass finds a
 // brick's slot and a neighbour's index (a table over the grid's bricks and
 // a rank table on the CPU, binary searches, IndexOf, on the device, which
 // also finds a node's brick by LastAtOrBelow where the CPU loops brick by
@@ -323,7 +323,7 @@ NV_HD inline bool BrickCovered(
 }
 
 // ---------------------------------------------------------------------------
-// Step 1: the band's nodes of one brick.
+// The collect pass: the band's nodes of one brick.
 
 /// The band's bounds: l - eta/2 < d < l + eta/2 (|phi0| < 1 - delta), or
 /// every node in Domain::WholeDomain mode.
@@ -401,7 +401,7 @@ NV_HD inline void ClassifyBrick(const std::int64_t gridDims[3], const std::int64
 }
 
 // ---------------------------------------------------------------------------
-// Step 3: the neighbour table.
+// The connect pass: the neighbour table.
 
 /// The brick across face `direction` (-x, +x, -y, +y, -z, +z) of the brick
 /// at `at` (BrickAt), or -1 past the grid's end.

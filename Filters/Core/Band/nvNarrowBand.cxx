@@ -34,7 +34,7 @@ void ClassifyBrickNodes(const TruncatedDistance& distance, const Parameters& par
   ClassifyBrick(distance.GetGrid().Dims.data(), first, d, bounds, inside, fn);
 }
 
-/// Whether step 1 may skip the bricks that BrickWithin(brick, lower) finds
+/// Whether the collect pass may skip the bricks that BrickWithin(brick, lower) finds
 /// deep inside the shell (none is skipped in whole domain mode, nor when
 /// the visitor wants every brick's distances).
 bool SkipsCoveredBricks(const Parameters& parameters, const BrickVisitor& visitor)
@@ -123,7 +123,7 @@ struct BrickBand
   std::vector<BandEntry> Red, Black;
 };
 
-/// Step 1: the bricks to visit, in the computed layers: those the points
+/// The collect pass: the bricks to visit, in the computed layers: those the points
 /// reach (as `source` found them, where it sorted the points, else as
 /// `distance` finds them). Whole domain mode visits all of them.
 std::vector<std::int64_t> BricksToVisit(const TruncatedDistance& distance, const Parameters& parameters,
@@ -158,7 +158,7 @@ std::vector<std::int64_t> BricksToVisit(const TruncatedDistance& distance, const
   return bricks;
 }
 
-/// Step 1, continued: the distances brick by brick, band.Bricks' band nodes
+/// The collect pass, continued: the distances brick by brick, band.Bricks' band nodes
 /// into perBrick (a transient list that grows with the band) and the other
 /// nodes inside the shell into band.Inside. False if the monitor stopped it.
 bool CollectBandNodes(const TruncatedDistance& distance, const Parameters& parameters, Monitor* monitor,
@@ -202,7 +202,7 @@ bool ForEachBatch(std::int64_t numberOfBricks, std::int64_t batch, Monitor* moni
   return !(monitor && monitor->Aborted());
 }
 
-/// Step 1, continued, with the distances from `source` (the device back
+/// The collect pass, continued, with the distances from `source` (the device back
 /// end), batch by batch: the same band nodes and Inside bits as
 /// CollectBandNodes when the source gives ComputeBrick's and BrickWithin's
 /// results. False if the monitor stopped it.
@@ -245,7 +245,7 @@ bool CollectBandNodesFrom(BrickDistanceSource& source, const TruncatedDistance& 
   });
 }
 
-/// Step 2's tables from each brick's counts of red and black band nodes
+/// The store pass's tables from each brick's counts of red and black band nodes
 /// (red(a), black(a)): band.RedCount, band.RedStart and band.BlackStart,
 /// the black nodes after all the red ones. Returns the band's size.
 template <typename Red, typename Black>
@@ -273,7 +273,7 @@ bool TooLarge(std::int64_t size, const Parameters& parameters)
   return size > MaximumBandSize || (parameters.MaximumBandNodes >= 0 && size > parameters.MaximumBandNodes);
 }
 
-/// Step 2: the band nodes stored compactly, red ones first, in brick order
+/// The store pass: the band nodes stored compactly, red ones first, in brick order
 /// (band.Offset, band.Distance, band.RedStart, band.BlackStart), perBrick
 /// emptied. Returns 0; or, when the band is over the limit, its size, and
 /// nothing is stored.
@@ -314,7 +314,7 @@ std::int64_t StoreBandNodes(std::vector<BrickBand>& perBrick, const Parameters& 
   return 0;
 }
 
-/// What step 3 knows of the band's bricks: for each, the bricks across its
+/// What the connect pass knows of the band's bricks: for each, the bricks across its
 /// six faces (slots in band.Bricks, -1 for none); for each brick holding band
 /// nodes, a 512-bit mask of them and each one's rank among the brick's nodes
 /// of its colour (a byte a place, at most 256 of a colour).
@@ -379,7 +379,7 @@ BrickIndex IndexBricks(const TruncatedDistance& distance, const NarrowBand& band
   return index;
 }
 
-/// Step 3: each band node's six neighbours (band.Neighbor): a neighbour's
+/// The connect pass: each band node's six neighbours (band.Neighbor): a neighbour's
 /// index is the start of its colour in its brick plus its rank, found within
 /// the node's brick or the one across the face it lies on; a neighbour off
 /// the band is the Dirichlet value of the node's side (eq. 5).
@@ -420,10 +420,10 @@ void ConnectNeighbours(const BrickIndex& index, const Parameters& parameters, Na
   });
 }
 
-/// Steps 1 to 3 where `source` builds the band (the device back end): step
-/// 1's counts and Inside bits come back batch by batch, step 2's tables are
+/// The collect, store and connect passes where `source` builds the band (the device back end): the
+/// collect pass's counts and Inside bits come back batch by batch, the store pass's tables are
 /// made here from the counts and the source stores the nodes (band.Offset
-/// comes back), step 3 is the source's. band.Distance and band.Neighbor stay
+/// comes back), the connect pass is the source's. band.Distance and band.Neighbor stay
 /// empty. Returns false if the monitor stopped it; sets band.RefusedSize,
 /// and stores nothing, when the band is over the limit.
 bool BuildBandOnSource(BrickDistanceSource& source, const TruncatedDistance& distance,
@@ -437,7 +437,7 @@ bool BuildBandOnSource(BrickDistanceSource& source, const TruncatedDistance& dis
   const bool whole = parameters.Domain == Domain::WholeDomain;
   const double coverRadius = SkipsCoveredBricks(parameters, nullptr) ? lower : 0.0;
   const std::int64_t batch = std::max<std::int64_t>(1, std::min(source.BatchSize(), numberOfBricks));
-  // Step 1: the distances and each brick's band nodes, counted.
+  // The collect pass: the distances and each brick's band nodes, counted.
   const bool collected = times.Time("band: collect", [&]() {
     return ForEachBatch(numberOfBricks, batch, monitor, [&](std::int64_t done, std::int64_t count) {
       source.CountNodes(&band.Bricks[done], count, coverRadius, lower, distance.GetReach(), whole, &red[done],
@@ -448,7 +448,7 @@ bool BuildBandOnSource(BrickDistanceSource& source, const TruncatedDistance& dis
   {
     return false;
   }
-  // Step 2: stored compactly, unless the band is too large.
+  // The store pass: stored compactly, unless the band is too large.
   const std::int64_t size = times.Time("band: store", [&]() {
     const std::int64_t nodes = SetStarts(
       numberOfBricks, [&](std::int64_t a) { return red[a]; }, [&](std::int64_t a) { return black[a]; }, band);
@@ -464,12 +464,12 @@ bool BuildBandOnSource(BrickDistanceSource& source, const TruncatedDistance& dis
     band.RefusedSize = size;
     return true;
   }
-  // Step 3: each node's six neighbours.
+  // The connect pass: each node's six neighbours.
   times.Time("band: neighbours", [&]() { source.ConnectNeighbours(band, parameters.OffsetDistance); });
   return true;
 }
 
-/// Steps 1 to 3 on the host, from the distances computed here (or taken
+/// The collect, store and connect passes on the host, from the distances computed here (or taken
 /// from `source`, batch by batch). Returns false if the monitor stopped it;
 /// sets band.RefusedSize, and stores nothing, when the band is over the
 /// limit.
@@ -484,14 +484,14 @@ bool BuildBandOnHost(const TruncatedDistance& distance, const Parameters& parame
   {
     return false;
   }
-  // Step 2: stored compactly, unless the band is too large.
+  // The store pass: stored compactly, unless the band is too large.
   band.RefusedSize = times.Time("band: store", [&]() { return StoreBandNodes(perBrick, parameters, band); });
   if (band.RefusedSize > 0)
   {
     return true;
   }
   ReleaseFreedMemory(); // before the neighbour indices, the band's largest array
-  // Step 3: each node's six neighbours.
+  // The connect pass: each node's six neighbours.
   const BrickIndex index = times.Time("band: index bricks", [&]() { return IndexBricks(distance, band); });
   times.Time("band: neighbours", [&]() { ConnectNeighbours(index, parameters, band); });
   return true;
@@ -529,7 +529,7 @@ NarrowBand BuildNarrowBand(const TruncatedDistance& distance, const Parameters& 
   {
     part = &whole;
   }
-  // Step 1: the bricks to visit; then their band nodes (steps 1-3).
+  // The collect pass: the bricks to visit; then their band nodes (collect, store, connect).
   band.Bricks = BricksToVisit(distance, parameters, *part, source);
   const bool built = source && source->BuildsBand() && !visitor
     ? BuildBandOnSource(*source, distance, parameters, monitor, *times, band)

@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
 // SPDX-License-Identifier: BSD-3-Clause
 // The discrete narrow band of section 3 and the paper's data structure box
-// (steps 1-3): the band nodes stored compactly, brick by brick, with their
+// (collect, store, connect): the band nodes stored compactly, brick by brick, with their
 // place in the brick, their distance and the indices of their six neighbours.
 #ifndef nvNarrowBand_h
 #define nvNarrowBand_h
@@ -29,7 +29,7 @@ class Monitor;
  * Neighbour indices point into a phi array of size L + 2: a neighbour that is
  * not a band node reads the Dirichlet value of eq. (5), slot L (1 - delta)
  * when the node's own phi0 > 0 and slot L + 1 (-1 + delta) otherwise, as in
- * the paper's step 3.
+ * the paper's band construction (its third step, our connect pass).
  */
 struct NarrowBand
 {
@@ -124,7 +124,7 @@ public:
 
   /**
    * Whether the source builds the band's arrays itself, where its distances
-   * are (CountNodes, StoreNodes, ConnectNeighbours: steps 1 to 3 on the
+   * are (CountNodes, StoreNodes, ConnectNeighbours: the collect, store and connect passes on the
    * device): only the counts, the Inside bits and Offset come to the band,
    * whose Distance and Neighbor then stay empty, held by the source's
    * device for the evolution (nvDeviceEvolution.h). Used where no visitor
@@ -132,7 +132,7 @@ public:
    */
   virtual bool BuildsBand() const { return false; }
   /**
-   * Step 1 for the `count` bricks `bricks`, as CollectBandNodes does it from
+   * The collect pass for the `count` bricks `bricks`, as CollectBandNodes does it from
    * Compute's distances, the band's nodes kept by the source: `red[a]`,
    * `black[a]`: brick a's band nodes of each colour; `inside`: 8 words a
    * brick, NarrowBand::Inside's. lower, upper: the band's bounds l -/+
@@ -141,11 +141,11 @@ public:
    */
   virtual void CountNodes(const std::int64_t* bricks, std::int64_t count, double coverRadius, double lower,
     double upper, bool whole, std::int32_t* red, std::int32_t* black, std::uint64_t* inside);
-  /// Step 2: the nodes CountNodes kept stored as NarrowBand's Offset and
+  /// The store pass: the nodes CountNodes kept stored as NarrowBand's Offset and
   /// Distance (`size` nodes, the `redCount` red ones first); Offset into
   /// `offset` (size values).
   virtual void StoreNodes(std::int64_t redCount, std::int64_t size, std::uint16_t* offset);
-  /// Step 3: the band's neighbour table (as NarrowBand::Neighbor), from
+  /// The connect pass: the band's neighbour table (as NarrowBand::Neighbor), from
   /// `band`'s Bricks, RedStart and BlackStart; l is `offsetDistance`.
   virtual void ConnectNeighbours(const NarrowBand& band, double offsetDistance);
 };
@@ -160,9 +160,9 @@ public:
  * if set, gets the seconds of steps 1 ("band: collect", the distances), 2
  * ("band: store"), and 3 ("band: index bricks", "band: neighbours"; by a
  * source that builds the band, "band: neighbours" only).
- * source: if set, step 1 takes the distances from it, batch by batch,
+ * source: if set, the collect pass takes the distances from it, batch by batch,
  * instead of computing them on the host (the same band, bit for bit); and
- * where it builds the band (BuildsBand) and no visitor is set, steps 1 to 3
+ * where it builds the band (BuildsBand) and no visitor is set, the collect, store and connect passes
  * run there: the band's Distance and Neighbor are then the source's, not
  * the returned band's.
  */

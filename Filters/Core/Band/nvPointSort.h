@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
 // SPDX-License-Identifier: BSD-3-Clause
 // The points sorted into the grid's bricks of 8 x 8 x 8 nodes (a counting
-// sort) and the bricks they reach, step 1's data structure: written once,
+// sort) and the bricks they reach, the collect pass's data structure: written once,
 // as kernels over arrays (a point, a brick or a chunk of bricks a call), for
 // the CPU core (TruncatedDistance, over the thread pool) and the GPU (the
 // device back end's launchers, nvDeviceLauncher.h). The sort's counts and

@@ -3,21 +3,21 @@
 // The device back end's truncated distance (eq. 6): the distances of the
 // band's bricks computed by a launcher's kernels (DistanceKernel,
 // CoveredKernel in nvDeviceKernels.h), on the GPU or through the host
-// launcher, batch by batch, for the band's step 1 (BuildNarrowBand's
+// launcher, batch by batch, for the band's collect pass (BuildNarrowBand's
 // BrickDistanceSource). They are TruncatedDistance::ComputeBrick's and
 // BrickWithin's bit for bit through the host launcher (TestCoreDevice), and
 // are written to be on the GPU too, so the band is the CPU's.
 //
-// The band is built on the device too (BuildsBand: steps 1 to 3): each
+// The band is built on the device too (BuildsBand: the collect, store and connect passes): each
 // batch's band nodes are picked there and kept, only their counts and
-// Inside bits come back; step 2 joins the batches there and sends Offset
-// back (2 bytes a node), step 3 makes the neighbour table there. The
+// Inside bits come back; the store pass joins the batches there and sends Offset
+// back (2 bytes a node), the connect pass makes the neighbour table there. The
 // distances and the neighbour table stay on the device for the evolution
 // (nvDeviceEvolution.h). The dense volume, when asked for, is filled from
 // each batch's distances on the device too (FillDense, nvVolumeKernels.h).
 // The points are sorted into bricks there too, and the bricks they reach
 // listed (SortPoints): the cloud goes up as it is, the list comes back.
-// What stays on the host: step 2's tables from the counts (one sum over
+// What stays on the host: the store pass's tables from the counts (one sum over
 // the band's bricks) and the sums over chunks of 256 bricks between the
 // sort's passes.
 #ifndef nvDeviceDistance_h
@@ -70,7 +70,7 @@ public:
   /// Throws DeviceError when the device fails.
   void Compute(const std::int64_t* bricks, std::int64_t count, double coverRadius, double* distance,
     std::uint8_t* covered) override;
-  /// Steps 1 to 3 on the device (BandNodes, StoreBand, ConnectBand), the
+  /// The collect, store and connect passes on the device (BandNodes, StoreBand, ConnectBand), the
   /// band held there for the launcher's evolution. Throw DeviceError.
   bool BuildsBand() const override { return true; }
   void CountNodes(const std::int64_t* bricks, std::int64_t count, double coverRadius, double lower, double upper,

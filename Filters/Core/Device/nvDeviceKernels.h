@@ -20,7 +20,7 @@
 // in another order: phi then differs in the last bits, not more.
 //
 // The truncated distance of eq. (6) (DistanceKernel, CoveredKernel) and the
-// band's steps 1 and 3 are here too, from the terms of Band/nvBandTerms.h
+// band's collect and connect passes are here too, from the terms of Band/nvBandTerms.h
 // that the CPU core (nvTruncatedDistance.cxx, nvNarrowBand.cxx) calls too,
 // so that both launchers give its distances and band bit for bit.
 //
@@ -283,7 +283,7 @@ struct DistanceKernel
 // Band/nvPointSort.h, which the CPU core runs too.
 
 // ---------------------------------------------------------------------------
-// The band's nodes of step 1 (eq. 7), picked from a batch's distances on the
+// The band's nodes of the collect pass (eq. 7), picked from a batch's distances on the
 // device, so that only they come back to the host: nvBandTerms.h's
 // ClassifyBrick, which nvNarrowBand.cxx's ClassifyBrickNodes calls.
 
@@ -297,7 +297,7 @@ struct DistanceKernel
  * - RedFirst, BlackFirst: int64, a brick: where its red and its black
  *   nodes go in NodeOffset and NodeDistance, which hold the batch's red
  *   nodes first, brick after brick, then its black ones (the host's sums of
- *   the counts over the bricks before it), so that step 2 joins the batches
+ *   the counts over the bricks before it), so that the store pass joins the batches
  *   by two copies each (StoreBand).
  * - NodeOffset: uint16, a band node: i + 8 (j + 8 k) in its brick, as
  *   NarrowBand::Offset.
@@ -377,7 +377,7 @@ struct BandCompactKernel
 };
 
 // ---------------------------------------------------------------------------
-// The band's neighbour table of step 3 (nvNarrowBand.cxx's IndexBricks and
+// The band's neighbour table of the connect pass (nvNarrowBand.cxx's IndexBricks and
 // ConnectNeighbours), built where the band's nodes are, so that neither it
 // nor the distances cross to the host and back before the evolution. The
 // brick across a face, a neighbour's place and the Dirichlet slot are
@@ -385,7 +385,7 @@ struct BandCompactKernel
 // binary search here, the CPU's slot and rank tables there).
 
 /**
- * The band after step 2, as both sides hold it. Precision, array by array:
+ * The band after the store pass, as both sides hold it. Precision, array by array:
  *
  * - Bricks: int64, NumberOfBricks, ascending: NarrowBand::Bricks.
  * - RedStart, BlackStart: int64, NumberOfBricks + 1: NarrowBand's (a

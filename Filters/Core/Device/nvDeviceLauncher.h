@@ -101,19 +101,19 @@ public:
   /// them back, unless null (then they stay on the device for BandNodes).
   virtual void DistanceBricks(const std::int64_t* bricks, std::int64_t count, const DistanceConstants& constants,
     double* distance, std::uint8_t* covered) = 0;
-  /// Step 1, after DistanceBricks on the same `count` bricks:
+  /// The collect pass, after DistanceBricks on the same `count` bricks:
   /// BandCountKernel, the sums of the counts (BandNodeArrays' RedFirst,
   /// BlackFirst), BandCompactKernel into a list of the batch's band nodes,
   /// kept here for StoreBand. Back into host memory come the counts (`red`,
   /// `black`: count each) and the Inside bits (8 words a brick).
   virtual void BandNodes(std::int64_t count, const BandNodeConstants& constants, std::int32_t* red,
     std::int32_t* black, std::uint64_t* inside) = 0;
-  /// Step 2: the batches' lists joined into the band's Offset and Distance
+  /// The store pass: the batches' lists joined into the band's Offset and Distance
   /// (`size` nodes, the `redCount` red ones first, each colour in brick
   /// order), held here for the evolution; the lists freed. Offset into host
   /// memory `offset` (size values), which the outputs read.
   virtual void StoreBand(std::int64_t redCount, std::int64_t size, std::uint16_t* offset) = 0;
-  /// Step 3, after StoreBand: the band's bricks and starts (host memory,
+  /// The connect pass, after StoreBand: the band's bricks and starts (host memory,
   /// NarrowBand's, of `numberOfBricks` bricks) copied here,
   /// AdjacentBricksKernel and NeighboursKernel: the neighbour table, held
   /// here for the evolution (Upload with null arrays).
