@@ -403,9 +403,12 @@ def describe(prop: Property, name_of: Callable[[str], str] = lambda name: name) 
 def in_words(text: str, name_of: Callable[[str], str]) -> str:
     """A message of the filter, which names properties by their names
     (OffsetDistance), with each name as name_of(name) gives it: the panel's
-    label, the command line's option. Whole names only."""
+    label, the command line's option. Whole names only: no ASCII letter,
+    digit or underscore on either side, the core's rule (nv::InPanelWords;
+    the WordRules test feeds both the same texts)."""
     for prop in PROPERTIES + LIST_PROPERTIES:
-        text = re.sub(r"(?<![\w-])%s(?!\w)" % prop.name, name_of(prop.name), text)
+        words = name_of(prop.name)
+        text = re.sub(r"(?<![A-Za-z0-9_])%s(?![A-Za-z0-9_])" % prop.name, lambda _: words, text)
     return text
 
 

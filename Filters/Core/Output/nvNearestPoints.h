@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
 // SPDX-License-Identifier: BSD-3-Clause
 // The nearest of a set of points to a place: the part to print's measures
-// (its thinnest wall, nvPrintPart.cxx) and its check against the scan
+// (its thinnest wall, nvPartChecks.cxx) and its check against the scan
 // (the scan points it lost, the neighbours that join them).
 #ifndef nvNearestPoints_h
 #define nvNearestPoints_h

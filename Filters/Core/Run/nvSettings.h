@@ -13,7 +13,7 @@
 #define nvSettings_h
 
 #include "nvParameters.h"    // Domain, EdgeStopping
-#include "nvPrintPart.h"     // DrainAxis
+#include "nvPrintSettings.h" // DrainAxis
 #include "nvSettingsTable.h" // NV_SETTINGS, generated from the property table (committed)
 #include "nvSheets.h"        // Sheets
 
