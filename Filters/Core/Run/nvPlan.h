@@ -34,7 +34,7 @@ struct Plan
   double CoarsenedFrom = 0.0;
   double OffsetBeforeCoarsening = 0.0;
   /// Printing (WallThickness > 0) with an automatic spacing: the spacing the
-  /// wall asked for (WallThickness / LeastCellsPerWall, nvPrintPart.h) where
+  /// wall asked for (WallThickness / LeastCellsPerWall, nvPrintSettings.h) where
   /// it made the grid finer than the offset alone would (0: it did not).
   /// Such a grid is not capped at AutomaticMaximumDimension; the memory
   /// limit decides, and its message says so (CheckMemory).
