@@ -22,6 +22,7 @@
 #include "nvGrid.h"
 #include "nvNarrowBand.h"
 #include "nvParameters.h"
+#include "nvSurfaceTerms.h"
 #include "nvTruncatedDistance.h"
 
 #include <array>
@@ -31,16 +32,19 @@
 namespace nv
 {
 
-/// psi of phi, clamped to [-eta/2, eta/2]; its sign is phi's. The device
-/// back end's copy: ImpliedDistanceOf (Device/nvSurfaceKernels.h).
+/// psi of phi, clamped to [-eta/2, eta/2]; its sign is phi's: the
+/// parameters' ImpliedDistanceOf (nvSurfaceTerms.h, which the device's
+/// kernels call too).
 class ImpliedDistance
 {
 public:
   explicit ImpliedDistance(const Parameters& parameters);
-  float operator()(double phi) const;
+  float operator()(double phi) const { return ImpliedDistanceOf(phi, this->Scale, this->Cap); }
   /// The value at nodes outside the band: inside the shell +eta/2, outside -eta/2.
   float Inside() const { return static_cast<float>(this->Cap); }
   float Outside() const { return static_cast<float>(-this->Cap); }
+  double GetScale() const { return this->Scale; }
+  double GetCap() const { return this->Cap; }
 
 private:
   double Scale; ///< sqrt(2) xi
