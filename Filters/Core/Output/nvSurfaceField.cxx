@@ -49,12 +49,8 @@ void BandField::Layer(std::int64_t layer, std::vector<float>& uniform, std::vect
   BricksInLayers(this->Band.Bricks, perLayer, layer, layer + 1, first, last);
   for (std::int64_t a = first; a < last; ++a)
   {
-    const std::uint64_t* inside = &this->Band.Inside[8 * a];
-    const bool allInside = std::all_of(inside, inside + 8, [](std::uint64_t w) { return w == ~std::uint64_t(0); });
-    const bool allOutside = std::all_of(inside, inside + 8, [](std::uint64_t w) { return w == 0; });
-    const bool banded =
-      this->Band.RedStart[a + 1] > this->Band.RedStart[a] || this->Band.BlackStart[a + 1] > this->Band.BlackStart[a];
-    if (banded || !(allInside || allOutside))
+    bool allInside;
+    if (!UniformBandBrick(this->Band, a, allInside))
     {
       varying.push_back(this->Band.Bricks[a]);
     }

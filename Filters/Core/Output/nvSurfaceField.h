@@ -25,6 +25,7 @@
 #include "nvSurfaceTerms.h"
 #include "nvTruncatedDistance.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -100,6 +101,21 @@ private:
   ImpliedDistance Psi;
   std::array<std::int64_t, 3> BrickDims;
 };
+
+/**
+ * Whether psi takes one value on band brick a: no band nodes, and all its
+ * nodes on one side of the shell (`inside`: which). The bricks where it
+ * varies are those BandField::Layer lists and the device's surface contours
+ * (CutBricksOf, Device/nvDeviceSurface.h).
+ */
+inline bool UniformBandBrick(const NarrowBand& band, std::int64_t a, bool& inside)
+{
+  const std::uint64_t* words = &band.Inside[8 * a];
+  inside = std::all_of(words, words + 8, [](std::uint64_t w) { return w == ~std::uint64_t(0); });
+  const bool outside = std::all_of(words, words + 8, [](std::uint64_t w) { return w == 0; });
+  const bool banded = band.RedStart[a + 1] > band.RedStart[a] || band.BlackStart[a + 1] > band.BlackStart[a];
+  return !banded && (inside || outside);
+}
 
 /// Bricks per axis of a grid.
 std::array<std::int64_t, 3> BrickDimensions(const Grid& grid);
