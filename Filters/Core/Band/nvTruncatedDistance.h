@@ -29,7 +29,7 @@ constexpr int BrickNodes = BrickSize * BrickSize * BrickSize; ///< 512
 
 /// Set bits of x, for the bit masks over a brick's nodes (portable: no
 /// popcnt instruction is assumed).
-using ::nv::Popcount; // Common/nvBits.h, which the device's kernels call too
+// Popcount is in Common/nvBits.h (NV_HD), which the device's kernels call too.
 
 class TruncatedDistance
 {
