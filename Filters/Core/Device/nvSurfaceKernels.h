@@ -128,25 +128,6 @@ struct ContourArrays
 constexpr int CutWords = EdgeWords;  ///< 3 axes x 512 edges / 64 bits
 constexpr int AboveRows = CornerRows; ///< 9 x 9 rows of 9 corners
 
-/// The index of `brick` in the ascending `sorted` (n values), or -1.
-NV_HD inline std::int64_t FindBrick(const std::int64_t* sorted, std::int64_t n, std::int64_t brick)
-{
-  std::int64_t lo = 0, hi = n;
-  while (lo < hi)
-  {
-    const std::int64_t mid = lo + (hi - lo) / 2;
-    if (sorted[mid] < brick)
-    {
-      lo = mid + 1;
-    }
-    else
-    {
-      hi = mid;
-    }
-  }
-  return lo < n && sorted[lo] == brick ? lo : -1;
-}
-
 /// psi at the band brick a's nodes (index i + 8 (j + 8 k)), as BandField::Values.
 struct PsiKernel
 {

@@ -64,8 +64,8 @@ void BandField::Layer(std::int64_t layer, std::vector<float>& uniform, std::vect
 void BandField::Values(std::int64_t brick, float values[BrickNodes]) const
 {
   const NarrowBand& band = this->Band;
-  const std::int64_t a = std::lower_bound(band.Bricks.begin(), band.Bricks.end(), brick) - band.Bricks.begin();
-  if (a == static_cast<std::int64_t>(band.Bricks.size()) || band.Bricks[a] != brick)
+  const std::int64_t a = FindBrick(band.Bricks.data(), static_cast<std::int64_t>(band.Bricks.size()), brick);
+  if (a < 0)
   {
     std::fill(values, values + BrickNodes, this->Psi.Outside()); // a brick no point reaches
     return;

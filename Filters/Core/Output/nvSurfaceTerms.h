@@ -13,7 +13,7 @@
 //                      clamped to +-eta/2 (nvSurfaceField.h says why);
 //   BandBrickPsi       psi at a band brick's 512 nodes: its band nodes'
 //                      from phi, the others +-eta/2 by their side of the
-//                      shell;
+//                      shell (FindBrick: a brick among the band's);
 //   SurfaceWindow      psi on the nodes -1 .. 9 of a brick along each axis
 //     FillWindow       (11^3), filled from the 27 bricks around it;
 //   MarkAbove          the signs of a brick's cells' corners (a node at 0
@@ -32,6 +32,17 @@
 //     CellEdgeBit,     edge, an edge to the brick of its first node, and a
 //     CutBefore        brick numbers its vertices in the order of its cut
 //                      edges (vertex ids by popcount, Common/nvBits.h).
+//
+// Still written on each side, each for its own data flow: the list of cut
+// bricks (the CPU core's a brick layer at a time from its ring, the
+// device's for the whole band at once, CutBricksOf; the test of a brick
+// where psi varies is one, UniformBandBrick), where a window's bricks are
+// read from (RingBricks, BandBricks), the numbering of the vertices (the
+// CPU core counts them serially as it goes and keeps each word's count
+// before it; the host adds up the kernels' counts, and a kernel counts a
+// brick's earlier words again), and a brick's coordinates (the CPU core's
+// BrickCoordinates and FirstNode, the kernels' BrickCoordinatesOf and
+// FirstNodeOf: Band's brick terms can serve both).
 //
 // On a GPU, nvcc contracts a * b + c into fused multiply-adds: the vertices
 // then differ in the last bits, the triangles not, unless a vertex's psi is
@@ -60,6 +71,25 @@ constexpr int CellEdges = 12;
 /// triangles. Three points inside three different edges of a cube are never
 /// on one line, so every triangle then has an area.
 constexpr double VertexMargin = 1e-3;
+
+/// The index of `brick` in the ascending `sorted` (n values), or -1.
+NV_HD inline std::int64_t FindBrick(const std::int64_t* sorted, std::int64_t n, std::int64_t brick)
+{
+  std::int64_t lo = 0, hi = n;
+  while (lo < hi)
+  {
+    const std::int64_t mid = lo + (hi - lo) / 2;
+    if (sorted[mid] < brick)
+    {
+      lo = mid + 1;
+    }
+    else
+    {
+      hi = mid;
+    }
+  }
+  return lo < n && sorted[lo] == brick ? lo : -1;
+}
 
 /// psi of phi, clamped to [-cap, cap] (cap = eta/2); its sign is phi's.
 /// scale = sqrt(2) xi; atanh(phi) = log((1 + phi) / (1 - phi)) / 2, the

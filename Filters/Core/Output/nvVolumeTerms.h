@@ -12,6 +12,10 @@
 //   a node within reach      d, and phi = phi0 of eq. (2), rounded to float;
 //   a band node              the evolved phi (eq. 10-12), rounded to float,
 //                            and the band flag.
+//
+// phi0 itself is the scheme's (eq. 2), which each caller computes and
+// passes. The CPU core clears the arrays with fills of these values (one
+// memset-like pass per array), a kernel node by node (ClearNode).
 #ifndef nvVolumeTerms_h
 #define nvVolumeTerms_h
 
