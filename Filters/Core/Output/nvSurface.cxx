@@ -167,11 +167,12 @@ private:
   struct RingBricks
   {
     const Contourer* Self;
-    std::int64_t B[3]; ///< the brick's coordinates in bricks
+    std::int64_t B[3];            ///< the brick's coordinates in bricks
+    const LayerValues* Layers[3]; ///< the layers before, of and after the brick
     const float* operator()(int ox, int oy, int oz, float& uniform) const
     {
       const Contourer& c = *this->Self;
-      const LayerValues& values = c.ValuesOf(this->B[2] + oz - 1);
+      const LayerValues& values = *this->Layers[oz];
       const std::int64_t x = this->B[0] + ox - 1, y = this->B[1] + oy - 1;
       const bool inGrid = values.InGrid && x >= 0 && x < c.Bricks[0] && y >= 0 && y < c.Bricks[1];
       const std::int64_t inLayer = x + c.Bricks[0] * y;
@@ -184,8 +185,12 @@ private:
 
   void FillWindow(std::int64_t brick, SurfaceWindow& window) const
   {
-    RingBricks bricks{ this, { 0, 0, 0 } };
+    RingBricks bricks{ this, { 0, 0, 0 }, { nullptr, nullptr, nullptr } };
     this->BrickCoordinates(brick, bricks.B);
+    for (int oz = 0; oz < 3; ++oz)
+    {
+      bricks.Layers[oz] = &this->ValuesOf(bricks.B[2] + oz - 1);
+    }
     nv::FillWindow(window, bricks);
   }
 
