@@ -7,9 +7,10 @@ Filters/Core has one folder per stage of the method, listed from the bottom
 layer up in Filters/Core/CMakeLists.txt (narrowvolume_core_folders). A file
 may include the headers of its own folder and of the folders listed before
 its own, never of a later one: the run knows the scheme, the scheme does not
-know the run. The core includes nothing of VTK (vtk*.h) either, but for the
-vtkSMPTools backend of its loops (VTK_BACKEND): the VTK glue lives in Filters/. Prints each offending include and exits 1 when there is
-one.
+know the run. The CUDA sources (.cu, .cuh) are read as the C++ ones. The
+core includes nothing of VTK (vtk*.h) either, but for the vtkSMPTools
+backend of its loops (VTK_BACKEND): the VTK glue lives in Filters/. Prints
+each offending include and exits 1 when there is one.
 
     scripts/check-includes.py [source folder]
 """
@@ -19,9 +20,9 @@ import sys
 
 # The one core file that may use VTK: the loops on vtkSMPTools (nvParallel.h).
 VTK_BACKEND = "Parallel/nvParallelVTK.cxx"
-# Headers the build generates, with the layer they belong to: the property
-# table's fields of nv::Settings (cmake/generate-properties.py).
 INCLUDE = re.compile(r'^\s*#\s*include\s+[<"]([^">]+)[">]')
+HEADERS = (".h", ".cuh")
+SOURCES = HEADERS + (".cxx", ".cu")
 
 
 def core_folders(core):
@@ -41,11 +42,11 @@ def main():
     files = []
     for layer, folder in enumerate(folders):
         for name in sorted(os.listdir(os.path.join(core, folder))):
-            if name.endswith((".h", ".cxx")):
+            if name.endswith(SOURCES):
                 files.append((layer, folder, name))
-                if name.endswith(".h"):
+                if name.endswith(HEADERS):
                     layer_of[name] = (layer, folder)
-    stray = [n for n in os.listdir(core) if n.endswith((".h", ".cxx"))]
+    stray = [n for n in os.listdir(core) if n.endswith(SOURCES)]
     problems = ["Filters/Core/%s: outside the stage folders" % n for n in stray]
     for layer, folder, name in files:
         with open(os.path.join(core, folder, name), encoding="utf-8") as text:

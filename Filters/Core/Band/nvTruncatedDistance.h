@@ -14,6 +14,7 @@
 
 #include "nvBandTerms.h"
 #include "nvGrid.h"
+#include "nvBits.h"
 
 #include <array>
 #include <cstdint>
@@ -22,16 +23,6 @@
 namespace nv
 {
 class Monitor;
-
-/// Set bits of x, for the bit masks over a brick's nodes (portable: no
-/// popcnt instruction is assumed).
-inline int Popcount(std::uint64_t x)
-{
-  x = x - ((x >> 1) & 0x5555555555555555ULL);
-  x = (x & 0x3333333333333333ULL) + ((x >> 2) & 0x3333333333333333ULL);
-  x = (x + (x >> 4)) & 0x0F0F0F0F0F0F0F0FULL;
-  return static_cast<int>((x * 0x0101010101010101ULL) >> 56);
-}
 
 class TruncatedDistance
 {

@@ -7,7 +7,7 @@
 // truncated distance and the band, batch by batch of bricks: only each
 // batch's counts and Inside bits come back to the host, then the band's
 // Offset; its distances and neighbour table stay here for the evolution)
-// and Output/nvDeviceSurface.cxx (the surface: the band's tables go up,
+// and nvDeviceSurface.cxx (the surface: the band's tables go up,
 // phi is the evolution's, still here, the vertices and triangles come
 // back).
 //

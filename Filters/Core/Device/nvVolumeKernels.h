@@ -3,7 +3,8 @@
 // The device back end's dense volume (the Volume output: phi on the grid's
 // nodes, or a slab of node layers), one source for the host and the GPU, as
 // nvDeviceKernels.h. The CPU core's VolumeWriter (Output/nvVolume.h) in
-// three kernels, written the same way, so that the host launcher fills the
+// three kernels, which call its node values (Output/nvVolumeTerms.h) and
+// keep only which node they write, so that the host launcher fills the
 // same values bit for bit (TestCoreDevice):
 //
 //   DenseClearKernel  a node: as if no point reached it, d truncated
@@ -22,6 +23,7 @@
 #define nvVolumeKernels_h
 
 #include "nvDeviceKernels.h"
+#include "nvVolumeTerms.h"
 
 #include <cstdint>
 
@@ -30,20 +32,9 @@ namespace nv
 namespace device
 {
 
-/**
- * The dense arrays, each (End - Begin) Nx Ny values, node (i, j, k) at
- * i + Nx (j + Ny (k - Begin)); a null one is not filled. Precision: as the
- * Volume output's (Output/nvVolume.h's VolumeArrays), float for phi, phi0
- * and d (the output's types, and half the bytes of the grid), uint8 for the
- * band flag. phi is rounded to float from the double the evolution keeps.
- */
-struct DenseArrays
-{
-  float* Phi = nullptr;
-  float* InitialPhi = nullptr;
-  float* Distance = nullptr;
-  std::uint8_t* Band = nullptr;
-};
+/// The dense arrays: the Volume output's (nvVolumeTerms.h's VolumeArrays),
+/// their precision and layout.
+using DenseArrays = ::nv::VolumeArrays;
 
 /// The grid, the slab and the scheme's constants, computed on the host.
 struct DenseConstants
@@ -54,7 +45,6 @@ struct DenseConstants
   std::int64_t End = 0;      ///< past its last one
   double Offset = 0.0;       ///< l
   double Xi = 0.0;           ///< xi of eq. (2)
-  double Infinity = 0.0;     ///< +inf: a distance beyond reach
   float Far = 0.0f;          ///< d beyond reach in the output: h sqrt(Nx^2 + Ny^2 + Nz^2)
 
   NV_HD std::int64_t Nodes() const { return (this->End - this->Begin) * this->GridDims[0] * this->GridDims[1]; }
@@ -65,17 +55,7 @@ struct DenseClearKernel
 {
   DenseArrays A;
   DenseConstants C;
-  NV_HD void operator()(std::int64_t t) const
-  {
-    if (A.Phi)
-      A.Phi[t] = -1.0f;
-    if (A.InitialPhi)
-      A.InitialPhi[t] = -1.0f;
-    if (A.Distance)
-      A.Distance[t] = C.Far;
-    if (A.Band)
-      A.Band[t] = 0;
-  }
+  NV_HD void operator()(std::int64_t t) const { ClearNode(A, t, C.Far); }
 };
 
 /// Node t of a batch of bricks (brick a = t / 512, node n = t % 512), from
@@ -96,7 +76,7 @@ struct DenseBrickKernel
       return; // its distances not computed (the dense volume asks for none covered)
     }
     const double d = D.Distance[t];
-    if (d == C.Infinity)
+    if (!WithinReach(d))
     {
       return; // beyond reach: as cleared
     }
@@ -110,13 +90,7 @@ struct DenseBrickKernel
       return;
     }
     const std::int64_t node = i + C.GridDims[0] * (j + C.GridDims[1] * (k - C.Begin));
-    const float phi0 = static_cast<float>(InitialPhi(d, C.Offset, C.Xi));
-    if (A.Phi)
-      A.Phi[node] = phi0;
-    if (A.InitialPhi)
-      A.InitialPhi[node] = phi0;
-    if (A.Distance)
-      A.Distance[node] = static_cast<float>(d);
+    WriteReachedNode(A, node, d, InitialPhi(d, C.Offset, C.Xi));
   }
 };
 
@@ -144,11 +118,7 @@ struct DenseBandKernel
     {
       return;
     }
-    const std::int64_t node = i + C.GridDims[0] * (j + C.GridDims[1] * (k - C.Begin));
-    if (A.Phi)
-      A.Phi[node] = static_cast<float>(B.Phi[s]);
-    if (A.Band)
-      A.Band[node] = 1;
+    WriteBandNode(A, i + C.GridDims[0] * (j + C.GridDims[1] * (k - C.Begin)), B.Phi[s]);
   }
   NV_HD void operator()(std::int64_t a) const
   {

@@ -171,13 +171,6 @@ CellCase BuildCase(int signs)
 }
 } // namespace
 
-int EdgeCorner(int edge)
-{
-  // The edges along an axis start at the four corners whose bit for that axis is 0.
-  const int axis = EdgeAxis(edge), m = edge % 4;
-  return (m & ((1 << axis) - 1)) | ((m >> axis) << (axis + 1));
-}
-
 const std::array<CellCase, 256>& MarchingCubesCases()
 {
   static const std::array<CellCase, 256> table = [] {
@@ -185,6 +178,27 @@ const std::array<CellCase, 256>& MarchingCubesCases()
     for (int signs = 0; signs < 256; ++signs)
     {
       cases[signs] = BuildCase(signs);
+    }
+    return cases;
+  }();
+  return table;
+}
+
+const CellCases& MarchingCubesTable()
+{
+  static const CellCases table = [] {
+    CellCases cases{};
+    const std::array<CellCase, 256>& source = MarchingCubesCases();
+    for (int signs = 0; signs < 256; ++signs)
+    {
+      cases.Count[signs] = static_cast<std::uint8_t>(source[signs].Count);
+      for (int t = 0; t < source[signs].Count; ++t)
+      {
+        for (int v = 0; v < 3; ++v)
+        {
+          cases.Edges[signs][3 * t + v] = source[signs].Triangles[t][v];
+        }
+      }
     }
     return cases;
   }();

@@ -14,21 +14,13 @@
 #ifndef nvMarchingCubes_h
 #define nvMarchingCubes_h
 
+#include "nvSurfaceTerms.h" // the cells' corners and edges: EdgeCorner, EdgeAxis, CellEdges
+
 #include <array>
 #include <cstdint>
 
 namespace nv
 {
-
-/// Corner c of a cell is at offset (c & 1, (c >> 1) & 1, (c >> 2) & 1)
-/// from the cell's first node. Edge e runs from corner EdgeCorner(e) along
-/// axis e / 4.
-constexpr int CellEdges = 12;
-int EdgeCorner(int edge);
-inline int EdgeAxis(int edge)
-{
-  return edge / 4;
-}
 
 /// The triangles of one case (bit c set: corner c is at or above the level),
 /// each as three cell edges, ordered so that the triangle's normal (right-hand
@@ -40,6 +32,10 @@ struct CellCase
 };
 
 const std::array<CellCase, 256>& MarchingCubesCases();
+
+/// The same table as plain bytes (nvSurfaceTerms.h's CellCases), as the
+/// CPU core's contouring and the device's kernels read it.
+const CellCases& MarchingCubesTable();
 
 } // namespace nv
 

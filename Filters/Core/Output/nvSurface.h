@@ -23,9 +23,11 @@
 // threads. Per brick layer: the vertices of layer z + 1, then the triangles
 // of layer z, which use them.
 //
-// The device back end repeats this work brick by brick, term for term
-// (Device/nvSurfaceKernels.h, Output/nvDeviceSurface.h): change both
-// together; TestCoreDevice checks that they give the same surface.
+// The device back end does this work brick by brick over the band's arrays
+// (Device/nvSurfaceKernels.h, Device/nvDeviceSurface.h), with the same
+// terms (nvSurfaceTerms.h: the window, the cut edges, the vertices and
+// normals, the cut cells, their triangles and vertex ids);
+// TestCoreDevice checks that they give the same surface.
 #ifndef nvSurface_h
 #define nvSurface_h
 

@@ -16,14 +16,6 @@ ImpliedDistance::ImpliedDistance(const Parameters& parameters)
 {
 }
 
-float ImpliedDistance::operator()(double phi) const
-{
-  // atanh(phi) = log((1 + phi) / (1 - phi)) / 2, the faster form.
-  double psi = std::fabs(phi) < 1.0 ? 0.5 * this->Scale * std::log((1.0 + phi) / (1.0 - phi))
-                                    : std::copysign(this->Cap, phi);
-  return static_cast<float>(std::min(this->Cap, std::max(-this->Cap, psi)));
-}
-
 std::array<std::int64_t, 3> BrickDimensions(const Grid& grid)
 {
   std::array<std::int64_t, 3> dims;
@@ -57,12 +49,8 @@ void BandField::Layer(std::int64_t layer, std::vector<float>& uniform, std::vect
   BricksInLayers(this->Band.Bricks, perLayer, layer, layer + 1, first, last);
   for (std::int64_t a = first; a < last; ++a)
   {
-    const std::uint64_t* inside = &this->Band.Inside[8 * a];
-    const bool allInside = std::all_of(inside, inside + 8, [](std::uint64_t w) { return w == ~std::uint64_t(0); });
-    const bool allOutside = std::all_of(inside, inside + 8, [](std::uint64_t w) { return w == 0; });
-    const bool banded =
-      this->Band.RedStart[a + 1] > this->Band.RedStart[a] || this->Band.BlackStart[a + 1] > this->Band.BlackStart[a];
-    if (banded || !(allInside || allOutside))
+    bool allInside;
+    if (!UniformBandBrick(this->Band, a, allInside))
     {
       varying.push_back(this->Band.Bricks[a]);
     }
@@ -76,27 +64,16 @@ void BandField::Layer(std::int64_t layer, std::vector<float>& uniform, std::vect
 void BandField::Values(std::int64_t brick, float values[BrickNodes]) const
 {
   const NarrowBand& band = this->Band;
-  const std::int64_t a = std::lower_bound(band.Bricks.begin(), band.Bricks.end(), brick) - band.Bricks.begin();
-  if (a == static_cast<std::int64_t>(band.Bricks.size()) || band.Bricks[a] != brick)
+  const std::int64_t a = FindBrick(band.Bricks.data(), static_cast<std::int64_t>(band.Bricks.size()), brick);
+  if (a < 0)
   {
     std::fill(values, values + BrickNodes, this->Psi.Outside()); // a brick no point reaches
     return;
   }
-  // Nodes off the band: their side of the shell.
-  const std::uint64_t* inside = &band.Inside[8 * a];
-  for (int n = 0; n < BrickNodes; ++n)
-  {
-    values[n] = ((inside[n / 64] >> (n % 64)) & 1) ? this->Psi.Inside() : this->Psi.Outside();
-  }
-  // Band nodes: each at its place in the brick.
-  for (std::int64_t s = band.RedStart[a]; s < band.RedStart[a + 1]; ++s)
-  {
-    values[band.Offset[s]] = this->Psi(this->Phi[s]);
-  }
-  for (std::int64_t s = band.BlackStart[a]; s < band.BlackStart[a + 1]; ++s)
-  {
-    values[band.Offset[s]] = this->Psi(this->Phi[s]);
-  }
+  // Nodes off the band: their side of the shell; band nodes: each at its
+  // place in the brick.
+  BandBrickPsi(&band.Inside[8 * a], band.RedStart[a], band.RedStart[a + 1], band.BlackStart[a],
+    band.BlackStart[a + 1], band.Offset.data(), this->Phi.data(), this->Psi.GetScale(), this->Psi.GetCap(), values);
 }
 
 //------------------------------------------------------------------------------

@@ -22,8 +22,10 @@
 #include "nvGrid.h"
 #include "nvNarrowBand.h"
 #include "nvParameters.h"
+#include "nvSurfaceTerms.h"
 #include "nvTruncatedDistance.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -31,16 +33,19 @@
 namespace nv
 {
 
-/// psi of phi, clamped to [-eta/2, eta/2]; its sign is phi's. The device
-/// back end's copy: ImpliedDistanceOf (Device/nvSurfaceKernels.h).
+/// psi of phi, clamped to [-eta/2, eta/2]; its sign is phi's: the
+/// parameters' ImpliedDistanceOf (nvSurfaceTerms.h, which the device's
+/// kernels call too).
 class ImpliedDistance
 {
 public:
   explicit ImpliedDistance(const Parameters& parameters);
-  float operator()(double phi) const;
+  float operator()(double phi) const { return ImpliedDistanceOf(phi, this->Scale, this->Cap); }
   /// The value at nodes outside the band: inside the shell +eta/2, outside -eta/2.
   float Inside() const { return static_cast<float>(this->Cap); }
   float Outside() const { return static_cast<float>(-this->Cap); }
+  double GetScale() const { return this->Scale; }
+  double GetCap() const { return this->Cap; }
 
 private:
   double Scale; ///< sqrt(2) xi
@@ -96,6 +101,21 @@ private:
   ImpliedDistance Psi;
   std::array<std::int64_t, 3> BrickDims;
 };
+
+/**
+ * Whether psi takes one value on band brick a: no band nodes, and all its
+ * nodes on one side of the shell (`inside`: which). The bricks where it
+ * varies are those BandField::Layer lists and the device's surface contours
+ * (CutBricksOf, Device/nvDeviceSurface.h).
+ */
+inline bool UniformBandBrick(const NarrowBand& band, std::int64_t a, bool& inside)
+{
+  const std::uint64_t* words = &band.Inside[8 * a];
+  inside = std::all_of(words, words + 8, [](std::uint64_t w) { return w == ~std::uint64_t(0); });
+  const bool outside = std::all_of(words, words + 8, [](std::uint64_t w) { return w == 0; });
+  const bool banded = band.RedStart[a + 1] > band.RedStart[a] || band.BlackStart[a + 1] > band.BlackStart[a];
+  return !banded && (inside || outside);
+}
 
 /// Bricks per axis of a grid.
 std::array<std::int64_t, 3> BrickDimensions(const Grid& grid);

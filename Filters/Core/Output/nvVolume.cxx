@@ -29,10 +29,11 @@ void VolumeWriter::Clear() const
   const float far = static_cast<float>(this->TheGrid.FarDistance());
   const std::int64_t nodes = (this->End - this->Begin) * this->TheGrid.Dims[0] * this->TheGrid.Dims[1];
   ParallelFor(0, nodes, 1 << 16, [&](std::int64_t begin, std::int64_t end) {
+    // ClearNode (nvVolumeTerms.h) on a range, as fills.
     if (arrays.Phi)
-      std::fill(arrays.Phi + begin, arrays.Phi + end, -1.0f);
+      std::fill(arrays.Phi + begin, arrays.Phi + end, PhiBeyondReach);
     if (arrays.InitialPhi)
-      std::fill(arrays.InitialPhi + begin, arrays.InitialPhi + end, -1.0f);
+      std::fill(arrays.InitialPhi + begin, arrays.InitialPhi + end, PhiBeyondReach);
     if (arrays.Distance)
       std::fill(arrays.Distance + begin, arrays.Distance + end, far);
     if (arrays.Band)
@@ -58,18 +59,12 @@ void VolumeWriter::WriteBrick(std::int64_t brick, const double distance[BrickNod
       for (int i = 0; i < BrickSize && corner[0] + i < grid.Dims[0]; ++i)
       {
         const double d = distance[i + BrickSize * (j + BrickSize * k)];
-        if (!std::isfinite(d))
+        if (!WithinReach(d))
         {
           continue; // beyond reach: as cleared
         }
         const std::int64_t node = grid.Index(corner[0] + i, corner[1] + j, corner[2] + k) - base;
-        const float phi0 = static_cast<float>(InitialPhi(d, offset, xi));
-        if (arrays.Phi)
-          arrays.Phi[node] = phi0;
-        if (arrays.InitialPhi)
-          arrays.InitialPhi[node] = phi0;
-        if (arrays.Distance)
-          arrays.Distance[node] = static_cast<float>(d);
+        WriteReachedNode(arrays, node, d, InitialPhi(d, offset, xi));
       }
     }
   }
@@ -86,10 +81,7 @@ void VolumeWriter::WriteBand(const NarrowBand& band, const BandValues& phi) cons
     const std::int64_t node = this->TheGrid.Index(ijk[0], ijk[1], ijk[2]);
     if (node < first || node >= last)
       return;
-    if (arrays.Phi)
-      arrays.Phi[node - first] = static_cast<float>(phi[s]);
-    if (arrays.Band)
-      arrays.Band[node - first] = 1;
+    WriteBandNode(arrays, node - first, phi[s]);
   };
   ParallelFor(0, static_cast<std::int64_t>(band.Bricks.size()), 32, [&](std::int64_t begin, std::int64_t end) {
     for (std::int64_t a = begin; a < end; ++a)

@@ -11,8 +11,9 @@
 // bricks during the band's construction, and the band's phi after the
 // evolution (WriteBand).
 //
-// The device back end's copy, for Device GPU: Device/nvVolumeKernels.h
-// (change both together; TestCoreDevice checks that they agree).
+// The node values are nvVolumeTerms.h's, which the device back end's dense
+// kernels (Device/nvVolumeKernels.h, for Device GPU) call too;
+// TestCoreDevice checks that they agree.
 #ifndef nvVolume_h
 #define nvVolume_h
 
@@ -20,21 +21,13 @@
 #include "nvNarrowBand.h"
 #include "nvParameters.h"
 #include "nvTruncatedDistance.h"
+#include "nvVolumeTerms.h"
 
 #include <cstdint>
 #include <vector>
 
 namespace nv
 {
-
-/// Dense arrays to fill, each of Nx Ny (kEnd - kBegin) values; null ones are skipped.
-struct VolumeArrays
-{
-  float* Phi = nullptr;
-  float* InitialPhi = nullptr;
-  float* Distance = nullptr;     ///< eq. (6): beyond reach, h sqrt(Nx^2 + Ny^2 + Nz^2)
-  unsigned char* Band = nullptr; ///< 1 on band nodes
-};
 
 class VolumeWriter
 {

@@ -19,7 +19,6 @@
 
 #include <algorithm>
 #include <array>
-#include <limits>
 
 namespace nv
 {
@@ -40,7 +39,6 @@ device::DenseConstants DenseConstantsOf(const Grid& grid, const Parameters& sche
   constants.End = kEnd;
   constants.Offset = scheme.OffsetDistance;
   constants.Xi = scheme.Xi();
-  constants.Infinity = std::numeric_limits<double>::infinity();
   constants.Far = static_cast<float>(grid.FarDistance());
   return constants;
 }
@@ -73,12 +71,7 @@ public:
       context.Stages->Add("distance", sorting);
       if (dense)
       {
-        device::DenseArrays arrays;
-        arrays.Phi = dense->Arrays.Phi;
-        arrays.InitialPhi = dense->Arrays.InitialPhi;
-        arrays.Distance = dense->Arrays.Distance;
-        arrays.Band = dense->Arrays.Band;
-        this->Launcher->DenseBegin(arrays, DenseConstantsOf(grid, scheme, dense->Begin, dense->End));
+        this->Launcher->DenseBegin(dense->Arrays, DenseConstantsOf(grid, scheme, dense->Begin, dense->End));
         this->Dense = true;
         onDevice.FillDense();
       }

@@ -28,13 +28,11 @@
 namespace nv
 {
 
-/// The marching cubes case table (nvMarchingCubes.h) as the kernels read it.
-const device::CellCases& DeviceCellCases();
-
 /// The cut bricks of a band, ascending: its bricks where the implied
 /// distance varies (band nodes, or nodes on both sides of the shell) and
 /// the bricks just below them on any axis, whose cells reach their first
-/// nodes (nvSurface.cxx's CutBricks, over the whole grid at once).
+/// nodes (nvSurface.cxx's CutBricks, over the whole grid at once; the
+/// bricks where psi varies: UniformBandBrick, nvSurfaceField.h).
 std::vector<std::int64_t> CutBricksOf(const NarrowBand& band);
 
 /**

@@ -12,42 +12,16 @@
 namespace nv
 {
 
-const device::CellCases& DeviceCellCases()
-{
-  static const device::CellCases table = [] {
-    device::CellCases cases{};
-    const std::array<CellCase, 256>& source = MarchingCubesCases();
-    for (int signs = 0; signs < 256; ++signs)
-    {
-      cases.Count[signs] = static_cast<std::uint8_t>(source[signs].Count);
-      for (int t = 0; t < source[signs].Count; ++t)
-      {
-        for (int v = 0; v < 3; ++v)
-        {
-          cases.Edges[signs][3 * t + v] = source[signs].Triangles[t][v];
-        }
-      }
-    }
-    return cases;
-  }();
-  return table;
-}
-
 std::vector<std::int64_t> CutBricksOf(const NarrowBand& band)
 {
   const std::array<std::int64_t, 3> dims = BrickDimensions(band.GridNodes);
   std::vector<std::int64_t> cut;
   for (std::size_t a = 0; a < band.Bricks.size(); ++a)
   {
-    // As BandField::Layer: a brick without band nodes whose nodes all lie
-    // on one side of the shell has one value of psi.
-    const std::uint64_t* inside = &band.Inside[8 * a];
-    const bool allInside = std::all_of(inside, inside + 8, [](std::uint64_t w) { return w == ~std::uint64_t(0); });
-    const bool allOutside = std::all_of(inside, inside + 8, [](std::uint64_t w) { return w == 0; });
-    const bool banded = band.RedStart[a + 1] > band.RedStart[a] || band.BlackStart[a + 1] > band.BlackStart[a];
-    if (!banded && (allInside || allOutside))
+    bool inside;
+    if (UniformBandBrick(band, static_cast<std::int64_t>(a), inside))
     {
-      continue;
+      continue; // one value of psi, as in BandField::Layer
     }
     const std::int64_t brick = band.Bricks[a];
     const std::int64_t bx = brick % dims[0], by = (brick / dims[0]) % dims[1], bz = brick / (dims[0] * dims[1]);
@@ -80,8 +54,9 @@ void ContourOnDevice(const Grid& grid, const NarrowBand& band, const BandValues&
   }
   constants.Spacing = grid.Spacing;
   // psi = sqrt(2) xi atanh(phi), clamped to eta/2: ImpliedDistance's constants.
-  constants.Scale = std::sqrt(2.0) * parameters.Xi();
-  constants.Cap = parameters.HalfBandWidth();
+  const ImpliedDistance psi(parameters);
+  constants.Scale = psi.GetScale();
+  constants.Cap = psi.GetCap();
 
   const std::vector<std::int64_t> cutBricks = CutBricksOf(band);
   const std::int64_t cut = static_cast<std::int64_t>(cutBricks.size());
@@ -95,7 +70,7 @@ void ContourOnDevice(const Grid& grid, const NarrowBand& band, const BandValues&
   arrays.Phi = phi.data();
   arrays.NumberOfCutBricks = cut;
   arrays.CutBricks = cutBricks.data();
-  arrays.Cases = &DeviceCellCases();
+  arrays.Cases = &MarchingCubesTable();
   std::vector<std::int32_t> vertices(static_cast<std::size_t>(cut)), triangles(static_cast<std::size_t>(cut));
   launcher.ContourCounts(arrays, band.Size(), constants, vertices.data(), triangles.data());
 
