@@ -140,13 +140,6 @@ struct PsiKernel
   }
 };
 
-/// The brick's coordinates (bx, by, bz) in bricks.
-NV_HD inline void BrickCoordinatesOf(const ContourConstants& c, std::int64_t brick, std::int64_t b[3])
-{
-  b[0] = brick % c.BrickDims[0];
-  b[1] = (brick / c.BrickDims[0]) % c.BrickDims[1];
-  b[2] = brick / (c.BrickDims[0] * c.BrickDims[1]);
-}
 
 /// The bricks around a brick for its window (nvSurfaceTerms.h's
 /// FillWindow): a band brick's psi, -eta/2 on a brick no point reaches
@@ -173,19 +166,10 @@ NV_HD inline void FillContourWindow(const ContourArrays& A, const ContourConstan
   SurfaceWindow& window)
 {
   BandBricks bricks{ &A, &C, { 0, 0, 0 } };
-  BrickCoordinatesOf(C, brick, bricks.B);
+  BrickAt(C.BrickDims, brick, bricks.B);
   FillWindow(window, bricks);
 }
 
-/// The first node of a brick.
-NV_HD inline void FirstNodeOf(const ContourConstants& c, std::int64_t brick, std::int64_t first[3])
-{
-  BrickCoordinatesOf(c, brick, first);
-  for (int a = 0; a < 3; ++a)
-  {
-    first[a] *= 8;
-  }
-}
 
 /// Cut brick r: the signs of its corners (Above), its cut edges (Cut) and
 /// the counts of its vertices and triangles (nvSurfaceTerms.h's MarkAbove,
@@ -203,7 +187,7 @@ struct CutCellsKernel
     std::uint16_t* above = A.Above + AboveRows * r;
     MarkAbove(window, above);
     std::int64_t first[3];
-    FirstNodeOf(C, brick, first);
+    FirstNodeOf(C.BrickDims, brick, first);
     int nodes[3], edges[3];
     BrickNodesOnGrid(C.GridDims, first, nodes, edges);
     std::uint64_t* cut = A.Cut + CutWords * r;
@@ -248,7 +232,7 @@ struct VerticesKernel
     const std::int64_t brick = A.CutBricks[r];
     FillContourWindow(A, C, brick, window);
     std::int64_t first[3];
-    FirstNodeOf(C, brick, first);
+    FirstNodeOf(C.BrickDims, brick, first);
     Writer writer{ this, &window, first, A.FirstVertex[r] };
     ForEachCutEdge(A.Cut + CutWords * r, writer);
   }
@@ -310,8 +294,8 @@ struct TrianglesKernel
   NV_HD void operator()(std::int64_t r) const
   {
     std::int64_t b[3], first[3];
-    BrickCoordinatesOf(C, A.CutBricks[r], b);
-    FirstNodeOf(C, A.CutBricks[r], first);
+    BrickAt(C.BrickDims, A.CutBricks[r], b);
+    FirstNodeOf(C.BrickDims, A.CutBricks[r], first);
     Writer writer{ this, b, A.Triangles + 3 * A.FirstTriangle[r] };
     ForEachCutCell(C.GridDims, first, A.Above + AboveRows * r, *A.Cases, writer);
   }

@@ -155,12 +155,7 @@ private:
     return cut;
   }
 
-  void BrickCoordinates(std::int64_t brick, std::int64_t b[3]) const
-  {
-    b[0] = brick % this->Bricks[0];
-    b[1] = (brick / this->Bricks[0]) % this->Bricks[1];
-    b[2] = brick / this->PerLayer;
-  }
+  void BrickCoordinates(std::int64_t brick, std::int64_t b[3]) const { BrickAt(this->Bricks.data(), brick, b); }
 
   /// A brick's window (nvSurfaceTerms.h's FillWindow) from the ring of
   /// layers: a varying brick's values, another brick's one value.
@@ -194,14 +189,7 @@ private:
     nv::FillWindow(window, bricks);
   }
 
-  void FirstNode(std::int64_t brick, std::int64_t first[3]) const
-  {
-    this->BrickCoordinates(brick, first);
-    for (int a = 0; a < 3; ++a)
-    {
-      first[a] <<= BrickShift;
-    }
-  }
+  void FirstNode(std::int64_t brick, std::int64_t first[3]) const { FirstNodeOf(this->Bricks.data(), brick, first); }
 
   /// Marks the brick's cut edges (those of its first node plane along x and
   /// y only, if planeOnly): the edges whose two nodes lie on both sides.

@@ -40,9 +40,8 @@
 // read from (RingBricks, BandBricks), the numbering of the vertices (the
 // CPU core counts them serially as it goes and keeps each word's count
 // before it; the host adds up the kernels' counts, and a kernel counts a
-// brick's earlier words again), and a brick's coordinates (the CPU core's
-// BrickCoordinates and FirstNode, the kernels' BrickCoordinatesOf and
-// FirstNodeOf: Band's brick terms can serve both).
+// brick's earlier words again). A brick's coordinates and first node are
+// Band's terms (nvBandTerms.h's BrickAt, FirstNodeOf), for both.
 //
 // On a GPU, nvcc contracts a * b + c into fused multiply-adds: the vertices
 // then differ in the last bits, the triangles not, unless a vertex's psi is
