@@ -65,7 +65,7 @@ def run(core, xyz, offset, spacing, device, volume=False):
     if spacing is not None:
         settings.SampleSpacing = spacing
     settings.OutputVolume = volume
-    reconstruction = core_stages.reconstruction(core, settings, device)
+    reconstruction = make_run(core, settings, device)
     sink = core.MeshSink()
     start = time.perf_counter()
     outcome = reconstruction.Reconstruct(xyz, None, sink)
