@@ -36,6 +36,7 @@
 #include "nvDeviceEvolution.h"
 #include "nvDeviceLauncher.h"
 #include "nvDeviceSurface.h"
+#include "nvEngine.h"
 #include "nvGrid.h"
 #include "nvNarrowBand.h"
 #include "nvParameters.h"

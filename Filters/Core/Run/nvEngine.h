@@ -22,6 +22,7 @@
 #ifndef nvEngine_h
 #define nvEngine_h
 
+#include "nvDevices.h"
 #include "nvNarrowBand.h"
 #include "nvParameters.h"
 #include "nvPartition.h"
@@ -41,23 +42,6 @@ namespace nv
 class Halo;
 class Monitor;
 class SurfaceSink;
-
-/// The device that ran a job. The values are those of the field data
-/// array DeviceUsed.
-enum class DeviceKind
-{
-  CPU = 1,
-  GPU = 2
-};
-
-/// Where Device GPU's kernels run: on the GPU (the CUDA launcher), or on
-/// the host's threads through the host launcher (tests and benchmarks of
-/// the device back end on machines without a GPU). Not a user setting.
-enum class GpuKernels
-{
-  OnGpu,
-  OnHost
-};
 
 /// What an engine throws when its device fails: the message is the run's
 /// error, whole.

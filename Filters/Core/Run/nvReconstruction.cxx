@@ -3,6 +3,7 @@
 #include "nvReconstruction.h"
 
 #include "nvCommunicator.h"
+#include "nvEngine.h"
 #include "nvHoleProbe.h"
 #include "nvMemory.h"
 #include "nvParallel.h"

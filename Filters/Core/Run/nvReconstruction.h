@@ -10,7 +10,7 @@
 #ifndef nvReconstruction_h
 #define nvReconstruction_h
 
-#include "nvEngine.h"
+#include "nvDevices.h"
 #include "nvGapClosing.h"
 #include "nvGrid.h"
 #include "nvHalo.h"
@@ -33,6 +33,8 @@
 namespace nv
 {
 class Communicator;
+class Engine;
+struct EngineContext;
 class Monitor;
 class ShareMonitor;
 class SurfaceSink;
