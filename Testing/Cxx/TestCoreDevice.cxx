@@ -40,6 +40,7 @@
 #include "nvGrid.h"
 #include "nvNarrowBand.h"
 #include "nvParameters.h"
+#include "nvReconstruct.h"
 #include "nvReconstruction.h"
 #include "nvSurface.h"
 #include "nvSurfaceField.h"
@@ -637,6 +638,123 @@ void TestDeviceCannot()
   NV_CHECK(nv::DeviceCannot(settings, true).empty());
 }
 
+/// The host launcher, failing on purpose at one of its kernels (as a GPU
+/// that runs out of memory would): the device's error must be the run's,
+/// with the way out, and nothing made on the CPU instead.
+class FailingLauncher : public nv::device::Launcher
+{
+public:
+  explicit FailingLauncher(const std::string& where)
+    : Host(nv::device::MakeHostLauncher())
+    , Where(where)
+  {
+  }
+  std::string Name() const override { return "failing host launcher"; }
+  void Fail(const char* kernel) const
+  {
+    if (this->Where == kernel)
+    {
+      throw nv::device::DeviceError(std::string("The GPU failed (") + kernel + "): out of memory (a test)");
+    }
+  }
+  void Upload(std::int64_t size, const std::uint32_t* neighbor, const double* distance, double inside,
+    double outside) override
+  {
+    this->Host->Upload(size, neighbor, distance, inside, outside);
+  }
+  void InitialField(const nv::device::EvolutionConstants& c) override { this->Host->InitialField(c); }
+  void Coefficients(const nv::device::EvolutionConstants& c) override { this->Host->Coefficients(c); }
+  void KeepPrevious() override { this->Host->KeepPrevious(); }
+  double Relax(std::int64_t begin, std::int64_t end, double omega) override
+  {
+    this->Fail("relax");
+    return this->Host->Relax(begin, end, omega);
+  }
+  void React() override { this->Host->React(); }
+  double ChangeSquared(std::int64_t begin, std::int64_t end) override { return this->Host->ChangeSquared(begin, end); }
+  double NormSquared(std::int64_t begin, std::int64_t end) override { return this->Host->NormSquared(begin, end); }
+  void Download(nv::UninitializedVector<double>& phi) override { this->Host->Download(phi); }
+  void ReleaseEvolution() override { this->Host->ReleaseEvolution(); }
+  void SortPoints(const double* cloud, std::int64_t n, const nv::PointConstants& c,
+    std::vector<std::int64_t>& reached) override
+  {
+    this->Host->SortPoints(cloud, n, c, reached);
+  }
+  void DistanceBricks(const std::int64_t* bricks, std::int64_t count, const nv::DistanceConstants& c, double* distance,
+    std::uint8_t* covered) override
+  {
+    this->Host->DistanceBricks(bricks, count, c, distance, covered);
+  }
+  void BandNodes(std::int64_t count, const nv::device::BandNodeConstants& c, std::int32_t* red, std::int32_t* black,
+    std::uint64_t* inside) override
+  {
+    this->Host->BandNodes(count, c, red, black, inside);
+  }
+  void StoreBand(std::int64_t redCount, std::int64_t size, std::uint16_t* offset) override
+  {
+    this->Host->StoreBand(redCount, size, offset);
+  }
+  void ConnectBand(const std::int64_t* bricks, const std::int64_t* redStart, const std::int64_t* blackStart,
+    std::int64_t numberOfBricks, const nv::device::NeighbourConstants& c) override
+  {
+    this->Host->ConnectBand(bricks, redStart, blackStart, numberOfBricks, c);
+  }
+  void DownloadBand(double* distance, std::uint32_t* neighbor) override { this->Host->DownloadBand(distance, neighbor); }
+  void FreePoints() override { this->Host->FreePoints(); }
+  void ContourCounts(const nv::device::ContourArrays& band, std::int64_t numberOfNodes,
+    const nv::device::ContourConstants& c, std::int32_t* vertices, std::int32_t* triangles) override
+  {
+    this->Fail("contour");
+    this->Host->ContourCounts(band, numberOfNodes, c, vertices, triangles);
+  }
+  void ContourGeometry(const std::int64_t* firstVertex, const std::int64_t* firstTriangle, std::int64_t vertices,
+    std::int64_t triangles, double* points, float* normals, long long* ids) override
+  {
+    this->Host->ContourGeometry(firstVertex, firstTriangle, vertices, triangles, points, normals, ids);
+  }
+  void DenseBegin(const nv::device::DenseArrays& arrays, const nv::device::DenseConstants& c) override
+  {
+    this->Host->DenseBegin(arrays, c);
+  }
+  void DenseBricks(std::int64_t count) override { this->Host->DenseBricks(count); }
+  void DenseBand(const nv::device::DenseBandArrays& band, std::int64_t bricks, std::int64_t nodes) override
+  {
+    this->Host->DenseBand(band, bricks, nodes);
+  }
+  void DenseDownload() override { this->Host->DenseDownload(); }
+
+private:
+  std::unique_ptr<nv::device::Launcher> Host;
+  std::string Where;
+};
+
+/// A device that fails during the evolution, and one that fails making the
+/// surface: the run stops with the device's words and the way out (the one
+/// rule, nvEngine.h); the surface is not made on the CPU instead.
+void TestDeviceFails()
+{
+  nv::Settings settings;
+  settings.Device = nv::ComputeDevice::GPU;
+  settings.OffsetDistance = 0.1;
+  settings.SampleSpacing = 0.02;
+  settings.OutputVolume = false;
+  const double center[3] = { 0.0, 0.0, 0.0 };
+  const std::vector<double> xyz = nvtest::SpherePoints(4000, 0.5, center);
+  for (const char* where : { "relax", "contour" })
+  {
+    nv::Reconstruction run(settings, nullptr, nullptr,
+      nv::MakeDeviceEngine(std::unique_ptr<nv::device::Launcher>(new FailingLauncher(where)), "GPU"));
+    nv::SurfaceMesh surface;
+    const nv::Outcome outcome = nv::Reconstruct(run, xyz, nullptr, surface, nv::VolumeRequest(), false);
+    std::printf("Device GPU failing (%s): %s\n", where, outcome.Error.c_str());
+    const std::string expected =
+      std::string("The GPU failed (") + where + "): out of memory (a test)\nChoose Device CPU or Automatic.";
+    NV_CHECK(!outcome.Done);
+    NV_CHECK(outcome.Error == expected);
+    NV_CHECK(run.DeviceUsed() == nv::DeviceKind::GPU);
+  }
+}
+
 } // namespace
 
 int main(int argc, char* argv[])
@@ -648,5 +766,6 @@ int main(int argc, char* argv[])
   TestRuns();
   TestMissingGpu();
   TestDeviceCannot();
+  TestDeviceFails();
   return nvtest::Result(NV_TEST_NAME);
 }

@@ -10,8 +10,8 @@
 // thread pool (nvParallel.h), so the whole device algorithm runs and is
 // tested on every machine. The loops around them (the sweeps, the
 // over-relaxation's estimate, the stopping rule) are host code shared by
-// both launchers (nvDeviceEvolution.cxx); a launcher only allocates, copies
-// and launches.
+// both launchers and the CPU's solver (nvDeviceEvolution.cxx on
+// Scheme/nvTimeLoop.h); a launcher only allocates, copies and launches.
 //
 // The formulas are the CPU core's solver's own: both call the scheme's terms
 // (Scheme/nvSchemeTerms.h), so that the host launcher gives the CPU core's

@@ -46,14 +46,14 @@ device::DenseConstants DenseConstantsOf(const Grid& grid, const Parameters& sche
 class DeviceEngine : public Engine
 {
 public:
-  DeviceEngine(std::unique_ptr<device::Launcher> launcher, bool onHost)
+  DeviceEngine(std::unique_ptr<device::Launcher> launcher, const std::string& name)
     : Launcher(std::move(launcher))
-    , OnHost(onHost)
+    , TheName(name)
   {
   }
 
   DeviceKind Kind() const override { return DeviceKind::GPU; }
-  std::string Name() const override { return this->OnHost ? "GPU on the host" : "GPU"; }
+  std::string Name() const override { return this->TheName; }
 
   NarrowBand BuildBand(const Grid& grid, const Parameters& scheme, std::vector<double> xyz, const DenseVolume* dense,
     const EngineContext& context) override
@@ -157,7 +157,7 @@ private:
   }
 
   std::unique_ptr<device::Launcher> Launcher;
-  bool OnHost = false;
+  std::string TheName;
   bool Dense = false; ///< the device fills the dense arrays
   BandValues DevicePhi;
   double PeakBytes = 0.0;
@@ -188,7 +188,12 @@ std::unique_ptr<Engine> MakeDeviceEngine(GpuKernels kernels, std::string& error)
       return nullptr;
     }
   }
-  return std::unique_ptr<Engine>(new DeviceEngine(std::move(launcher), kernels == GpuKernels::OnHost));
+  return MakeDeviceEngine(std::move(launcher), kernels == GpuKernels::OnHost ? "GPU on the host" : "GPU");
+}
+
+std::unique_ptr<Engine> MakeDeviceEngine(std::unique_ptr<device::Launcher> launcher, const std::string& name)
+{
+  return std::unique_ptr<Engine>(new DeviceEngine(std::move(launcher), name));
 }
 
 } // namespace nv

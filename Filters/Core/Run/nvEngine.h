@@ -39,6 +39,10 @@
 
 namespace nv
 {
+namespace device
+{
+class Launcher;
+}
 class Halo;
 class Monitor;
 class SurfaceSink;
@@ -127,6 +131,10 @@ std::string DeviceCannot(const Settings& settings, bool distributed);
  */
 std::unique_ptr<Engine> MakeEngine(
   const Settings& settings, bool distributed, GpuKernels kernels, std::string& error);
+
+/// The device engine on a launcher of the caller's (tests: a launcher that
+/// fails on purpose); `name` is its Name().
+std::unique_ptr<Engine> MakeDeviceEngine(std::unique_ptr<device::Launcher> launcher, const std::string& name);
 
 } // namespace nv
 

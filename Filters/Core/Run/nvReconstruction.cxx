@@ -101,6 +101,13 @@ Reconstruction::Reconstruction(
 {
 }
 
+Reconstruction::Reconstruction(
+  const Settings& settings, Communicator* communicator, Monitor* monitor, std::unique_ptr<Engine> engine)
+  : Reconstruction(settings, communicator, monitor)
+{
+  this->GivenEngine = std::move(engine);
+}
+
 double Reconstruction::OutputBegin() const
 {
   return this->TheSettings.WallThickness > 0.0 ? PrintRunShare : RunShare;
@@ -162,7 +169,13 @@ bool Reconstruction::RunSteps(std::vector<double> xyz, std::shared_ptr<const Sam
 
 bool Reconstruction::ChooseEngine()
 {
-  // 1, continued: where the run computes, the CPU or the device (nvEngine.h).
+  // 1, continued: where the run computes, the CPU or the device (nvEngine.h),
+  // unless the caller gave the engine (for this run only).
+  if (this->GivenEngine)
+  {
+    this->TheEngine = std::move(this->GivenEngine);
+    return true;
+  }
   std::string error;
   this->TheEngine = MakeEngine(this->TheSettings, this->Comm != nullptr, this->Kernels, error);
   return this->TheEngine ? true : this->Fail(error);

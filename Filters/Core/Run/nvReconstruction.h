@@ -60,6 +60,10 @@ public:
   /// kernels run (nvEngine.h; OnHost for tests and benchmarks).
   Reconstruction(const Settings& settings, Communicator* communicator, Monitor* monitor,
     GpuKernels kernels = GpuKernels::OnGpu);
+  /// The same on an engine of the caller's (tests: MakeDeviceEngine with a
+  /// launcher that fails on purpose), which the run takes as it is.
+  Reconstruction(const Settings& settings, Communicator* communicator, Monitor* monitor,
+    std::unique_ptr<Engine> engine);
   ~Reconstruction();
 
   /// Returns the dense arrays to fill for the node layers [kBegin, kEnd).
@@ -195,7 +199,8 @@ private:
   double PointsBeforeBand = 0.0; ///< the points CheckMemory counted
   NarrowBand Band;
   std::unique_ptr<Halo> TheHalo;
-  std::unique_ptr<Engine> TheEngine; ///< chosen once, the run's first step
+  std::unique_ptr<Engine> TheEngine;   ///< chosen once, the run's first step
+  std::unique_ptr<Engine> GivenEngine; ///< the caller's, for the next run
   std::int64_t BandNodes = 0;
   std::vector<double> Changes;
   double SetupTime = 0.0;
