@@ -419,48 +419,6 @@ struct NeighbourConstants
   double Offset = 0.0; ///< l: phi0 > 0 exactly when d < l (eq. 2)
 };
 
-/// The index of `value` in the ascending values [begin, end) of `sorted`,
-/// or -1 when it is not there (a binary search: std::lower_bound is not
-/// device code).
-template <typename T>
-NV_HD inline std::int64_t IndexOf(const T* sorted, std::int64_t begin, std::int64_t end, T value)
-{
-  const std::int64_t last = end;
-  while (begin < end) // the first index whose value is not below `value`
-  {
-    const std::int64_t middle = begin + (end - begin) / 2;
-    if (sorted[middle] < value)
-    {
-      begin = middle + 1;
-    }
-    else
-    {
-      end = middle;
-    }
-  }
-  return begin < last && sorted[begin] == value ? begin : -1;
-}
-
-/// The last index i < count with sorted[i] <= value, or -1 (sorted
-/// ascending).
-NV_HD inline std::int64_t LastAtOrBelow(const std::int64_t* sorted, std::int64_t count, std::int64_t value)
-{
-  std::int64_t begin = 0, end = count; // the answer is begin - 1 once they meet
-  while (begin < end)
-  {
-    const std::int64_t middle = begin + (end - begin) / 2;
-    if (sorted[middle] <= value)
-    {
-      begin = middle + 1;
-    }
-    else
-    {
-      end = middle;
-    }
-  }
-  return begin - 1;
-}
-
 /// Brick slot a's six adjacent slots, as IndexBricks (a brick off the band
 /// or the grid: -1).
 struct AdjacentBricksKernel

@@ -155,7 +155,7 @@ struct BandBricks
     const bool inGrid =
       x >= 0 && x < C->BrickDims[0] && y >= 0 && y < C->BrickDims[1] && z >= 0 && z < C->BrickDims[2];
     const std::int64_t a =
-      inGrid ? FindBrick(A->Bricks, A->NumberOfBricks, x + C->BrickDims[0] * (y + C->BrickDims[1] * z)) : -1;
+      inGrid ? IndexOf(A->Bricks, 0, A->NumberOfBricks, x + C->BrickDims[0] * (y + C->BrickDims[1] * z)) : -1;
     uniform = inGrid ? static_cast<float>(-C->Cap) : 0.0f;
     return a < 0 ? nullptr : A->Psi + 512 * a;
   }
@@ -255,7 +255,7 @@ struct TrianglesKernel
     const int bit = CellEdgeBit(i, j, k, edge, step);
     const std::int64_t brick =
       (b[0] + step[0]) + C.BrickDims[0] * ((b[1] + step[1]) + C.BrickDims[1] * (b[2] + step[2]));
-    const std::int64_t r = FindBrick(A.CutBricks, A.NumberOfCutBricks, brick);
+    const std::int64_t r = IndexOf(A.CutBricks, 0, A.NumberOfCutBricks, brick);
     if (r < 0)
     {
       return -1; // not reached: a cut edge's brick is a cut brick

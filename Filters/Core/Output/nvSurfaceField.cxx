@@ -64,7 +64,7 @@ void BandField::Layer(std::int64_t layer, std::vector<float>& uniform, std::vect
 void BandField::Values(std::int64_t brick, float values[BrickNodes]) const
 {
   const NarrowBand& band = this->Band;
-  const std::int64_t a = FindBrick(band.Bricks.data(), static_cast<std::int64_t>(band.Bricks.size()), brick);
+  const std::int64_t a = IndexOf(band.Bricks.data(), 0, static_cast<std::int64_t>(band.Bricks.size()), brick);
   if (a < 0)
   {
     std::fill(values, values + BrickNodes, this->Psi.Outside()); // a brick no point reaches

@@ -13,7 +13,7 @@
 //                      clamped to +-eta/2 (nvSurfaceField.h says why);
 //   BandBrickPsi       psi at a band brick's 512 nodes: its band nodes'
 //                      from phi, the others +-eta/2 by their side of the
-//                      shell (FindBrick: a brick among the band's);
+//                      shell (IndexOf, nvBandTerms.h: a brick among the band's);
 //   SurfaceWindow      psi on the nodes -1 .. 9 of a brick along each axis
 //     FillWindow       (11^3), filled from the 27 bricks around it;
 //   MarkAbove          the signs of a brick's cells' corners (a node at 0
@@ -49,6 +49,7 @@
 #ifndef nvSurfaceTerms_h
 #define nvSurfaceTerms_h
 
+#include "nvBandTerms.h"
 #include "nvBits.h"
 #include "nvHostDevice.h"
 #include "nvTruncatedDistance.h"
@@ -70,25 +71,6 @@ constexpr int CellEdges = 12;
 /// triangles. Three points inside three different edges of a cube are never
 /// on one line, so every triangle then has an area.
 constexpr double VertexMargin = 1e-3;
-
-/// The index of `brick` in the ascending `sorted` (n values), or -1.
-NV_HD inline std::int64_t FindBrick(const std::int64_t* sorted, std::int64_t n, std::int64_t brick)
-{
-  std::int64_t lo = 0, hi = n;
-  while (lo < hi)
-  {
-    const std::int64_t mid = lo + (hi - lo) / 2;
-    if (sorted[mid] < brick)
-    {
-      lo = mid + 1;
-    }
-    else
-    {
-      hi = mid;
-    }
-  }
-  return lo < n && sorted[lo] == brick ? lo : -1;
-}
 
 /// psi of phi, clamped to [-cap, cap] (cap = eta/2); its sign is phi's.
 /// scale = sqrt(2) xi; atanh(phi) = log((1 + phi) / (1 - phi)) / 2, the
