@@ -157,7 +157,8 @@ public:
   {
     BOTH_SHEETS = 0,
     OUTER_SHEET = 1,
-    INNER_SHEETS = 2
+    INNER_SHEETS = 2,
+    SCAN_SURFACE = 3
   };
   /// The way down for the drain holes (SetDrainHoleAxis).
   enum DrainHoleAxisType
@@ -203,7 +204,7 @@ public:
   vtkNarrowVolumeClampMacro(NumberOfThreads, int, 0, 1024);
   vtkNarrowVolumeClampMacro(MemoryLimit, double, 0.0, 1e12);
   vtkNarrowVolumeClampMacro(Device, int, DEVICE_AUTOMATIC, DEVICE_GPU);
-  vtkNarrowVolumeClampMacro(Sheets, int, BOTH_SHEETS, INNER_SHEETS);
+  vtkNarrowVolumeClampMacro(Sheets, int, BOTH_SHEETS, SCAN_SURFACE);
   vtkNarrowVolumeSwitchMacro(RemoveSmallPieces);
   vtkNarrowVolumeSwitchMacro(OutputVolume);
   vtkNarrowVolumeSwitchMacro(OutputInitialPhi);
@@ -233,6 +234,7 @@ public:
   void SetSheetsToBoth() { this->SetSheets(BOTH_SHEETS); }
   void SetSheetsToOuter() { this->SetSheets(OUTER_SHEET); }
   void SetSheetsToInner() { this->SetSheets(INNER_SHEETS); }
+  void SetSheetsToScan() { this->SetSheets(SCAN_SURFACE); }
   void SetDrainHoleAxisToMinusX() { this->SetDrainHoleAxis(DRAIN_MINUS_X); }
   void SetDrainHoleAxisToPlusX() { this->SetDrainHoleAxis(DRAIN_PLUS_X); }
   void SetDrainHoleAxisToMinusY() { this->SetDrainHoleAxis(DRAIN_MINUS_Y); }

@@ -190,15 +190,21 @@ PROPERTIES = (
         "1 (CPU) or 2 (GPU)."),
     # --- Output
     Property(
-        "Sheets", "Sheets", int, 0, 0, 2,
+        "Sheets", "Sheets", int, 0, 0, 3,
         (Choice("BOTH_SHEETS", "Both", 0, "Both"),
          Choice("OUTER_SHEET", "Outer", 1, "Outer"),
-         Choice("INNER_SHEETS", "Inner", 2, "Inner")),
+         Choice("INNER_SHEETS", "Inner", 2, "Inner"),
+         Choice("SCAN_SURFACE", "Scan", 3, "Scan")),
         "Sheets", "Output", False, None,
-        "Which phi = 0 sheets the Surface output holds: BOTH_SHEETS (0, the default); OUTER_SHEET (1), the "
-        "one facing the outside (for a closed input, its dilation by the offset distance); or INNER_SHEETS "
-        "(2), those facing cavities enclosed by the shell (its erosion). An open scan has only an outer sheet. "
-        "phi is the same; choosing one sheet needs the dense grid even when {OutputVolume} is off."),
+        "Which surface the Surface output holds: BOTH_SHEETS (0, the default), the phi = 0 sheets; "
+        "OUTER_SHEET (1), the one facing the outside (for a closed input, its dilation by the offset "
+        "distance); INNER_SHEETS (2), those facing cavities enclosed by the shell (its erosion); or "
+        "SCAN_SURFACE (3), no sheet but one closed surface on the scan, through the middle of the points "
+        "(where noise thickens the shell, not on its outer envelope), made from the shell without normals. "
+        "An open scan has only an outer sheet, and no scan surface (the scan surface bounds a solid): a "
+        "warning says so. Field data \"ScanDistanceMean\" and \"ScanDistance95\" hold how far the points lie "
+        "from the scan surface (mean and 95th percentile, in cells). "
+        "phi is the same; all but BOTH_SHEETS need the dense grid even when {OutputVolume} is off."),
     Property(
         "RemoveSmallPieces", "Remove Small Pieces", bool, True, None, None, (), None, "Output", False, None,
         "Remove loose pieces smaller than a ball of radius 2 l (the balls around lone points) and voids "

@@ -347,7 +347,8 @@ NB_MODULE(_core, m)
   nb::enum_<nv::Sheets>(m, "Sheets", nb::is_arithmetic(), "The phi = 0 sheets a surface keeps.")
     .value("Both", nv::Sheets::Both)
     .value("Outer", nv::Sheets::Outer)
-    .value("Inner", nv::Sheets::Inner);
+    .value("Inner", nv::Sheets::Inner)
+    .value("Scan", nv::Sheets::Scan);
   nb::enum_<nv::DrainAxis>(m, "DrainAxis", nb::is_arithmetic(), "The way down for the drain holes.")
     .value("MinusX", nv::DrainAxis::MinusX)
     .value("PlusX", nv::DrainAxis::PlusX)

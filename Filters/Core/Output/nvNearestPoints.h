@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The nearest of a set of points to a place: the part to print's measures
 // (its thinnest wall, nvPartChecks.cxx) and its check against the scan
-// (the scan points it lost, the neighbours that join them).
+// (the scan points it lost, the neighbours that join them), and the scan
+// points' distances to the scan surface (nvScanSurface.cxx).
 #ifndef nvNearestPoints_h
 #define nvNearestPoints_h
 
@@ -22,7 +23,8 @@ namespace nv
 class NearestPoints
 {
 public:
-  NearestPoints(const double* points, std::int64_t n)
+  /// numbered: keep each point's number in the caller's array (Nearest's id).
+  NearestPoints(const double* points, std::int64_t n, bool numbered = false)
     : Points(static_cast<std::size_t>(n))
     , Axis(static_cast<std::size_t>(n), 0)
   {
@@ -30,7 +32,42 @@ public:
     {
       std::copy(points + 3 * p, points + 3 * p + 3, this->Points[p].begin());
     }
-    this->Build(0, n);
+    if (numbered)
+    {
+      // The tree is built on the numbers, then the points put in its order.
+      this->Ids.resize(static_cast<std::size_t>(n));
+      for (std::int64_t p = 0; p < n; ++p)
+      {
+        this->Ids[p] = p;
+      }
+      this->BuildNumbered(0, n);
+      std::vector<std::array<double, 3>> ordered(static_cast<std::size_t>(n));
+      for (std::int64_t p = 0; p < n; ++p)
+      {
+        ordered[p] = this->Points[this->Ids[p]];
+      }
+      this->Points.swap(ordered);
+    }
+    else
+    {
+      this->Build(0, n);
+    }
+  }
+
+  /// The number (in the caller's array) of the point nearest to x, or -1
+  /// when none is nearer than `cap`; `distance`: its distance. Needs a
+  /// numbered tree.
+  std::int64_t Nearest(const double x[3], double cap, double& distance) const
+  {
+    std::vector<std::pair<double, std::int64_t>> best;
+    this->SearchK(x, 0, static_cast<std::int64_t>(this->Points.size()), 1, cap * cap, best);
+    if (best.empty())
+    {
+      distance = cap;
+      return -1;
+    }
+    distance = std::sqrt(best.front().first);
+    return this->Ids[best.front().second];
   }
 
   /// The distance from x to the nearest point, or `cap` when none is nearer.
@@ -84,6 +121,35 @@ private:
     this->Axis[middle] = static_cast<char>(axis);
     this->Build(begin, middle);
     this->Build(middle + 1, end);
+  }
+
+  /// Build's split on the numbers: the same tree, the points left in place.
+  void BuildNumbered(std::int64_t begin, std::int64_t end)
+  {
+    if (end - begin <= Leaf)
+    {
+      return;
+    }
+    std::array<double, 3> low = this->Points[this->Ids[begin]], high = low;
+    for (std::int64_t p = begin; p < end; ++p)
+    {
+      for (int a = 0; a < 3; ++a)
+      {
+        low[a] = std::min(low[a], this->Points[this->Ids[p]][a]);
+        high[a] = std::max(high[a], this->Points[this->Ids[p]][a]);
+      }
+    }
+    int axis = 0;
+    for (int a = 1; a < 3; ++a)
+    {
+      axis = high[a] - low[a] > high[axis] - low[axis] ? a : axis;
+    }
+    const std::int64_t middle = begin + (end - begin) / 2;
+    std::nth_element(this->Ids.begin() + begin, this->Ids.begin() + middle, this->Ids.begin() + end,
+      [this, axis](std::int64_t u, std::int64_t v) { return this->Points[u][axis] < this->Points[v][axis]; });
+    this->Axis[middle] = static_cast<char>(axis);
+    this->BuildNumbered(begin, middle);
+    this->BuildNumbered(middle + 1, end);
   }
 
   void Search(const double x[3], std::int64_t begin, std::int64_t end, double& best) const
@@ -166,6 +232,7 @@ private:
 
   std::vector<std::array<double, 3>> Points;
   std::vector<char> Axis; ///< the split axis of the range whose middle is this point
+  std::vector<std::int64_t> Ids; ///< each point's number in the caller's array (numbered trees)
 };
 
 } // namespace nv

@@ -35,57 +35,6 @@ constexpr double LostRadiusCells = 2.0;
 /// Lost points nearer than this many cells are one region (LostRegions).
 constexpr double LostRegionReach = 4.0;
 
-/// A node array as a brick field, for contouring (every brick varies;
-/// beyond the grid, `outside`).
-class NodeField : public BrickField
-{
-public:
-  NodeField(const Grid& grid, const std::vector<float>& values, float outside)
-    : TheGrid(grid)
-    , Nodes(values)
-    , Outside(outside)
-    , BrickDims(BrickDimensions(grid))
-  {
-  }
-
-  void Layer(std::int64_t layer, std::vector<float>& uniform, std::vector<std::int64_t>& varying) const override
-  {
-    const std::int64_t perLayer = this->BrickDims[0] * this->BrickDims[1];
-    uniform.assign(static_cast<std::size_t>(perLayer), this->Outside);
-    varying.resize(static_cast<std::size_t>(perLayer));
-    for (std::int64_t b = 0; b < perLayer; ++b)
-    {
-      varying[b] = layer * perLayer + b;
-    }
-  }
-
-  void Values(std::int64_t brick, float values[BrickNodes]) const override
-  {
-    const Grid& grid = this->TheGrid;
-    const std::int64_t first[3] = { (brick % this->BrickDims[0]) * BrickSize,
-      ((brick / this->BrickDims[0]) % this->BrickDims[1]) * BrickSize,
-      (brick / (this->BrickDims[0] * this->BrickDims[1])) * BrickSize };
-    for (int k = 0; k < BrickSize; ++k)
-    {
-      for (int j = 0; j < BrickSize; ++j)
-      {
-        for (int i = 0; i < BrickSize; ++i)
-        {
-          const std::int64_t x = first[0] + i, y = first[1] + j, z = first[2] + k;
-          values[i + BrickSize * (j + BrickSize * k)] = x < grid.Dims[0] && y < grid.Dims[1] && z < grid.Dims[2]
-            ? this->Nodes[grid.Index(x, y, z)]
-            : this->Outside;
-        }
-      }
-    }
-  }
-
-private:
-  const Grid& TheGrid;
-  const std::vector<float>& Nodes;
-  float Outside;
-  std::array<std::int64_t, 3> BrickDims;
-};
 } // namespace
 
 using namespace part; // the steps (nvPartSteps.h)

@@ -12,7 +12,7 @@ namespace nv
 
 std::int64_t KeepSheets(const Grid& grid, float* phi, Sheets which, Monitor* monitor)
 {
-  if (which == Sheets::Both)
+  if (which == Sheets::Both || which == Sheets::Scan)
   {
     return -1;
   }

@@ -19,7 +19,8 @@ enum class Sheets
 {
   Both = 0,
   Outer = 1,
-  Inner = 2
+  Inner = 2,
+  Scan = 3 ///< no sheet: the surface on the scan (nvScanSurface.h)
 };
 
 /**
@@ -28,7 +29,8 @@ enum class Sheets
  * sheets, or the exterior is (to drop the outer sheet). Both: no change.
  * Returns the number of cavity nodes (phi < 0, not reachable from the
  * grid's boundary): 0 when the shell encloses nothing, as around an open
- * scan whose two sheets join at its rim; -1 for Both, or when the monitor
+ * scan whose two sheets join at its rim; -1 for Both (and Scan, which is
+ * no sheet: phi unchanged), or when the monitor
  * (may be null) asked to stop the search (phi is then unchanged).
  */
 std::int64_t KeepSheets(const Grid& grid, float* phi, Sheets which, Monitor* monitor = nullptr);

@@ -124,4 +124,44 @@ void DenseField::Values(std::int64_t brick, float values[BrickNodes]) const
   }
 }
 
+NodeField::NodeField(const Grid& grid, const std::vector<float>& values, float outside)
+  : TheGrid(grid)
+  , Nodes(values)
+  , Outside(outside)
+  , BrickDims(BrickDimensions(grid))
+{
+}
+
+void NodeField::Layer(std::int64_t layer, std::vector<float>& uniform, std::vector<std::int64_t>& varying) const
+{
+  const std::int64_t perLayer = this->BrickDims[0] * this->BrickDims[1];
+  uniform.assign(static_cast<std::size_t>(perLayer), this->Outside);
+  varying.resize(static_cast<std::size_t>(perLayer));
+  for (std::int64_t b = 0; b < perLayer; ++b)
+  {
+    varying[b] = layer * perLayer + b;
+  }
+}
+
+void NodeField::Values(std::int64_t brick, float values[BrickNodes]) const
+{
+  const Grid& grid = this->TheGrid;
+  const std::int64_t first[3] = { (brick % this->BrickDims[0]) * BrickSize,
+    ((brick / this->BrickDims[0]) % this->BrickDims[1]) * BrickSize,
+    (brick / (this->BrickDims[0] * this->BrickDims[1])) * BrickSize };
+  for (int k = 0; k < BrickSize; ++k)
+  {
+    for (int j = 0; j < BrickSize; ++j)
+    {
+      for (int i = 0; i < BrickSize; ++i)
+      {
+        const std::int64_t x = first[0] + i, y = first[1] + j, z = first[2] + k;
+        values[i + BrickSize * (j + BrickSize * k)] = x < grid.Dims[0] && y < grid.Dims[1] && z < grid.Dims[2]
+          ? this->Nodes[grid.Index(x, y, z)]
+          : this->Outside;
+      }
+    }
+  }
+}
+
 } // namespace nv

@@ -102,6 +102,22 @@ private:
   std::array<std::int64_t, 3> BrickDims;
 };
 
+/// A field given on every node of the grid, as it is (the part's f, the
+/// scan surface's; every brick varies); beyond the grid, `outside`.
+class NodeField : public BrickField
+{
+public:
+  NodeField(const Grid& grid, const std::vector<float>& values, float outside);
+  void Layer(std::int64_t layer, std::vector<float>& uniform, std::vector<std::int64_t>& varying) const override;
+  void Values(std::int64_t brick, float values[BrickNodes]) const override;
+
+private:
+  const Grid& TheGrid;
+  const std::vector<float>& Nodes;
+  float Outside;
+  std::array<std::int64_t, 3> BrickDims;
+};
+
 /**
  * Whether psi takes one value on band brick a: no band nodes, and all its
  * nodes on one side of the shell (`inside`: which). The bricks where it

@@ -6,6 +6,7 @@
 #include "nvParallel.h"
 #include "nvPrintPart.h"
 #include "nvRunWarnings.h"
+#include "nvScanSurface.h"
 #include "nvSheets.h"
 #include "nvSurface.h"
 #include "nvSurfaceField.h"
@@ -40,6 +41,14 @@ using namespace warnings; // the messages (nvRunWarnings.h)
 bool Printing(const Settings& settings)
 {
   return settings.WallThickness > 0.0;
+}
+
+/// Whether the surface is the scan surface (nvScanSurface.h) rather than
+/// sheets of the shell; the part to print comes first. A distributed run
+/// keeps both sheets (it has no whole grid).
+bool ScanSurface(const Settings& settings, bool distributed)
+{
+  return settings.Sheets == Sheets::Scan && !Printing(settings) && !distributed;
 }
 
 /// Whether the run fills dense arrays (RequestVolume): for output 0, or to
@@ -147,6 +156,49 @@ std::string PartSize(const double part[6], const double cloud[6])
   return size(part) + " (the cloud " + size(cloud) + ")";
 }
 
+/// A copy of the dense phi, for the part to print or the scan surface to
+/// fill its cavities in (FillCavities). A node where phi is exactly 0 (a
+/// sheet through a plane of nodes, as a cloud whose faces lie on the grid's
+/// planes gives) counts as the shell's: KeepSheets fills only phi < 0, and a
+/// plane of zeros inside the outer sheet would stop the distance D there and
+/// open a cavity in the wall.
+std::vector<float> OuterOf(const Grid& grid, const VolumeArrays& dense)
+{
+  std::vector<float> outer(dense.Phi, dense.Phi + grid.NumberOfNodes());
+  std::replace(outer.begin(), outer.end(), 0.0f, std::numeric_limits<float>::min());
+  return outer;
+}
+
+/// phi > 0 inside the outer sheet: its cavities filled (KeepSheets, Outer).
+/// Returns false if the monitor stopped it.
+bool FillCavities(const Grid& grid, std::vector<float>& outer, Monitor* monitor)
+{
+  KeepSheets(grid, outer.data(), Sheets::Outer, monitor);
+  return !StopAsked(monitor);
+}
+
+/// Step 7, the scan surface (nvScanSurface.h), from a copy of the dense phi
+/// whose cavities are filled. Returns false if the monitor stopped it.
+bool MakeScan(Reconstruction& run, SurfaceSink& sink, const VolumeArrays& dense, const std::vector<double>& scan,
+  Outcome& outcome)
+{
+  const Grid& grid = run.GetGrid();
+  if (!run.GetSettings().OutputVolume)
+  {
+    outcome.Warnings.push_back(OneSheetNeedsGridWarning(true));
+  }
+  std::vector<float> outer = OuterOf(grid, dense);
+  const bool done = run.GetStageTimes().Time("scan surface", [&]() {
+    return FillCavities(grid, outer, run.GetMonitor()) &&
+      MakeScanSurface(grid, run.GetParameters(), outer.data(), scan.data(), static_cast<std::int64_t>(scan.size() / 3),
+        run.GetSettings().RemoveSmallPieces, sink, run.GetMonitor(), outcome.Scan);
+  });
+  outcome.Scanned = done;
+  outcome.Removed.Pieces = outcome.Scan.RemovedPieces;
+  outcome.Removed.Voids = outcome.Scan.RemovedVoids;
+  return done;
+}
+
 /// Step 7, printing: the part (nvPrintPart.h), from a copy of the dense phi
 /// whose cavities KeepSheets fills. Returns false if the monitor stopped it.
 bool MakePrintPart(Reconstruction& run, SurfaceSink& sink, const VolumeArrays& dense,
@@ -154,12 +206,7 @@ bool MakePrintPart(Reconstruction& run, SurfaceSink& sink, const VolumeArrays& d
 {
   const Settings& settings = run.GetSettings();
   const Grid& grid = run.GetGrid();
-  std::vector<float> outer(dense.Phi, dense.Phi + grid.NumberOfNodes());
-  // A node where phi is exactly 0 (a sheet through a plane of nodes, as a
-  // cloud whose faces lie on the grid's planes gives) counts as the shell's:
-  // KeepSheets fills only phi < 0, and a plane of zeros inside the outer
-  // sheet would stop the distance D there and open a cavity in the wall.
-  std::replace(outer.begin(), outer.end(), 0.0f, std::numeric_limits<float>::min());
+  std::vector<float> outer = OuterOf(grid, dense);
   const std::int64_t shellNodes = std::count_if(outer.begin(), outer.end(), [](float phi) { return phi > 0.0f; });
   outcome.Print.ShellVolume = static_cast<double>(shellNodes) * std::pow(grid.Spacing, 3);
   PartRequest request;
@@ -176,8 +223,7 @@ bool MakePrintPart(Reconstruction& run, SurfaceSink& sink, const VolumeArrays& d
   request.Progress[0] = run.OutputBegin();
   request.Progress[1] = 1.0 - run.OutputBegin();
   const bool done = run.GetStageTimes().Time("part", [&]() {
-    KeepSheets(grid, outer.data(), Sheets::Outer, run.GetMonitor());
-    return !StopAsked(run.GetMonitor()) &&
+    return FillCavities(grid, outer, run.GetMonitor()) &&
       MakePart(grid, run.GetParameters(), outer.data(), request, sink, run.GetMonitor(), outcome.Print);
   });
   outcome.Printed = done;
@@ -206,7 +252,7 @@ bool MakeShell(Reconstruction& run, SurfaceSink& sink, const VolumeArrays& dense
   // From a copy of the dense phi (phi stays phi), which KeepSheets rewrites.
   if (!settings.OutputVolume)
   {
-    outcome.Warnings.push_back(OneSheetNeedsGridWarning());
+    outcome.Warnings.push_back(OneSheetNeedsGridWarning(false));
   }
   std::vector<float> phi(dense.Phi, dense.Phi + run.GetGrid().NumberOfNodes());
   std::int64_t cavities = 0;
@@ -232,12 +278,13 @@ bool MakeSurface(Reconstruction& run, SurfaceSink& sink, const VolumeArrays& den
   {
     monitor->Stage(run.OutputBegin(), 1.0 - run.OutputBegin());
   }
-  const bool printing = Printing(settings);
+  const bool printing = Printing(settings), scanning = ScanSurface(settings, distributed);
   const bool done = printing ? MakePrintPart(run, sink, dense, scan, outcome)
+    : scanning               ? MakeScan(run, sink, dense, scan, outcome)
                              : MakeShell(run, sink, dense, distributed, outcome, noInnerSheet);
   run.ReleaseBand(); // the surface is made: what follows needs neither
   const bool stopped = monitor && monitor->Aborted();
-  if (done && !printing && settings.RemoveSmallPieces && !distributed && !stopped)
+  if (done && !printing && !scanning && settings.RemoveSmallPieces && !distributed && !stopped)
   {
     const auto start = StageTimes::Clock::now();
     outcome.Removed = RemoveSmallPieces(sink, run.GetParameters().OffsetDistance, run.GetGrid(),
@@ -292,7 +339,14 @@ void WarnAboutResult(const Reconstruction& run, bool distributed, double surface
   {
     outcome.Warnings.push_back(DrainHolesWithoutWallWarning(settings));
   }
-  if (surfacePoints == 0 && !Printing(settings) && !explained)
+  if (ScanSurface(settings, distributed))
+  {
+    for (std::string& warning : ScanWarnings(run, outcome.Scan))
+    {
+      outcome.Warnings.push_back(std::move(warning));
+    }
+  }
+  if (surfacePoints == 0 && !Printing(settings) && !ScanSurface(settings, distributed) && !explained)
   {
     outcome.Warnings.push_back(EmptySurfaceWarning(offset, run.GetGrid().Spacing));
   }
@@ -325,6 +379,20 @@ std::vector<SummaryArray> PartSummary(const Settings& settings, const PrintRepor
   };
 }
 
+/// Step 9: the scan surface's figures, in the volume's field data before
+/// StageSeconds (distances in cells).
+std::vector<SummaryArray> ScanSummary(const ScanReport& scan)
+{
+  return {
+    { "ScanSurface", SummaryArray::Int, 1, { 1.0 } }, // 1: closed (nvScanSurface.h)
+    { "ScanSurfacePieces", SummaryArray::Double, 1, { static_cast<double>(scan.Pieces) } },
+    { "ScanSurfaceVolume", SummaryArray::Double, 1, { scan.Volume } },
+    { "ScanDistanceMean", SummaryArray::Double, 1, { scan.MeanDistance } },
+    { "ScanDistance95", SummaryArray::Double, 1, { scan.Distance95 } },
+    { "ScanDepth", SummaryArray::Double, 1, { scan.MedianDepth } },
+  };
+}
+
 /// Steps 1-9 (Reconstruct, in its thread scope).
 Outcome ReconstructSteps(Reconstruction& run, std::vector<double> xyz, std::shared_ptr<const Sampling> sampling,
   SurfaceSink& sink, const VolumeRequest& volume, bool distributed)
@@ -349,8 +417,10 @@ Outcome ReconstructSteps(Reconstruction& run, std::vector<double> xyz, std::shar
     });
   }
   // Steps 1-6. The part to print is checked against the scan's own points
-  // (not the bridging ones the run adds): a copy.
-  const std::vector<double> scan = Printing(run.GetSettings()) ? xyz : std::vector<double>();
+  // (not the bridging ones the run adds), and the scan surface placed
+  // among them: a copy.
+  const bool scanning = ScanSurface(run.GetSettings(), distributed);
+  const std::vector<double> scan = Printing(run.GetSettings()) || scanning ? xyz : std::vector<double>();
   if (!run.Run(std::move(xyz), std::move(sampling)))
   {
     outcome.Error = run.Error();
@@ -391,6 +461,11 @@ Outcome ReconstructSteps(Reconstruction& run, std::vector<double> xyz, std::shar
   {
     const std::vector<SummaryArray> part = PartSummary(run.GetSettings(), outcome.Print);
     outcome.Summary.insert(outcome.Summary.end() - 1, part.begin(), part.end()); // StageSeconds stays last
+  }
+  if (outcome.Scanned)
+  {
+    const std::vector<SummaryArray> figures = ScanSummary(outcome.Scan);
+    outcome.Summary.insert(outcome.Summary.end() - 1, figures.begin(), figures.end());
   }
   return outcome;
 }

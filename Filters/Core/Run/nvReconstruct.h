@@ -45,7 +45,8 @@
 //      (Reconstruction::ExtractSurface: nvSurface.h, or the device's
 //      kernels), or, to keep one
 //      sheet, from a copy of the dense phi that KeepSheets rewrote
-//      (nvSheets.h), or the part to print (nvPrintPart.h);
+//      (nvSheets.h), or the part to print (nvPrintPart.h), or the
+//      surface on the scan (nvScanSurface.h);
 //   8. its small pieces removed, and phi flipped in the same regions
 //      (RemoveSmallPieces, nvPieces.h);
 //   9. the warnings (a grid too coarse for the offset, holes left open, an
@@ -62,6 +63,7 @@
 #include "nvPieces.h"
 #include "nvPrintPart.h"
 #include "nvReconstruction.h"
+#include "nvScanSurface.h"
 
 #include <array>
 #include <cstdint>
@@ -134,6 +136,8 @@ struct Outcome
   RemovedPieces Removed;
   bool Printed = false; ///< whether the surface is the part to print (WallThickness > 0)
   PrintReport Print;    ///< its figures
+  bool Scanned = false; ///< whether the surface is the scan surface (Sheets Scan)
+  ScanReport Scan;      ///< its figures
   Results Chosen;                    ///< the run's results (when Ran)
   std::vector<SummaryArray> Summary; ///< the volume's field data (when Done)
   double OutputSeconds = 0.0;        ///< wall-clock seconds of steps 7-9

@@ -162,10 +162,11 @@ std::string NoInnerSheetWarning()
          "Keep both sheets or the outer one (Sheets), or close the holes (CloseGaps, ClosingRadius).";
 }
 
-std::string OneSheetNeedsGridWarning()
+std::string OneSheetNeedsGridWarning(bool scan)
 {
-  return "Keeping one sheet needs the dense grid: memory follows the whole box although OutputVolume is off.\n"
-         "Keep both sheets (Sheets) where memory is short.";
+  return std::string(scan ? "The scan surface" : "Keeping one sheet") +
+    " needs the dense grid: memory follows the whole box although OutputVolume is off.\n"
+    "Keep both sheets (Sheets) where memory is short.";
 }
 
 std::string EmptyPartWarning()
@@ -393,8 +394,49 @@ std::string PrintDistributedError()
 
 std::string OneSheetDistributedWarning()
 {
-  return "A distributed run outputs both sheets: keeping one needs the whole grid on one process.\n"
-         "Run on one process to keep one sheet.";
+  return "A distributed run outputs both sheets: keeping one, or the scan surface, needs the whole grid on one "
+         "process.\nRun on one process to keep one sheet or make the scan surface.";
+}
+
+std::vector<std::string> ScanWarnings(const Reconstruction& run, const ScanReport& scan)
+{
+  const Plan& plan = run.GetPlan();
+  const double l = run.GetParameters().OffsetDistance, h = run.GetGrid().Spacing;
+  const std::string closeOrShell = "Close the scan's holes (CloseGaps, ClosingRadius), or keep the shell's sheets "
+                                   "(Sheets Both or Outer), which an open scan has.";
+  std::vector<std::string> warnings;
+  std::ostringstream text;
+  text << std::setprecision(3);
+  if (!(scan.Bounds[1] > scan.Bounds[0]))
+  {
+    text << "The scan surface is empty: the shell encloses no solid, as around an open scan (one-sided, or with "
+            "holes wider than twice the offset distance), and the scan surface is the surface of a solid.\n"
+         << closeOrShell;
+    warnings.push_back(text.str());
+    return warnings;
+  }
+  const double diagonal = std::sqrt(std::pow(scan.Bounds[1] - scan.Bounds[0], 2) +
+    std::pow(scan.Bounds[3] - scan.Bounds[2], 2) + std::pow(scan.Bounds[5] - scan.Bounds[4], 2));
+  if (diagonal < LeastScanSurfaceShare * plan.Diagonal)
+  {
+    text << "The scan surface spans " << diagonal << " (its diagonal), " << 100.0 * diagonal / plan.Diagonal
+         << " % of the cloud's " << plan.Diagonal
+         << ": it lost most of the scan, where the shell encloses no solid (an open scan, or holes wider than "
+            "twice the offset distance).\n"
+         << closeOrShell;
+    warnings.push_back(text.str());
+    text.str("");
+  }
+  if (scan.MedianDistance * h > l)
+  {
+    text << "Half of the scan's points lie farther than " << scan.MedianDistance * h
+         << " from the scan surface, more than the offset distance (" << l
+         << "): the shell is open where they are, or their noise is thicker than the shell.\n"
+         << "Close the scan's holes (CloseGaps, ClosingRadius), or raise OffsetDistance above the noise's "
+            "thickness.";
+    warnings.push_back(text.str());
+  }
+  return warnings;
 }
 } // namespace warnings
 } // namespace nv

@@ -43,19 +43,27 @@ std::string CoarseGridWarning(const Reconstruction& run);
 std::string EmptySurfaceWarning(double offset, double spacing);
 /// Sheets Inner where the shell has no cavity.
 std::string NoInnerSheetWarning();
-/// One sheet kept with OutputVolume off.
-std::string OneSheetNeedsGridWarning();
+/// One sheet kept, or the scan surface made, with OutputVolume off.
+std::string OneSheetNeedsGridWarning(bool scan);
 
 /// The warnings about the part to print, after it is made: each says what
 /// is wrong with the part and what to change.
 std::vector<std::string> PartWarnings(const Settings& settings, const Reconstruction& run, const PrintReport& print,
   double surfacePoints);
 
+/// The scan surface's diagonal below this share of the cloud's: it lost
+/// most of the scan (ScanWarnings).
+constexpr double LeastScanSurfaceShare = 0.5;
+/// The warnings about the scan surface (Sheets Scan, nvScanSurface.h): empty
+/// (an open scan), much smaller than the cloud, or farther than the offset
+/// distance from half of the points; each says what to change.
+std::vector<std::string> ScanWarnings(const Reconstruction& run, const ScanReport& scan);
+
 /// Drain holes asked for without a wall (WallThickness 0).
 std::string DrainHolesWithoutWallWarning(const Settings& settings);
 /// A part to print in a distributed run.
 std::string PrintDistributedError();
-/// One sheet kept in a distributed run.
+/// One sheet or the scan surface asked for in a distributed run.
 std::string OneSheetDistributedWarning();
 } // namespace warnings
 } // namespace nv

@@ -55,7 +55,7 @@
   X(NumberOfThreads, 0, 1024) \
   X(MemoryLimit, 0.0, 1000000000000.0) \
   X(Device, 0, 2) \
-  X(Sheets, 0, 2) \
+  X(Sheets, 0, 3) \
   X(NumberOfDrainHoles, 0, 64) \
   X(DrainHoleAxis, 0, 5) \
   X(DrainHoleAngle, 0.0, 90.0)
