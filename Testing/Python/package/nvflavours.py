@@ -21,7 +21,8 @@ CPP_ONLY = {"SetController", "GetController"}
 # points saved by pip_reference.py, with lone points that make gaps and
 # loose pieces). Every property's path is in one run at least: the
 # automatic offset and grid, PreserveOffset, RemoveSmallPieces on and off
-# (with the dense phi, and without it), one sheet from the dense phi.
+# (with the dense phi, and without it), one sheet from the dense phi, the
+# scan surface.
 CASES = {
     "default": {"MaximumDimension": 80, "OffsetDistance": 0.12},
     "outputs": {"MaximumDimension": 80, "OffsetDistance": 0.12, "OutputInitialPhi": True, "OutputDistance": True,
@@ -36,6 +37,7 @@ CASES = {
                         "MaximumNumberOfIterations": 5},
     "keep-pieces": {"MaximumDimension": 80, "OffsetDistance": 0.12, "RemoveSmallPieces": False},
     "inner-sheet-volume-off": {"SampleSpacing": 0.03, "OffsetDistance": 0.12, "Sheets": 2, "OutputVolume": False},
+    "scan-surface": {"SampleSpacing": 0.03, "OffsetDistance": 0.12, "Sheets": 3},
     # A part to print with a drain hole placed on the sphere's +x side, one
     # leaning within DrainHoleAngle: the printing mode's route through the wheel.
     "part": {"SampleSpacing": 0.03, "OffsetDistance": 0.09, "WallThickness": 0.09, "CavityClosingDistance": 0.05,

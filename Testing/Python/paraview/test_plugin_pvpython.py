@@ -124,6 +124,17 @@ def test_shell_from_an_xyz_file(pvs, xyz_reader):
     assert from_xyz.GetDataInformation(1).GetNumberOfCells() > 100, "shell from an xyz file"
 
 
+def test_scan_surface_by_its_label(pvs, pts_reader):
+    """Sheets = "Scan" (the panel's label) gives one closed surface on the ball, no sheet."""
+    scan = pvs.NarrowVolumeReconstruction(Input=pts_reader, SampleSpacing=0.02, OffsetDistance=0.08, Sheets="Scan")
+    scan.UpdatePipeline()
+    surface = pvs.servermanager.Fetch(scan, idx=1)
+    assert surface.GetNumberOfCells() > 100 and nvtesting.boundary_edges(surface) == 0
+    assert nvtesting.regions(surface) == 1, "one surface, not two sheets"
+    volume = pvs.servermanager.Fetch(scan, idx=0)
+    assert volume.GetFieldData().GetArray("ScanSurface").GetValue(0) == 1
+
+
 def test_offset_default_and_slider(pvs, pts_reader):
     """The offset's default is 0 (automatic); its slider reaches a quarter of the input's largest side."""
     pts_reader.UpdatePipeline()

@@ -1,0 +1,198 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
+# SPDX-License-Identifier: BSD-3-Clause
+"""The scan surface (Sheets SCAN_SURFACE): one closed surface through the
+middle of the points, on shapes whose surface is known, clean and noisy,
+sharp-edged, with a thin limb, in millimetres, unevenly sampled; and the
+warnings where it cannot be made (open scans, a scan it mostly loses)."""
+import warnings
+
+import numpy as np
+import pytest
+from vtkmodules.util.numpy_support import vtk_to_numpy
+
+import narrowvolume
+from narrowvolume import vtkNarrowVolumeReconstruction
+import nvtesting
+
+RNG = np.random.default_rng(52)
+
+
+def on_sphere(n, radius=1.0, center=(0.0, 0.0, 0.0)):
+    v = RNG.normal(size=(n, 3))
+    return radius * v / np.linalg.norm(v, axis=1)[:, None] + np.asarray(center)
+
+
+def on_cube(n, half):
+    """Area-uniform on the cube's faces, [-half, half]^3: its edges and corners are sharp."""
+    face = RNG.integers(0, 6, n)
+    p = RNG.uniform(-half, half, (n, 3))
+    p[np.arange(n), face // 2] = np.where(face % 2, half, -half)
+    return p
+
+
+def cube_distance(x, half):
+    q = np.abs(x) - half
+    return np.abs(np.linalg.norm(np.maximum(q, 0.0), axis=1) + np.minimum(q.max(axis=1), 0.0))
+
+
+def on_torus(n, big, small, uneven=False):
+    """Area-uniform on a torus about z (uneven: 10 times denser on the x > 0 side)."""
+    u, v = RNG.uniform(0, 2 * np.pi, 4 * n), RNG.uniform(0, 2 * np.pi, 4 * n)
+    keep = RNG.uniform(size=4 * n) < (big + small * np.cos(v)) / (big + small)
+    if uneven:
+        keep &= (np.cos(u) > 0) | (RNG.uniform(size=4 * n) < 0.1)
+    u, v = u[keep][:n], v[keep][:n]
+    return np.c_[(big + small * np.cos(v)) * np.cos(u), (big + small * np.cos(v)) * np.sin(u), small * np.sin(v)]
+
+
+def torus_distance(x, big, small):
+    return np.abs(np.hypot(np.linalg.norm(x[:, :2], axis=1) - big, x[:, 2]) - small)
+
+
+def diagonal(points):
+    return float(np.linalg.norm(points.max(axis=0) - points.min(axis=0)))
+
+
+def scan_surface(points, **settings):
+    """The scan surface's run: (surface, field data, warnings' texts, spacing)."""
+    with warnings.catch_warnings(record=True) as said:
+        warnings.simplefilter("always")
+        volume, surface = narrowvolume.reconstruct(points, Sheets=3, **settings)
+    field = volume.GetFieldData()
+    texts = [str(w.message) for w in said if "coarsened" not in str(w.message)]
+    return surface, field, texts, field.GetArray("SampleSpacing").GetValue(0)
+
+
+def value(field, name):
+    return field.GetArray(name).GetValue(0)
+
+
+def test_noisy_sphere_in_the_middle_of_its_points():
+    """Gaussian noise of 1 % of the diagonal: the surface is one closed piece
+    at the sphere's radius (the points' middle), where the closing's surface
+    (the part to print's outside) follows the noise's outer envelope; the
+    field data's distances are those of the noise."""
+    clean = on_sphere(20000, 0.5, (1.0, 2.0, -3.0))
+    sigma = 0.01 * diagonal(clean)
+    points = clean + RNG.normal(scale=sigma, size=clean.shape)
+    surface, field, said, h = scan_surface(points, OffsetDistance=0.1, SampleSpacing=0.02)
+    assert said == [], said
+    assert nvtesting.regions(surface) == 1 and nvtesting.boundary_edges(surface) == 0, "one closed piece"
+    r = np.linalg.norm(nvtesting.points_of(surface) - (1.0, 2.0, -3.0), axis=1)
+    print("noisy sphere: sigma %.4f (%.2f h), surface radius %.4f +- %.4f" % (sigma, sigma / h, r.mean(), r.std()))
+    assert abs(r.mean() - 0.5) < 0.25 * h, "in the middle of the points: radius %g" % r.mean()
+    assert r.std() < 0.5 * h, "smooth: radius spread %g" % r.std()
+    envelope = _closing_radius(points)
+    print("noisy sphere: the part's outside at radius %.4f" % envelope)
+    assert envelope - 0.5 > 1.5 * sigma, "the closing's surface is on the envelope (%g): the case tests something" % envelope
+    assert value(field, "ScanSurface") == 1 and value(field, "ScanSurfacePieces") == 1
+    # |N(0, sigma)|: mean sigma sqrt(2 / pi), 95th percentile 1.96 sigma.
+    mean, p95 = value(field, "ScanDistanceMean") * h, value(field, "ScanDistance95") * h
+    print("noisy sphere: points' distances mean %.4f (noise %.4f), 95 %% %.4f (noise %.4f)" % (
+        mean, sigma * np.sqrt(2 / np.pi), p95, 1.96 * sigma))
+    assert abs(mean - sigma * np.sqrt(2 / np.pi)) < 0.15 * sigma
+    assert abs(p95 - 1.96 * sigma) < 0.3 * sigma
+    assert abs(value(field, "ScanSurfaceVolume") - 4 / 3 * np.pi * 0.5 ** 3) < 0.03 * 4 / 3 * np.pi * 0.5 ** 3
+
+
+def _closing_radius(points):
+    """The mean radius of the part to print's outer surface (a wall of 0.1, solid here) on the same run."""
+    _, part = narrowvolume.reconstruct(points, OffsetDistance=0.1, SampleSpacing=0.02, WallThickness=0.1)
+    r = np.linalg.norm(nvtesting.points_of(part) - (1.0, 2.0, -3.0), axis=1)
+    return float(np.median(r[r > 0.45]))
+
+
+def test_clean_cube_keeps_its_edges():
+    """Sharp edges and corners: the surface lies on the cube (within a few
+    tenths of a cell nearly everywhere), closed, one piece."""
+    half = 0.5
+    surface, field, said, h = scan_surface(on_cube(30000, half), OffsetDistance=0.08, SampleSpacing=0.02)
+    assert said == [], said
+    assert nvtesting.regions(surface) == 1 and nvtesting.boundary_edges(surface) == 0
+    d = cube_distance(nvtesting.points_of(surface), half) / h
+    print("clean cube: vertex distance to the cube (cells) median %.3f, 99 %% %.3f, max %.3f" % (
+        np.median(d), np.quantile(d, 0.99), d.max()))
+    assert np.median(d) < 0.1 and np.quantile(d, 0.99) < 1.0, "on the cube"
+    assert value(field, "ScanDistanceMean") < 0.2
+
+
+def test_torus_in_millimetres_unevenly_sampled():
+    """A torus 100 mm across, ten times denser on one side, clean and with
+    noise of 0.5 % of the diagonal: on the torus both times, one closed piece
+    with its hole (genus 1: Euler characteristic 0)."""
+    clean = on_torus(40000, 40.0, 12.0, uneven=True)
+    for sigma in (0.0, 0.005 * diagonal(clean)):
+        points = clean + RNG.normal(scale=sigma, size=clean.shape) if sigma else clean
+        surface, field, said, h = scan_surface(points)
+        assert said == [], said
+        assert nvtesting.regions(surface) == 1 and nvtesting.boundary_edges(surface) == 0
+        assert nvtesting.euler_characteristic(surface) == 0, "a torus"
+        d = torus_distance(nvtesting.points_of(surface), 40.0, 12.0)
+        print("torus (mm), sigma %.3f mm: h %.3f mm, vertex distance median %.3f mm, 99 %% %.3f mm" % (
+            sigma, h, np.median(d), np.quantile(d, 0.99)))
+        assert np.median(d) < 0.2 * h + 0.3 * sigma and np.quantile(d, 0.99) < h + sigma
+
+
+def test_thin_limb_stays():
+    """A ball with a limb thinner than the offset: the limb is in the surface, to its tip."""
+    ball = on_sphere(12000, 0.5)
+    t = RNG.uniform(0.45, 1.2, 4000)
+    a = RNG.uniform(0, 2 * np.pi, 4000)
+    limb = np.c_[t, 0.03 * np.cos(a), 0.03 * np.sin(a)]
+    surface, _, said, h = scan_surface(np.r_[ball, limb], OffsetDistance=0.06, SampleSpacing=0.01)
+    assert said == [], said
+    x = nvtesting.points_of(surface)
+    assert nvtesting.regions(surface) == 1 and nvtesting.boundary_edges(surface) == 0
+    print("thin limb: the surface reaches x = %.3f (the limb's tip 1.2)" % x[:, 0].max())
+    assert x[:, 0].max() > 1.2 - 2 * h
+    on_limb = x[x[:, 0] > 0.8]
+    r = np.hypot(on_limb[:, 1], on_limb[:, 2])
+    assert abs(np.median(r) - 0.03) < 0.5 * h, "the limb's radius %g" % np.median(r)
+
+
+def test_one_piece_per_object():
+    two = np.r_[on_sphere(8000, 0.4), on_sphere(8000, 0.3, (1.5, 0.0, 0.0))]
+    surface, field, said, _ = scan_surface(two, OffsetDistance=0.08, SampleSpacing=0.02)
+    assert said == [], said
+    assert nvtesting.regions(surface) == 2 and value(field, "ScanSurfacePieces") == 2
+
+
+def test_phi_is_the_shell():
+    """The scan surface changes the Surface output only: phi is the shell's."""
+    points = on_sphere(5000, 0.5)
+    both, _ = narrowvolume.reconstruct(points, OffsetDistance=0.1, SampleSpacing=0.025)
+    scan, _ = narrowvolume.reconstruct(points, OffsetDistance=0.1, SampleSpacing=0.025, Sheets=3)
+    phi = [vtk_to_numpy(v.GetPointData().GetArray("phi")) for v in (both, scan)]
+    assert np.array_equal(phi[0], phi[1])
+
+
+def test_open_scan_is_said():
+    """An open scan (a hemisphere, as one view of a scanner) encloses no
+    solid: no scan surface, and the warning says why and what to change."""
+    cap = on_sphere(20000)
+    surface, field, said, _ = scan_surface(cap[cap[:, 2] > 0.0])
+    assert surface.GetNumberOfPoints() == 0
+    assert len(said) == 1 and said[0].startswith("The scan surface is empty: the shell encloses no solid, as "
+                                                 "around an open scan"), said
+    assert "CloseGaps, ClosingRadius" in said[0] and "Sheets Both or Outer" in said[0]
+    assert np.isnan(value(field, "ScanDistanceMean"))
+
+
+def test_a_surface_that_lost_most_of_the_scan_is_said():
+    """A wide open bowl with a small closed ball below it: the scan surface is
+    the ball alone, most points lie far from it, and two warnings say so."""
+    bowl = on_sphere(40000)
+    bowl = bowl[bowl[:, 2] > -0.2]
+    ball = on_sphere(3000, 0.25, (0.0, 0.0, -1.4))
+    surface, field, said, h = scan_surface(np.r_[bowl, ball])
+    assert nvtesting.regions(surface) == 1
+    assert len(said) == 2, said
+    assert said[0].startswith("The scan surface spans ") and "lost most of the scan" in said[0], said[0]
+    assert said[1].startswith("Half of the scan's points lie farther than ") and "OffsetDistance" in said[1]
+    assert value(field, "ScanDistanceMean") * h > 0.5
+
+
+def test_filter_methods():
+    f = vtkNarrowVolumeReconstruction()
+    f.SetSheetsToScan()
+    assert f.GetSheets() == f.SCAN_SURFACE == 3 and f.GetSheetsMaxValue() == 3
