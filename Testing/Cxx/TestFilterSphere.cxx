@@ -10,6 +10,7 @@
 #include <vtkCellArray.h>
 #include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
 #include <vtkFeatureEdges.h>
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
@@ -158,5 +159,46 @@ int main()
   filter->Update();
   NV_CHECK(filter->GetNumberOfBandNodes() == filter->GetNumberOfGridNodes());
   CheckSheets(filter->GetSurfaceOutput());
+
+  // The scan surface: one closed, manifold surface at the sphere's radius,
+  // its normals outward, where the points are.
+  filter->SetDomainToNarrowBand();
+  filter->SetSheetsToScan();
+  filter->Update();
+  vtkPolyData* scan = filter->GetSurfaceOutput();
+  NV_CHECK(scan->GetNumberOfPolys() > 1000);
+  NV_CHECK(Edges(scan, true, false) == 0);
+  NV_CHECK(Edges(scan, false, true) == 0);
+  {
+    vtkNew<vtkPolyDataConnectivityFilter> connectivity;
+    connectivity->SetInputData(scan);
+    connectivity->SetExtractionModeToAllRegions();
+    connectivity->Update();
+    NV_CHECK(connectivity->GetNumberOfExtractedRegions() == 1);
+  }
+  double radii = 0.0, outward = 0.0;
+  vtkDataArray* scanNormals = scan->GetPointData()->GetNormals();
+  NV_CHECK(scanNormals != nullptr);
+  for (vtkIdType p = 0; scanNormals && p < scan->GetNumberOfPoints(); ++p)
+  {
+    double x[3], n[3], r = 0.0, along = 0.0;
+    scan->GetPoint(p, x);
+    scanNormals->GetTuple(p, n);
+    for (int a = 0; a < 3; ++a)
+    {
+      r += (x[a] - Center[a]) * (x[a] - Center[a]);
+    }
+    r = std::sqrt(r);
+    for (int a = 0; a < 3; ++a)
+    {
+      along += n[a] * (x[a] - Center[a]) / r;
+    }
+    radii += r;
+    outward += along > 0.9 ? 1.0 : 0.0;
+  }
+  const double points = static_cast<double>(scan->GetNumberOfPoints());
+  NV_CHECK_NEAR(radii / points, Radius, 0.25 * Spacing);
+  NV_CHECK(outward == points);
+  NV_CHECK(filter->GetVolumeOutput()->GetFieldData()->GetArray("ScanSurface") != nullptr);
   return nvtest::Result("TestFilterSphere");
 }
