@@ -6,12 +6,14 @@
 #include "nvParallel.h"
 #include "nvPartSteps.h"
 #include "nvPieces.h"
+#include "nvScanSteps.h"
 #include "nvSurfaceField.h"
 #include "nvTruncatedDistance.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <utility>
 #include <vector>
 
@@ -21,30 +23,10 @@ namespace
 {
 /// f is kept within +-ClampCells cells, where the contouring reads it.
 constexpr double ClampCells = 3.0;
+/// A piece of S holds an open scan when most of its points, this many at
+/// least, lie farther than the offset from the closed surface.
+constexpr std::int64_t LeastOpenPoints = 10;
 
-/// A field on the grid's nodes read at any place inside the grid: trilinear.
-double Trilinear(const Grid& grid, const std::vector<float>& values, const double x[3])
-{
-  std::int64_t cell[3];
-  double t[3];
-  for (int a = 0; a < 3; ++a)
-  {
-    const double u = (x[a] - grid.Origin[a]) / grid.Spacing;
-    const std::int64_t last = std::max<std::int64_t>(0, grid.Dims[a] - 2);
-    cell[a] = std::min(last, std::max<std::int64_t>(0, static_cast<std::int64_t>(std::floor(u))));
-    t[a] = std::min(1.0, std::max(0.0, u - static_cast<double>(cell[a])));
-  }
-  double sum = 0.0;
-  for (int corner = 0; corner < 8; ++corner)
-  {
-    const int di = corner & 1, dj = (corner >> 1) & 1, dk = (corner >> 2) & 1;
-    const std::int64_t i = std::min(cell[0] + di, grid.Dims[0] - 1), j = std::min(cell[1] + dj, grid.Dims[1] - 1),
-                       k = std::min(cell[2] + dk, grid.Dims[2] - 1);
-    const double w = (di ? t[0] : 1.0 - t[0]) * (dj ? t[1] : 1.0 - t[1]) * (dk ? t[2] : 1.0 - t[2]);
-    sum += w * values[grid.Index(i, j, k)];
-  }
-  return sum;
-}
 
 /// The local depth s: the points' median depth per cell of a coarse grid,
 /// averaged over the 27 cells around each (weighted by their points), read
@@ -250,104 +232,15 @@ double Quantile(std::vector<double>& values, double q)
   std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(at), values.end());
   return values[at];
 }
-} // namespace
-
-bool MakeScanSurface(const Grid& grid, const Parameters& parameters, const float* outer, const double* scan,
-  std::int64_t scanPoints, bool removeSmallPieces, SurfaceSink& sink, Monitor* monitor, ScanReport& report)
+/// Each point's distance to the surface, in cells: to the nearest of the
+/// triangles around its nearest vertex (none: an empty vector); `nearest`
+/// (may be null): that vertex.
+std::vector<double> PointDistances(const SurfaceArrays& surface, const double* scan, std::int64_t scanPoints, double h,
+  std::vector<std::int64_t>* nearest = nullptr)
 {
-  const double l = parameters.OffsetDistance, h = grid.Spacing;
-  const double clamp = ClampCells * h;
-  // The outer sheet, and D, the distance to it, signed: positive inside S.
-  SurfaceMesh sheet;
-  if (!ContourBricks(grid, DenseField(grid, outer, 0, grid.Dims[2], parameters), sheet, 0, -1, monitor))
-  {
-    return false;
-  }
-  std::vector<float> distance = part::SheetDistance(grid, outer, sheet.Points, 2.0 * l + 2.0 * clamp, monitor);
-  if (StopAsked(monitor))
-  {
-    return false;
-  }
-  sheet = SurfaceMesh();
-  const std::int64_t nodes = grid.NumberOfNodes();
-  ParallelFor(0, nodes, 1 << 16, [&](std::int64_t begin, std::int64_t end) {
-    for (std::int64_t n = begin; n < end; ++n)
-    {
-      distance[n] = outer[n] > 0.0f ? distance[n] : -distance[n];
-    }
-  });
-  // Each point's depth below C's surface, D(p) - l, and the local depth s.
-  std::vector<float> depth(static_cast<std::size_t>(scanPoints));
-  ParallelFor(0, scanPoints, 4096, [&](std::int64_t begin, std::int64_t end) {
-    for (std::int64_t p = begin; p < end; ++p)
-    {
-      depth[p] = static_cast<float>(Trilinear(grid, distance, scan + 3 * p) - l);
-    }
-  });
-  const LocalDepth local(grid, std::max(l, 2.0 * h), scan, depth);
-  {
-    std::vector<double> middles(depth.begin(), depth.end());
-    report.MedianDepth = Quantile(middles, 0.5) / h;
-  }
-  // f on every node (in place of D), within +-clamp.
-  const double shallowest = -(l - h), deepest = l;
-  ParallelFor(0, grid.Dims[2], 1, [&](std::int64_t kBegin, std::int64_t kEnd) {
-    for (std::int64_t k = kBegin; k < kEnd; ++k)
-    {
-      for (std::int64_t j = 0; j < grid.Dims[1]; ++j)
-      {
-        for (std::int64_t i = 0; i < grid.Dims[0]; ++i)
-        {
-          const std::int64_t n = grid.Index(i, j, k);
-          const double d = distance[n] - l;
-          double f = d > 0.0 ? clamp : -clamp;
-          if (d > shallowest - clamp && d < deepest + clamp) // where s can bring f within the clamp
-          {
-            const double x[3] = { grid.Origin[0] + static_cast<double>(i) * h,
-              grid.Origin[1] + static_cast<double>(j) * h, grid.Origin[2] + static_cast<double>(k) * h };
-            const double s = std::min(deepest, std::max(shallowest, local.At(x)));
-            f = std::min(clamp, std::max(-clamp, d - s));
-          }
-          distance[n] = static_cast<float>(f);
-        }
-      }
-    }
-  });
-  if (StopAsked(monitor))
-  {
-    return false;
-  }
-  const std::vector<float>& field = distance;
-  if (!ContourBricks(grid, NodeField(grid, field, static_cast<float>(-clamp)), sink, 0, -1, monitor))
-  {
-    return false;
-  }
-  PieceLimits limits; // 0: none removed, only counted and measured
-  limits.SpareLargest = false; // the shreds of an open scan's closing are no surface on it
-  limits.Piece = removeSmallPieces ? SmallPieceVolume(l) : 0.0;
-  limits.Void = removeSmallPieces ? SmallVoidVolume(l) : 0.0;
-  const RemovedPieces removed = RemoveSmallPieces(sink, limits, grid, nullptr, 0, 0);
-  report.Volume = removed.Volume;
-  report.Pieces = removed.KeptPieces;
-  report.RemovedPieces = removed.Pieces;
-  report.RemovedVoids = removed.Voids;
-  // The points' distances to it: to the nearest of the triangles around
-  // the nearest vertex.
-  const SurfaceArrays surface = sink.View();
-  for (std::int64_t p = 0; p < surface.NumberOfPoints; ++p)
-  {
-    for (int a = 0; a < 3; ++a)
-    {
-      const double x = surface.Points[3 * p + a];
-      report.Bounds[2 * a] = p == 0 ? x : std::min(report.Bounds[2 * a], x);
-      report.Bounds[2 * a + 1] = p == 0 ? x : std::max(report.Bounds[2 * a + 1], x);
-    }
-  }
-  report.Points = scanPoints;
   if (surface.NumberOfPoints == 0 || scanPoints == 0)
   {
-    report.MeanDistance = report.Distance95 = report.MedianDistance = std::numeric_limits<double>::quiet_NaN();
-    return !StopAsked(monitor);
+    return {};
   }
   const NearestPoints vertices(surface.Points, surface.NumberOfPoints, true);
   std::vector<std::int64_t> first(static_cast<std::size_t>(surface.NumberOfPoints) + 1, 0), around;
@@ -371,6 +264,10 @@ bool MakeScanSurface(const Grid& grid, const Parameters& parameters, const float
     }
   }
   std::vector<double> away(static_cast<std::size_t>(scanPoints));
+  if (nearest)
+  {
+    nearest->assign(static_cast<std::size_t>(scanPoints), -1);
+  }
   const double far = std::numeric_limits<double>::max();
   ParallelFor(0, scanPoints, 1024, [&](std::int64_t begin, std::int64_t end) {
     for (std::int64_t p = begin; p < end; ++p)
@@ -378,6 +275,10 @@ bool MakeScanSurface(const Grid& grid, const Parameters& parameters, const float
       const double* x = scan + 3 * p;
       double d = far;
       const std::int64_t v = vertices.Nearest(x, far, d);
+      if (nearest)
+      {
+        (*nearest)[p] = v;
+      }
       for (std::int64_t a = first[v]; a < first[v + 1]; ++a)
       {
         const VertexId* corner = surface.Triangles + 3 * around[a];
@@ -387,12 +288,303 @@ bool MakeScanSurface(const Grid& grid, const Parameters& parameters, const float
       away[p] = d / h;
     }
   });
+  return away;
+}
+
+/// The closed surface's parts that are slabs: each part (vertices joined by
+/// triangles) whose thickness, twice its volume over its area, is less than
+/// twice the 95th percentile of its points' distances to it (a point is the
+/// part's whose nearest vertex is, if nearer than `reach`; `away` in
+/// cells): one vertex of each.
+std::vector<std::int64_t> SlabVertices(const SurfaceArrays& surface, const std::vector<std::int64_t>& nearest,
+  const std::vector<double>& away, double h, double reach)
+{
+  const std::int64_t points = surface.NumberOfPoints;
+  std::vector<std::int64_t> root(static_cast<std::size_t>(points));
+  std::iota(root.begin(), root.end(), std::int64_t(0));
+  const auto find = [&](std::int64_t a) {
+    while (root[a] != a)
+    {
+      a = root[a] = root[root[a]];
+    }
+    return a;
+  };
+  for (std::int64_t t = 0; t < surface.NumberOfTriangles; ++t)
+  {
+    for (int c = 1; c < 3; ++c)
+    {
+      root[find(surface.Triangles[3 * t + c])] = find(surface.Triangles[3 * t]);
+    }
+  }
+  std::vector<double> volume(static_cast<std::size_t>(points), 0.0), area(static_cast<std::size_t>(points), 0.0);
+  for (std::int64_t t = 0; t < surface.NumberOfTriangles; ++t)
+  {
+    const double* a = surface.Points + 3 * surface.Triangles[3 * t];
+    const double* b = surface.Points + 3 * surface.Triangles[3 * t + 1];
+    const double* c = surface.Points + 3 * surface.Triangles[3 * t + 2];
+    const double cross[3] = { (b[1] - a[1]) * (c[2] - a[2]) - (b[2] - a[2]) * (c[1] - a[1]),
+      (b[2] - a[2]) * (c[0] - a[0]) - (b[0] - a[0]) * (c[2] - a[2]),
+      (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]) };
+    const std::int64_t part = find(surface.Triangles[3 * t]);
+    area[part] += 0.5 * std::sqrt(cross[0] * cross[0] + cross[1] * cross[1] + cross[2] * cross[2]);
+    volume[part] += (a[0] * cross[0] + a[1] * cross[1] + a[2] * cross[2]) / 6.0;
+  }
+  std::vector<std::vector<double>> spread(static_cast<std::size_t>(points));
+  for (std::size_t p = 0; p < nearest.size(); ++p)
+  {
+    if (nearest[p] >= 0 && away[p] * h < reach) // not the points of another piece, far
+    {
+      spread[find(nearest[p])].push_back(away[p] * h);
+    }
+  }
+  std::vector<std::int64_t> slabs;
+  for (std::int64_t v = 0; v < points; ++v)
+  {
+    if (find(v) == v && !spread[v].empty() && area[v] > 0.0 &&
+      2.0 * std::fabs(volume[v]) / area[v] < 2.0 * Quantile(spread[v], 0.95))
+    {
+      slabs.push_back(v);
+    }
+  }
+  return slabs;
+}
+
+/// The grid node nearest to x (-1: x outside the grid's box by more than half a cell).
+std::int64_t NodeNear(const Grid& grid, const double* x)
+{
+  std::int64_t ijk[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    ijk[a] = static_cast<std::int64_t>(std::floor((x[a] - grid.Origin[a]) / grid.Spacing + 0.5));
+    if (ijk[a] < 0 || ijk[a] >= grid.Dims[a])
+    {
+      return -1;
+    }
+  }
+  return grid.Index(ijk[0], ijk[1], ijk[2]);
+}
+
+/// Adds `part` to the sink's surface; returns its connected pieces.
+std::int64_t Append(const SurfaceMesh& part, SurfaceSink& sink)
+{
+  const std::int64_t points = static_cast<std::int64_t>(part.Points.size() / 3);
+  const std::int64_t triangles = static_cast<std::int64_t>(part.Triangles.size() / 3);
+  if (triangles == 0)
+  {
+    return 0;
+  }
+  const VertexId offset = static_cast<VertexId>(sink.View().NumberOfPoints);
+  double* xyz = nullptr;
+  float* normals = nullptr;
+  sink.AddPoints(points, xyz, normals);
+  std::copy(part.Points.begin(), part.Points.end(), xyz);
+  std::copy(part.Normals.begin(), part.Normals.end(), normals);
+  VertexId* ids = sink.AddTriangles(triangles);
+  for (std::size_t i = 0; i < part.Triangles.size(); ++i)
+  {
+    ids[i] = part.Triangles[i] + offset;
+  }
+  // Its pieces: vertices joined by the triangles' edges.
+  std::vector<std::int64_t> root(static_cast<std::size_t>(points));
+  std::iota(root.begin(), root.end(), std::int64_t(0));
+  const auto find = [&](std::int64_t a) {
+    while (root[a] != a)
+    {
+      a = root[a] = root[root[a]];
+    }
+    return a;
+  };
+  for (std::int64_t t = 0; t < triangles; ++t)
+  {
+    for (int c = 1; c < 3; ++c)
+    {
+      root[find(part.Triangles[3 * t + c])] = find(part.Triangles[3 * t]);
+    }
+  }
+  std::int64_t pieces = 0;
+  for (std::int64_t v = 0; v < points; ++v)
+  {
+    pieces += find(v) == v ? 1 : 0;
+  }
+  return pieces;
+}
+} // namespace
+
+bool MakeScanSurface(const Grid& grid, const Parameters& parameters, const float* outer, const double* scan,
+  std::int64_t scanPoints, bool removeSmallPieces, SurfaceSink& sink, Monitor* monitor, ScanReport& report)
+{
+  using scan::Trilinear;
+  const double l = parameters.OffsetDistance, h = grid.Spacing;
+  const double clamp = ClampCells * h;
+  const std::int64_t nodes = grid.NumberOfNodes();
+  // The outer sheet, and D, the distance to it.
+  SurfaceMesh sheet;
+  if (!ContourBricks(grid, DenseField(grid, outer, 0, grid.Dims[2], parameters), sheet, 0, -1, monitor))
+  {
+    return false;
+  }
+  const std::vector<float> distance = part::SheetDistance(grid, outer, sheet.Points, 2.0 * l + 2.0 * clamp, monitor);
+  if (StopAsked(monitor))
+  {
+    return false;
+  }
+  // Each point's depth below C's surface, D(p) - l (D signed: negative
+  // outside S), and the local depth s.
+  std::vector<float> field(static_cast<std::size_t>(nodes));
+  ParallelFor(0, nodes, 1 << 16, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t n = begin; n < end; ++n)
+    {
+      field[n] = outer[n] > 0.0f ? distance[n] : -distance[n];
+    }
+  });
+  std::vector<float> depth(static_cast<std::size_t>(scanPoints));
+  ParallelFor(0, scanPoints, 4096, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t p = begin; p < end; ++p)
+    {
+      depth[p] = static_cast<float>(Trilinear(grid, field.data(), scan + 3 * p) - l);
+    }
+  });
+  const LocalDepth local(grid, std::max(l, 2.0 * h), scan, depth);
+  {
+    std::vector<double> middles(depth.begin(), depth.end());
+    report.MedianDepth = Quantile(middles, 0.5) / h;
+  }
+  // f on every node (in place of the signed D), within +-clamp.
+  const double shallowest = -(l - h), deepest = l;
+  ParallelFor(0, grid.Dims[2], 1, [&](std::int64_t kBegin, std::int64_t kEnd) {
+    for (std::int64_t k = kBegin; k < kEnd; ++k)
+    {
+      for (std::int64_t j = 0; j < grid.Dims[1]; ++j)
+      {
+        for (std::int64_t i = 0; i < grid.Dims[0]; ++i)
+        {
+          const std::int64_t n = grid.Index(i, j, k);
+          const double d = field[n] - l;
+          double f = d > 0.0 ? clamp : -clamp;
+          if (d > shallowest - clamp && d < deepest + clamp) // where s can bring f within the clamp
+          {
+            const double x[3] = { grid.Origin[0] + static_cast<double>(i) * h,
+              grid.Origin[1] + static_cast<double>(j) * h, grid.Origin[2] + static_cast<double>(k) * h };
+            const double s = std::min(deepest, std::max(shallowest, local.At(x)));
+            f = std::min(clamp, std::max(-clamp, d - s));
+          }
+          field[n] = static_cast<float>(f);
+        }
+      }
+    }
+  });
+  if (StopAsked(monitor))
+  {
+    return false;
+  }
+  // The closed surface, f = 0, its loose pieces removed.
+  PieceLimits limits; // 0: none removed, only counted and measured
+  limits.SpareLargest = false; // the shreds of an open scan's closing are no surface on it
+  limits.Piece = removeSmallPieces ? SmallPieceVolume(l) : 0.0;
+  limits.Void = removeSmallPieces ? SmallVoidVolume(l) : 0.0;
+  const auto contourClosed = [&]() {
+    SurfaceArrays none = sink.View();
+    none.NumberOfPoints = none.NumberOfTriangles = 0;
+    sink.Truncate(none);
+    if (!ContourBricks(grid, NodeField(grid, field, static_cast<float>(-clamp)), sink, 0, -1, monitor))
+    {
+      return false;
+    }
+    const RemovedPieces removed = RemoveSmallPieces(sink, limits, grid, nullptr, 0, 0);
+    report.Volume = removed.Volume;
+    report.Pieces = removed.KeptPieces;
+    report.RemovedPieces = removed.Pieces;
+    report.RemovedVoids = removed.Voids;
+    return true;
+  };
+  if (!contourClosed())
+  {
+    return false;
+  }
+  std::vector<std::int64_t> nearest;
+  std::vector<double> away = PointDistances(sink.View(), scan, scanPoints, h, &nearest);
+  // The pieces of S that hold an open scan, whose surface is the open one
+  // (nvScanSteps.h): those whose points the closed surface mostly missed (a
+  // clean open scan's closing is empty or in shreds), and those around a
+  // closed part thinner than its points' spread (a noisy open scan's
+  // closing is a thin slab through the points' middle, both of its sides
+  // among them: SlabParts).
+  std::int32_t count = 0;
+  const std::vector<std::int32_t> pieces = scan::SolidPieces(grid, outer, count);
+  std::vector<char> open(static_cast<std::size_t>(count), 0);
+  for (std::int64_t v : SlabVertices(sink.View(), nearest, away, h, 2.0 * l))
+  {
+    const std::int32_t piece = scan::PieceAt(grid, outer, pieces, sink.View().Points + 3 * v);
+    if (piece >= 0)
+    {
+      open[piece] = 1;
+    }
+  }
+  std::vector<std::int64_t> held(static_cast<std::size_t>(count), 0), missed(static_cast<std::size_t>(count), 0);
+  for (std::int64_t p = 0; p < scanPoints; ++p)
+  {
+    const std::int64_t n = NodeNear(grid, scan + 3 * p);
+    if (n >= 0 && pieces[n] >= 0)
+    {
+      (!away.empty() && away[p] * h < l ? held : missed)[pieces[n]] += 1;
+    }
+  }
+  bool anyOpen = false;
+  for (std::int32_t piece = 0; piece < count; ++piece)
+  {
+    open[piece] = open[piece] || (missed[piece] > held[piece] && missed[piece] >= LeastOpenPoints);
+    anyOpen = anyOpen || open[piece];
+  }
+  if (anyOpen)
+  {
+    ParallelFor(0, nodes, 1 << 16, [&](std::int64_t begin, std::int64_t end) {
+      for (std::int64_t n = begin; n < end; ++n)
+      {
+        if (pieces[n] >= 0 && open[pieces[n]])
+        {
+          field[n] = static_cast<float>(-clamp);
+        }
+      }
+    });
+    if (!contourClosed())
+    {
+      return false;
+    }
+    scan::OpenScanInput input;
+    input.Outer = outer;
+    input.Distance = &distance;
+    input.Sheet = &sheet;
+    input.Pieces = &pieces;
+    input.Open = &open;
+    input.Scan = scan;
+    input.ScanPoints = scanPoints;
+    input.Offset = l;
+    input.Reach = std::numeric_limits<double>::max();
+    SurfaceMesh openSurface;
+    if (!scan::MakeOpenSurface(grid, input, openSurface, monitor))
+    {
+      return false;
+    }
+    report.OpenPieces = Append(openSurface, sink);
+    away = PointDistances(sink.View(), scan, scanPoints, h);
+  }
+  const SurfaceArrays surface = sink.View();
+  for (std::int64_t p = 0; p < surface.NumberOfPoints; ++p)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      const double x = surface.Points[3 * p + a];
+      report.Bounds[2 * a] = p == 0 ? x : std::min(report.Bounds[2 * a], x);
+      report.Bounds[2 * a + 1] = p == 0 ? x : std::max(report.Bounds[2 * a + 1], x);
+    }
+  }
+  report.Points = scanPoints;
   double sum = 0.0;
   for (double d : away)
   {
     sum += d;
   }
-  report.MeanDistance = sum / static_cast<double>(scanPoints);
+  report.MeanDistance = away.empty() ? std::numeric_limits<double>::quiet_NaN() : sum / static_cast<double>(away.size());
   report.MedianDistance = Quantile(away, 0.5);
   report.Distance95 = Quantile(away, 0.95);
   return !StopAsked(monitor);

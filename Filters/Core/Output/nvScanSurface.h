@@ -47,6 +47,7 @@ struct ScanReport
 {
   double Volume = 0.0;        ///< the volume it encloses (signed: normals outward)
   std::int64_t Pieces = 0;    ///< its closed pieces
+  std::int64_t OpenPieces = 0; ///< its open pieces (on open scans)
   std::int64_t RemovedPieces = 0; ///< loose pieces removed (smaller than a ball of 2 l)
   std::int64_t RemovedVoids = 0;  ///< voids removed (smaller than a ball of l)
   std::int64_t Points = 0;    ///< the scan's points measured

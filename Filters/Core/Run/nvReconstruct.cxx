@@ -384,8 +384,11 @@ std::vector<SummaryArray> PartSummary(const Settings& settings, const PrintRepor
 std::vector<SummaryArray> ScanSummary(const ScanReport& scan)
 {
   return {
-    { "ScanSurface", SummaryArray::Int, 1, { 1.0 } }, // 1: closed (nvScanSurface.h)
+    // 1: closed pieces only, 2: open ones only (an open scan), 3: both (0: empty).
+    { "ScanSurface", SummaryArray::Int, 1,
+      { (scan.Pieces > 0 ? 1.0 : 0.0) + (scan.OpenPieces > 0 ? 2.0 : 0.0) } },
     { "ScanSurfacePieces", SummaryArray::Double, 1, { static_cast<double>(scan.Pieces) } },
+    { "ScanSurfaceOpenPieces", SummaryArray::Double, 1, { static_cast<double>(scan.OpenPieces) } },
     { "ScanSurfaceVolume", SummaryArray::Double, 1, { scan.Volume } },
     { "ScanDistanceMean", SummaryArray::Double, 1, { scan.MeanDistance } },
     { "ScanDistance95", SummaryArray::Double, 1, { scan.Distance95 } },

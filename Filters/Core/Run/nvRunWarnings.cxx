@@ -402,16 +402,15 @@ std::vector<std::string> ScanWarnings(const Reconstruction& run, const ScanRepor
 {
   const Plan& plan = run.GetPlan();
   const double l = run.GetParameters().OffsetDistance, h = run.GetGrid().Spacing;
-  const std::string closeOrShell = "Close the scan's holes (CloseGaps, ClosingRadius), or keep the shell's sheets "
-                                   "(Sheets Both or Outer), which an open scan has.";
   std::vector<std::string> warnings;
   std::ostringstream text;
   text << std::setprecision(3);
   if (!(scan.Bounds[1] > scan.Bounds[0]))
   {
-    text << "The scan surface is empty: the shell encloses no solid, as around an open scan (one-sided, or with "
-            "holes wider than twice the offset distance), and the scan surface is the surface of a solid.\n"
-         << closeOrShell;
+    text << "The scan surface is empty: the shell neither encloses a solid nor has two sides to put a surface "
+            "between, as around points along a curve rather than over a surface.\n"
+         << "Keep the shell's sheets (Sheets Both), or refine the grid (SampleSpacing, now " << h
+         << ") if the points are a surface.";
     warnings.push_back(text.str());
     return warnings;
   }
@@ -421,9 +420,9 @@ std::vector<std::string> ScanWarnings(const Reconstruction& run, const ScanRepor
   {
     text << "The scan surface spans " << diagonal << " (its diagonal), " << 100.0 * diagonal / plan.Diagonal
          << " % of the cloud's " << plan.Diagonal
-         << ": it lost most of the scan, where the shell encloses no solid (an open scan, or holes wider than "
-            "twice the offset distance).\n"
-         << closeOrShell;
+         << ": it lost most of the scan, where the points lie along curves rather than over a surface, or the "
+            "grid is too coarse for them.\n"
+         << "Keep the shell's sheets (Sheets Both), or refine the grid (SampleSpacing, now " << h << ").";
     warnings.push_back(text.str());
     text.str("");
   }
@@ -431,9 +430,8 @@ std::vector<std::string> ScanWarnings(const Reconstruction& run, const ScanRepor
   {
     text << "Half of the scan's points lie farther than " << scan.MedianDistance * h
          << " from the scan surface, more than the offset distance (" << l
-         << "): the shell is open where they are, or their noise is thicker than the shell.\n"
-         << "Close the scan's holes (CloseGaps, ClosingRadius), or raise OffsetDistance above the noise's "
-            "thickness.";
+         << "): no surface goes through them (points along a curve), or their noise is thicker than the shell.\n"
+         << "Raise OffsetDistance above the noise's thickness, or keep the shell's sheets (Sheets Both).";
     warnings.push_back(text.str());
   }
   return warnings;

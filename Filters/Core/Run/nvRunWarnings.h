@@ -55,8 +55,8 @@ std::vector<std::string> PartWarnings(const Settings& settings, const Reconstruc
 /// most of the scan (ScanWarnings).
 constexpr double LeastScanSurfaceShare = 0.5;
 /// The warnings about the scan surface (Sheets Scan, nvScanSurface.h): empty
-/// (an open scan), much smaller than the cloud, or farther than the offset
-/// distance from half of the points; each says what to change.
+/// (points along a curve), much smaller than the cloud, or farther than the
+/// offset distance from half of the points; each says what to change.
 std::vector<std::string> ScanWarnings(const Reconstruction& run, const ScanReport& scan);
 
 /// Drain holes asked for without a wall (WallThickness 0).

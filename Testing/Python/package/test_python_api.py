@@ -821,26 +821,25 @@ def test_cli_empty_result(tmp_path):
 
 
 def test_cli_scan_surface(tmp_path):
-    """--sheets scan: one closed surface on a closed cloud (the sphere); on an
-    open one (a disc) none, exit 1, and the warning's reason and advice."""
+    """--sheets scan: one closed surface on a closed cloud (the sphere); on
+    points along a curve (a helix) none, exit 1, and the warning's reason and
+    advice in the options' names."""
     cloud = tmp_path / "sphere.xyz"
     np.savetxt(str(cloud), SPHERE, fmt="%.9g")
     result = cli(cloud, "--sheets", "scan", "--offset-distance", 0.1, "--sample-spacing", 0.025,
                  "-o", tmp_path / "scan.stl")
     assert result.returncode == 0, nvtesting.explain(result)
     surface = _read(str(tmp_path / "scan.stl"))
-    assert nvtesting.regions(surface) == 1
-    assert nvtesting.boundary_edges(surface) == 0
+    assert nvtesting.regions(surface) == 1 and nvtesting.boundary_edges(surface) == 0
     r = np.linalg.norm(nvtesting.points_of(surface) - SPHERE.mean(axis=0), axis=1)
     assert abs(r.mean() - np.linalg.norm(SPHERE - SPHERE.mean(axis=0), axis=1).mean()) < 0.25 * 0.025
-    rng = np.random.default_rng(5)
-    disc = rng.random((3000, 2)) * 2.0 - 1.0
-    disc = disc[(disc ** 2).sum(axis=1) < 1.0]
-    flat = tmp_path / "disc.xyz"
-    np.savetxt(str(flat), np.c_[disc, np.zeros(len(disc))], fmt="%.9g")
-    result = cli(flat, "--sheets", "scan", "-o", tmp_path / "none.stl")
+    t = np.random.default_rng(5).uniform(0, 6 * np.pi, 3000)
+    helix = tmp_path / "helix.xyz"
+    np.savetxt(str(helix), np.c_[np.cos(t), np.sin(t), 0.15 * t], fmt="%.9g")
+    result = cli(helix, "--sheets", "scan", "-o", tmp_path / "none.stl")
     assert result.returncode == 1, nvtesting.explain(result)
-    assert "the scan surface is empty" in result.stderr.lower() and "--close-gaps" in result.stderr, result.stderr
+    assert "the scan surface is empty" in result.stderr.lower() and "--sheets both" in result.stderr.lower(), \
+        result.stderr
     assert not (tmp_path / "none.stl").exists()
 
 
