@@ -199,11 +199,12 @@ PROPERTIES = (
         "Which surface the Surface output holds: BOTH_SHEETS (0, the default), the phi = 0 sheets; "
         "OUTER_SHEET (1), the one facing the outside (for a closed input, its dilation by the offset "
         "distance); INNER_SHEETS (2), those facing cavities enclosed by the shell (its erosion); or "
-        "SCAN_SURFACE (3), no sheet but one closed surface on the scan, through the middle of the points "
-        "(where noise thickens the shell, not on its outer envelope), made from the shell without normals. "
-        "An open scan has only an outer sheet, and no scan surface (the scan surface bounds a solid): a "
-        "warning says so. Field data \"ScanDistanceMean\" and \"ScanDistance95\" hold how far the points lie "
-        "from the scan surface (mean and 95th percentile, in cells). "
+        "SCAN_SURFACE (3), no sheet but one surface on the scan, through the middle of the points (where "
+        "noise thickens the shell, not on its outer envelope), made from the shell without normals: closed "
+        "around a closed scan, open on an open one (its boundary at the scan's rim). An open scan has only "
+        "an outer sheet. Field data \"ScanSurface\" says what was made (1 closed, 2 open, 3 both), "
+        "\"ScanDistanceMean\" and \"ScanDistance95\" how far the points lie from it (mean and 95th "
+        "percentile, in cells). "
         "phi is the same; all but BOTH_SHEETS need the dense grid even when {OutputVolume} is off."),
     Property(
         "RemoveSmallPieces", "Remove Small Pieces", bool, True, None, None, (), None, "Output", False, None,

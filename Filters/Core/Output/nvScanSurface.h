@@ -25,9 +25,13 @@
 // the outer sheet and at most 2 l deep.
 //
 // Open scans: S is then the shell itself (it encloses no cavity), whose
-// middle is the scan, at D <= l: f stays near or below 0 and the surface is
-// empty or in shreds. The report tells (its points far from the surface,
-// its size against the cloud's) and the run warns (nvRunWarnings.h).
+// middle is the scan, at D <= l: f stays near or below 0 and the closed
+// surface is empty or in shreds; under noise it is a thin slab through the
+// points' middle, thinner than their spread. Those pieces of S get the open
+// surface instead: the middle between the outer sheet's two faces, one on
+// each side of the scan, cut at the scan's rim (nvScanSteps.h). Points along
+// a curve get none; the report tells (its points far from the surface, its
+// size against the cloud's) and the run warns (nvRunWarnings.h).
 #ifndef nvScanSurface_h
 #define nvScanSurface_h
 
@@ -59,7 +63,8 @@ struct ScanReport
 };
 
 /**
- * Makes the scan surface into `sink`. outer: phi on every node of the grid
+ * Makes the scan surface into `sink`: closed pieces (normals outward), then
+ * open ones. outer: phi on every node of the grid
  * once KeepSheets(Outer) filled its cavities (phi > 0: inside the outer
  * sheet); scan: the scan's points (x y z after one another). With
  * removeSmallPieces, loose pieces smaller than a ball of 2 l and voids
