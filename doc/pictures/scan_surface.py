@@ -44,13 +44,16 @@ def noisy_torus(n=40000, noise=0.01, seed=5):
 
 
 def off_torus(p):
-    """Signed distance to the true torus (> 0 outside)."""
-    return np.sqrt((np.hypot(p[:, 0], p[:, 1]) - R) ** 2 + p[:, 2] ** 2) - r
+    """Signed distance to the true torus (> 0 outside), and the direction away from its core circle."""
+    rho = np.hypot(p[:, 0], p[:, 1])
+    away = p - np.c_[R * p[:, 0] / rho, R * p[:, 1] / rho, np.zeros(len(p))]
+    tube = np.linalg.norm(away, axis=1)
+    return tube - r, away / tube[:, None]
 
 
 def surface_points(shell):
     data = shell.GetClientSideObject().GetOutputDataObject(1)
-    return vtk_to_numpy(data.GetPoints().GetData()), data
+    return vtk_to_numpy(data.GetPoints().GetData()), vtk_to_numpy(data.GetPointData().GetNormals()), data
 
 
 def show_section_of_surface(view, surface, color):
@@ -85,14 +88,18 @@ def look_at_section(view):
 
 xyz, sigma, diagonal = noisy_torus()
 wall = 0.02 * diagonal
+off = off_torus(xyz)[0]
+print("points: %.3g off the torus on average (signed), 95 %% of them within %.3g outside it" % (
+    off.mean(), np.quantile(off, 0.95)))
 strip = nv.Strip()
 for name, properties in (("shell", {}), ("part", dict(WallThickness=wall)), ("scan", dict(Sheets=3))):
     shell = nv.reconstruct(nv.cloud_source(xyz), **properties)
     shell.UpdatePipeline()
     l = nv.field_value(shell, "OffsetDistance")
     h = nv.field_value(shell, "SampleSpacing")
-    p, surface = surface_points(shell)
-    d = off_torus(p)
+    p, normals, surface = surface_points(shell)
+    d, away = off_torus(p)
+    outer = np.sum(normals * away, axis=1) > 0   # the vertices of the outer sheet or surface (normals outward)
     view = nv.new_view()
     if name == "scan":
         nv.show_cut_open(view, shell, CENTER, NORMAL, sheet_only=True)
@@ -106,10 +113,8 @@ for name, properties in (("shell", {}), ("part", dict(WallThickness=wall)), ("sc
         nv.show_cut_open(view, shell, CENTER, NORMAL, sheet_only=True)
         show_section_of_surface(view, surface, nv.SECTION)
         if name == "shell":
-            outer = d > 0
             title = "shell (Sheets Both), l = %.2g:\nouter sheet %.2g off the torus" % (l, np.abs(d[outer]).mean())
         else:
-            outer = d > -wall / 2
             title = "part, WallThickness %.2g:\nouter surface %.2g off the torus" % (wall, np.abs(d[outer]).mean())
         print("%s: l %.4g, h %.4g, outer surface's mean distance to the torus %.3g (signed %.3g)" % (
             name, l, h, np.abs(d[outer]).mean(), d[outer].mean()))
@@ -123,4 +128,4 @@ strip.save("scan_surface.png", columns=3, panel_inches=3.2,
            title="A noisy torus (%d points, noise %.2g = 1 %% of the diagonal), cut open" % (len(xyz), sigma),
            caption="Red: the shell's or the part's material; green: inside the scan surface; orange: the surfaces; "
                    "blue: the points near\nthe cut. The shell's outer sheet lies l beyond the noisy points, the "
-                   "part's outside on their outer envelope;\nthe scan surface runs through their middle.")
+                   "part's outside on their outer edge;\nthe scan surface runs through their middle.")
