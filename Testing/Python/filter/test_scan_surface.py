@@ -185,7 +185,7 @@ def test_open_scan_gives_an_open_surface(sigma):
     """An open scan (a hemisphere, as one view of a scanner), clean and with
     noise of 1 % of the diagonal: one open surface on it, not closed across
     the opening and no second sheet, its boundary at the scan's rim."""
-    cap = on_sphere(40000)
+    cap = on_sphere(16000)
     cap = cap[cap[:, 2] > 0.0]
     points = cap + RNG.normal(scale=sigma * diagonal(cap), size=cap.shape) if sigma else cap
     surface, field, said, h = scan_surface(points)
@@ -211,7 +211,7 @@ def test_open_scan_gives_an_open_surface(sigma):
 def test_scan_with_a_wide_hole():
     """A closed scan with a hole wider than the closing (the underside of a
     statue): the surface follows the scan and stays open at the hole."""
-    ball = on_sphere(40000)
+    ball = on_sphere(16000)
     surface, field, said, h = scan_surface(ball[ball[:, 2] < 0.8])
     assert said == [] and value(field, "ScanSurface") == 2 and nvtesting.regions(surface) == 1
     r = np.linalg.norm(nvtesting.points_of(surface), axis=1)
