@@ -327,6 +327,24 @@ def part(volume: vtkImageData) -> str:
                 ", %d drain %s" % (holes, "hole" if holes == 1 else "holes") if holes else ""))
 
 
+def scan_surface(volume: vtkImageData) -> str:
+    """The scan surface (Sheets SCAN_SURFACE), in one line, else ""."""
+    field = volume.GetFieldData()
+    if field.GetArray("ScanSurface") is None:
+        return ""
+
+    def value(name):
+        return field.GetArray(name).GetValue(0)
+
+    closed, opened = int(value("ScanSurfacePieces")), int(value("ScanSurfaceOpenPieces"))
+    if closed + opened == 0:
+        return "scan surface: empty"
+    return "scan surface: %d closed %s (volume %.6g), %d open %s; the points %.3g cells from it on average, " \
+        "95 %% within %.3g" % (closed, "piece" if closed == 1 else "pieces", value("ScanSurfaceVolume"), opened,
+                                "piece" if opened == 1 else "pieces", value("ScanDistanceMean"),
+                                value("ScanDistance95"))
+
+
 def timings(volume: vtkImageData) -> str:
     """The seconds of the run's stages (field data StageSeconds), one line each."""
     array = volume.GetFieldData().GetArray("StageSeconds")
@@ -430,9 +448,9 @@ def main(argv: Optional[List[str]] = None) -> int:
             print("narrowvolume: warning: %s" % in_option_words(str(warning.message)), file=sys.stderr)
         if not args.quiet:
             print("narrowvolume: %s" % chosen(volume), file=_stdout(), flush=True)
-            printed = part(volume)
-            if printed:
-                print("narrowvolume: %s" % printed, file=_stdout(), flush=True)
+            for printed in (part(volume), scan_surface(volume)):
+                if printed:
+                    print("narrowvolume: %s" % printed, file=_stdout(), flush=True)
         if args.timings:
             print(timings(volume), file=_stdout(), flush=True)
         empty = [p for p in outputs if WRITERS[os.path.splitext(p)[1].lower()][2] == "surface"

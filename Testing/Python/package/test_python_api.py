@@ -833,6 +833,8 @@ def test_cli_scan_surface(tmp_path):
     assert nvtesting.regions(surface) == 1 and nvtesting.boundary_edges(surface) == 0
     r = np.linalg.norm(nvtesting.points_of(surface) - SPHERE.mean(axis=0), axis=1)
     assert abs(r.mean() - np.linalg.norm(SPHERE - SPHERE.mean(axis=0), axis=1).mean()) < 0.25 * 0.025
+    assert "narrowvolume: scan surface: 1 closed piece (volume " in result.stdout, result.stdout
+    assert ", 0 open pieces; the points " in result.stdout
     t = np.random.default_rng(5).uniform(0, 6 * np.pi, 3000)
     helix = tmp_path / "helix.xyz"
     np.savetxt(str(helix), np.c_[np.cos(t), np.sin(t), 0.15 * t], fmt="%.9g")
