@@ -583,28 +583,28 @@ bool MakeOpenSurface(const Grid& grid, const OpenScanInput& input, SurfaceMesh& 
   {
     Sets holes(rawTriangles);
     regionAreas(2, holes);
-    std::vector<char> open(static_cast<std::size_t>(rawTriangles), 0); // per region: reaches the mesh's end or the sheet
+    std::vector<char> reaches(static_cast<std::size_t>(rawTriangles), 0); // per region: reaches the mesh's end or the sheet
     for (std::int64_t t = 0; t < rawTriangles; ++t)
     {
       if (keep[t] == 2 && edged[t])
       {
-        open[holes.Find(t)] = 1;
+        reaches[holes.Find(t)] = 1;
       }
     }
     for (const auto& pair : neighbours)
     {
       if (keep[pair.first] == 2 && keep[pair.second] == 0)
       {
-        open[holes.Find(pair.first)] = 1;
+        reaches[holes.Find(pair.first)] = 1;
       }
       if (keep[pair.second] == 2 && keep[pair.first] == 0)
       {
-        open[holes.Find(pair.second)] = 1;
+        reaches[holes.Find(pair.second)] = 1;
       }
     }
     for (std::int64_t t = 0; t < rawTriangles; ++t)
     {
-      keep[t] = keep[t] == 2 && !open[holes.Find(t)] ? 1 : keep[t];
+      keep[t] = keep[t] == 2 && !reaches[holes.Find(t)] ? 1 : keep[t];
     }
   }
   {
