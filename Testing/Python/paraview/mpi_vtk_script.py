@@ -12,8 +12,9 @@ the run) and its piece against a serial run of the filter
 import sys
 
 import numpy as np
+from vtkmodules.util.misc import calldata_type
 from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkCommonCore import VTK_FLOAT
+from vtkmodules.vtkCommonCore import VTK_FLOAT, VTK_STRING, vtkCommand
 from vtkmodules.vtkCommonDataModel import vtkDataObject, vtkDataSetAttributes
 from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline as sddp
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
@@ -83,4 +84,21 @@ if expected:
     cells = piece.GetCellData().GetArray(vtkDataSetAttributes.GhostArrayName())
     t.check(cells is not None and np.count_nonzero(vtk_to_numpy(cells)) == expected * (nx - 1) * (ny - 1),
             "rank %d: the ghost cell layers are marked" % rank)
+# The scan surface needs the whole grid: a distributed run keeps both sheets
+# (the same surface as the run above) and the first rank says so.
+said = []
+scan = narrowvolume.vtkNarrowVolumeReconstruction()
+scan.SetInputData(nvclouds.cloud(share))
+scan.SetOffsetDistance(0.08)
+scan.SetMaximumDimension(70)
+scan.SetSheetsToScan()
+scan.AddObserver(vtkCommand.WarningEvent, calldata_type(VTK_STRING)(lambda caller, event, text: said.append(text)))
+scan.UpdatePiece(rank, size, 2)
+t.check(scan.GetVolumeOutput().GetFieldData().GetArray("ScanSurface") is None,
+        "rank %d: no scan surface in a distributed run" % rank)
+t.check(scan.GetSurfaceOutput().GetNumberOfPolys() == distributed.GetSurfaceOutput().GetNumberOfPolys(),
+        "rank %d: both sheets kept" % rank)
+if rank == 0:
+    t.check(any("A distributed run outputs both sheets: keeping one, or the scan surface, needs the whole grid" in w
+                for w in said), "rank 0: the warning says why: %s" % said)
 print("rank %d: %d failed checks" % (rank, t.failures))
