@@ -179,6 +179,13 @@ std::vector<std::int32_t> SolidPieces(const Grid& grid, const float* outer, std:
 
 bool MakeOpenSurface(const Grid& grid, const OpenScanInput& input, SurfaceMesh& open, Monitor* monitor)
 {
+  const auto step = [&](double from, double to) {
+    if (input.Step)
+    {
+      input.Step(from, to);
+    }
+  };
+  step(0.0, 0.15);
   const double h = grid.Spacing;
   const float* outer = input.Outer;
   const std::vector<float>& distance = *input.Distance;
@@ -440,12 +447,14 @@ bool MakeOpenSurface(const Grid& grid, const OpenScanInput& input, SurfaceMesh& 
     }
   }
   const double cap = 2.0 * deepest + 4.0 * h, clamp = 3.0 * h;
+  step(0.15, 0.4);
   std::vector<float> psi = part::SheetDistance(grid, outer, sideB, cap, monitor);
   if (StopAsked(monitor))
   {
     return false;
   }
   {
+    step(0.4, 0.65);
     const std::vector<float> toA = part::SheetDistance(grid, outer, sideA, cap, monitor);
     if (StopAsked(monitor))
     {
@@ -460,11 +469,13 @@ bool MakeOpenSurface(const Grid& grid, const OpenScanInput& input, SurfaceMesh& 
       }
     });
   }
+  step(0.65, 0.8);
   SurfaceMesh raw;
   if (!ContourBricks(grid, NodeField(grid, psi, static_cast<float>(-clamp)), raw, 0, -1, monitor))
   {
     return false;
   }
+  step(0.8, 1.0);
   // Kept: the triangles in cells wholly inside the open pieces (not across
   // the outer sheet), with points all around (not beyond the scan's rim,
   // where the middle between the faces goes on to the rim's half-pipe).

@@ -10,6 +10,7 @@
 #include "nvSurface.h"
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace nv
@@ -40,6 +41,7 @@ struct OpenScanInput
   std::int64_t ScanPoints = 0;
   double Offset = 0.0;                     ///< l
   double Reach = 0.0;                      ///< how far a triangle looks for points around it
+  std::function<void(double, double)> Step; ///< the share of its progress from to (may be empty)
 };
 
 /**

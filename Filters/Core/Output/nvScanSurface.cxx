@@ -411,9 +411,19 @@ std::int64_t Append(const SurfaceMesh& part, SurfaceSink& sink)
 } // namespace
 
 bool MakeScanSurface(const Grid& grid, const Parameters& parameters, const float* outer, const double* scan,
-  std::int64_t scanPoints, bool removeSmallPieces, SurfaceSink& sink, Monitor* monitor, ScanReport& report)
+  std::int64_t scanPoints, bool removeSmallPieces, SurfaceSink& sink, Monitor* monitor, ScanReport& report,
+  const double progress[2])
 {
   using scan::Trilinear;
+  // The progress of the steps, as shares of the run's, about as their time
+  // goes (an open scan's surface takes the second half).
+  const auto step = [&](double from, double to) {
+    if (monitor)
+    {
+      monitor->Stage(progress[0] + from * progress[1], (to - from) * progress[1]);
+    }
+  };
+  step(0.0, 0.05);
   const double l = parameters.OffsetDistance, h = grid.Spacing;
   const double clamp = ClampCells * h;
   const std::int64_t nodes = grid.NumberOfNodes();
@@ -423,6 +433,7 @@ bool MakeScanSurface(const Grid& grid, const Parameters& parameters, const float
   {
     return false;
   }
+  step(0.05, 0.3);
   const std::vector<float> distance = part::SheetDistance(grid, outer, sheet.Points, 2.0 * l + 2.0 * clamp, monitor);
   if (StopAsked(monitor))
   {
@@ -497,6 +508,7 @@ bool MakeScanSurface(const Grid& grid, const Parameters& parameters, const float
     report.RemovedVoids = removed.Voids;
     return true;
   };
+  step(0.3, 0.5);
   if (!contourClosed())
   {
     return false;
@@ -537,6 +549,7 @@ bool MakeScanSurface(const Grid& grid, const Parameters& parameters, const float
   }
   if (anyOpen)
   {
+    step(0.5, 0.55);
     ParallelFor(0, nodes, 1 << 16, [&](std::int64_t begin, std::int64_t end) {
       for (std::int64_t n = begin; n < end; ++n)
       {
@@ -560,6 +573,7 @@ bool MakeScanSurface(const Grid& grid, const Parameters& parameters, const float
     input.ScanPoints = scanPoints;
     input.Offset = l;
     input.Reach = std::numeric_limits<double>::max();
+    input.Step = [&](double from, double to) { step(0.55 + 0.45 * from, 0.55 + 0.45 * to); };
     SurfaceMesh openSurface;
     if (!scan::MakeOpenSurface(grid, input, openSurface, monitor))
     {

@@ -69,10 +69,12 @@ struct ScanReport
  * sheet); scan: the scan's points (x y z after one another). With
  * removeSmallPieces, loose pieces smaller than a ball of 2 l and voids
  * smaller than a ball of l go, as the shell's do (nvPieces.h). Returns false
- * if the monitor stopped it.
+ * if the monitor stopped it. progress: the begin and width of the run's
+ * progress it takes; it shares them among its steps.
  */
 bool MakeScanSurface(const Grid& grid, const Parameters& parameters, const float* outer, const double* scan,
-  std::int64_t scanPoints, bool removeSmallPieces, SurfaceSink& sink, Monitor* monitor, ScanReport& report);
+  std::int64_t scanPoints, bool removeSmallPieces, SurfaceSink& sink, Monitor* monitor, ScanReport& report,
+  const double progress[2]);
 
 } // namespace nv
 

@@ -188,10 +188,11 @@ bool MakeScan(Reconstruction& run, SurfaceSink& sink, const VolumeArrays& dense,
     outcome.Warnings.push_back(OneSheetNeedsGridWarning(true));
   }
   std::vector<float> outer = OuterOf(grid, dense);
+  const double progress[2] = { run.OutputBegin(), 1.0 - run.OutputBegin() };
   const bool done = run.GetStageTimes().Time("scan surface", [&]() {
     return FillCavities(grid, outer, run.GetMonitor()) &&
       MakeScanSurface(grid, run.GetParameters(), outer.data(), scan.data(), static_cast<std::int64_t>(scan.size() / 3),
-        run.GetSettings().RemoveSmallPieces, sink, run.GetMonitor(), outcome.Scan);
+        run.GetSettings().RemoveSmallPieces, sink, run.GetMonitor(), outcome.Scan, progress);
   });
   outcome.Scanned = done;
   outcome.Removed.Pieces = outcome.Scan.RemovedPieces;

@@ -110,7 +110,9 @@ Reconstruction::Reconstruction(
 
 double Reconstruction::OutputBegin() const
 {
-  return this->TheSettings.WallThickness > 0.0 ? PrintRunShare : RunShare;
+  return this->TheSettings.WallThickness > 0.0 ? PrintRunShare
+    : this->TheSettings.Sheets == Sheets::Scan ? ScanRunShare
+                                               : RunShare;
 }
 
 Reconstruction::~Reconstruction() = default;

@@ -51,6 +51,9 @@ constexpr double SamplingStage = 0.1;
 /// first PrintRunShare of the progress (Reconstruction::OutputBegin).
 constexpr double RunShare = 0.65;
 constexpr double PrintRunShare = 0.2;
+/// With the scan surface (Sheets Scan), the run's steps 1-6 take the first
+/// ScanRunShare: the surface takes about twice their time.
+constexpr double ScanRunShare = 0.35;
 
 class Reconstruction
 {

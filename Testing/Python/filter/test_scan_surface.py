@@ -240,6 +240,19 @@ def test_points_along_a_curve_are_said():
     assert said[1].startswith("Half of the scan's points lie farther than ") and "OffsetDistance" in said[1]
 
 
+def test_progress_never_goes_back():
+    """An open scan's surface (the longest way: the closed surface, then the
+    open one) reports its progress in steps that never go back, to 1."""
+    cap = on_sphere(6000)
+    seen = []
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        narrowvolume.reconstruct(cap[cap[:, 2] > 0.0], progress=seen.append, Sheets=3)
+    assert len(seen) > 10 and seen[-1] == 1.0
+    assert all(b >= a for a, b in zip(seen, seen[1:])), "progress went back: %s" % seen
+    assert max(b - a for a, b in zip(seen, seen[1:])) < 0.4, "no step takes most of it: %s" % seen
+
+
 def test_filter_methods():
     f = vtkNarrowVolumeReconstruction()
     f.SetSheetsToScan()
