@@ -26,6 +26,7 @@ run "$xvfb" pvpython doc/pictures/shell_cut_open.py
 run "$xvfb" pvpython doc/pictures/hollow_scan.py
 run "$xvfb" pvpython doc/pictures/print_part.py
 run "$xvfb" pvpython doc/pictures/scan_surface.py
+run "$xvfb" pvpython doc/pictures/scan_surface_open.py
 run "$xvfb" pvpython doc/pictures/offset_effect.py
 run "$xvfb" pvpython doc/pictures/closing_radius_effect.py
 run "$xvfb" pvpython doc/pictures/parameters.py
