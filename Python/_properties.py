@@ -205,7 +205,8 @@ PROPERTIES = (
         "an outer sheet. Field data \"ScanSurface\" says what was made (1 closed, 2 open, 3 both), "
         "\"ScanDistanceMean\" and \"ScanDistance95\" how far the points lie from it (mean and 95th "
         "percentile, in cells). "
-        "phi is the same; all but BOTH_SHEETS need the dense grid even when {OutputVolume} is off."),
+        "phi is the same; all but BOTH_SHEETS need the dense grid even when {OutputVolume} is off. With "
+        "{WallThickness} above 0 the output is the part to print, whatever Sheets says (a warning says so)."),
     Property(
         "RemoveSmallPieces", "Remove Small Pieces", bool, True, None, None, (), None, "Output", False, None,
         "Remove loose pieces smaller than a ball of radius 2 l (the balls around lone points) and voids "

@@ -331,6 +331,10 @@ void WarnAboutResult(const Reconstruction& run, bool distributed, double surface
   }
   if (Printing(settings))
   {
+    if (settings.Sheets != Sheets::Both)
+    {
+      outcome.Warnings.push_back(SheetsWithWallWarning(settings));
+    }
     for (std::string& warning : PartWarnings(settings, run, outcome.Print, surfacePoints))
     {
       outcome.Warnings.push_back(std::move(warning));

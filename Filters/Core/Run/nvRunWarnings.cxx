@@ -386,6 +386,18 @@ std::string DrainHolesWithoutWallWarning(const Settings& settings)
   return text.str();
 }
 
+std::string SheetsWithWallWarning(const Settings& settings)
+{
+  std::ostringstream text;
+  text << "Sheets is " << (settings.Sheets == Sheets::Scan ? "Scan" : settings.Sheets == Sheets::Outer ? "Outer" : "Inner")
+       << ", but WallThickness is " << settings.WallThickness
+       << ": the output is the part to print, whose outer surface lies on the scan, not "
+       << (settings.Sheets == Sheets::Scan ? "the scan surface" : "one sheet") << ".\n"
+       << "Set WallThickness to 0 for " << (settings.Sheets == Sheets::Scan ? "the scan surface" : "one sheet")
+       << ", or Sheets to Both.";
+  return text.str();
+}
+
 std::string PrintDistributedError()
 {
   return "A part to print (WallThickness above 0) needs the whole grid on one process, and this run is "

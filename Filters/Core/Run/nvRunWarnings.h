@@ -59,6 +59,8 @@ constexpr double LeastScanSurfaceShare = 0.5;
 /// offset distance from half of the points; each says what to change.
 std::vector<std::string> ScanWarnings(const Reconstruction& run, const ScanReport& scan);
 
+/// Sheets other than Both with a wall (the part to print is made instead).
+std::string SheetsWithWallWarning(const Settings& settings);
 /// Drain holes asked for without a wall (WallThickness 0).
 std::string DrainHolesWithoutWallWarning(const Settings& settings);
 /// A part to print in a distributed run.

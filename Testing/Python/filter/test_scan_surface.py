@@ -253,6 +253,17 @@ def test_progress_never_goes_back():
     assert max(b - a for a, b in zip(seen, seen[1:])) < 0.4, "no step takes most of it: %s" % seen
 
 
+def test_a_wall_makes_the_part_and_says_so():
+    """Sheets Scan with a wall: the part to print is made (its field data),
+    and the warning says that Sheets does not apply and what to change."""
+    surface, field, said, _ = scan_surface(on_sphere(3000, 0.5), OffsetDistance=0.1, SampleSpacing=0.025,
+                                           WallThickness=0.1)
+    assert field.GetArray("ScanSurface") is None and field.GetArray("MaterialVolume") is not None
+    assert said[0] == ("Sheets is Scan, but WallThickness is 0.1: the output is the part to print, whose outer "
+                       "surface lies on the scan, not the scan surface.\nSet WallThickness to 0 for the scan "
+                       "surface, or Sheets to Both."), said
+
+
 def test_filter_methods():
     f = vtkNarrowVolumeReconstruction()
     f.SetSheetsToScan()
