@@ -23,6 +23,18 @@ def boundary_edges(surface):
     return edges.GetOutput().GetNumberOfCells()
 
 
+def boundary_of(surface):
+    """The surface's boundary edges (those of one triangle), as lines."""
+    edges = vtkFeatureEdges()
+    edges.SetInputData(surface)
+    edges.BoundaryEdgesOn()
+    edges.NonManifoldEdgesOff()
+    edges.FeatureEdgesOff()
+    edges.ManifoldEdgesOff()
+    edges.Update()
+    return edges.GetOutput()
+
+
 def volume_of(surface):
     """The signed volume a closed surface encloses (divergence theorem; normals point out of the shell)."""
     if surface.GetNumberOfPolys() == 0:

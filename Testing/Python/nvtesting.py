@@ -15,8 +15,9 @@ import tempfile
 
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
-from nvmeasures import (boundary_edges, cut_edge_shift, euler_characteristic, face_normal_roughness,  # noqa: F401
-                        merged_surface, points_of, regions, regions_of, sheet_volumes, volume_of)
+from nvmeasures import (boundary_edges, boundary_of, cut_edge_shift, euler_characteristic,  # noqa: F401
+                        face_normal_roughness, merged_surface, points_of, regions, regions_of, sheet_volumes,
+                        volume_of)
 
 
 def python_command():

@@ -16,9 +16,9 @@ figures and the mean radial distance of the scan surface to the true one.
 """
 import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkFiltersCore import vtkFeatureEdges
 
 import nvpictures as nv
+import nvmeasures  # noqa: E402 (in Data/, on the path nvpictures makes)
 
 pvs = nv.plugin()
 SCAN = [0.55, 0.80, 0.55]   # the scan surface (light green, as in scan_surface.png)
@@ -61,14 +61,7 @@ for name in ("shell", "scan"):
         surface = run.GetClientSideObject().GetOutputDataObject(1)
         shown = pvs.Show(nv.producer(surface), view)
         nv._solid(shown, SCAN)
-        edges = vtkFeatureEdges()
-        edges.SetInputData(surface)
-        edges.BoundaryEdgesOn()
-        edges.FeatureEdgesOff()
-        edges.NonManifoldEdgesOff()
-        edges.ManifoldEdgesOff()
-        edges.Update()
-        rim = pvs.Show(nv.producer(edges.GetOutput()), view)
+        rim = pvs.Show(nv.producer(nvmeasures.boundary_of(surface)), view)
         nv._solid(rim, RIM, 0.0)
         rim.LineWidth = 3.0
         d = radial_distance(vtk_to_numpy(surface.GetPoints().GetData()))

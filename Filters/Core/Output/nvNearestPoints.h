@@ -27,30 +27,25 @@ public:
   NearestPoints(const double* points, std::int64_t n, bool numbered = false)
     : Points(static_cast<std::size_t>(n))
     , Axis(static_cast<std::size_t>(n), 0)
+    , Ids(static_cast<std::size_t>(n))
   {
     for (std::int64_t p = 0; p < n; ++p)
     {
       std::copy(points + 3 * p, points + 3 * p + 3, this->Points[p].begin());
+      this->Ids[p] = p;
     }
-    if (numbered)
+    // The tree is built on the numbers (the same comparisons, hence the same
+    // order, as on the points themselves), then the points put in its order.
+    this->Build(0, n);
+    std::vector<std::array<double, 3>> ordered(static_cast<std::size_t>(n));
+    for (std::int64_t p = 0; p < n; ++p)
     {
-      // The tree is built on the numbers, then the points put in its order.
-      this->Ids.resize(static_cast<std::size_t>(n));
-      for (std::int64_t p = 0; p < n; ++p)
-      {
-        this->Ids[p] = p;
-      }
-      this->BuildNumbered(0, n);
-      std::vector<std::array<double, 3>> ordered(static_cast<std::size_t>(n));
-      for (std::int64_t p = 0; p < n; ++p)
-      {
-        ordered[p] = this->Points[this->Ids[p]];
-      }
-      this->Points.swap(ordered);
+      ordered[p] = this->Points[this->Ids[p]];
     }
-    else
+    this->Points.swap(ordered);
+    if (!numbered)
     {
-      this->Build(0, n);
+      std::vector<std::int64_t>().swap(this->Ids);
     }
   }
 
@@ -94,37 +89,9 @@ public:
 private:
   static constexpr std::int64_t Leaf = 8;
 
+  /// The range's points split at its middle along its widest axis (the
+  /// lower ones before it), on the numbers: the points stay in place.
   void Build(std::int64_t begin, std::int64_t end)
-  {
-    if (end - begin <= Leaf)
-    {
-      return;
-    }
-    std::array<double, 3> low = this->Points[begin], high = this->Points[begin];
-    for (std::int64_t p = begin; p < end; ++p)
-    {
-      for (int a = 0; a < 3; ++a)
-      {
-        low[a] = std::min(low[a], this->Points[p][a]);
-        high[a] = std::max(high[a], this->Points[p][a]);
-      }
-    }
-    int axis = 0;
-    for (int a = 1; a < 3; ++a)
-    {
-      axis = high[a] - low[a] > high[axis] - low[axis] ? a : axis;
-    }
-    // The middle point along the axis, the lower ones before it.
-    const std::int64_t middle = begin + (end - begin) / 2;
-    std::nth_element(this->Points.begin() + begin, this->Points.begin() + middle, this->Points.begin() + end,
-      [axis](const std::array<double, 3>& u, const std::array<double, 3>& v) { return u[axis] < v[axis]; });
-    this->Axis[middle] = static_cast<char>(axis);
-    this->Build(begin, middle);
-    this->Build(middle + 1, end);
-  }
-
-  /// Build's split on the numbers: the same tree, the points left in place.
-  void BuildNumbered(std::int64_t begin, std::int64_t end)
   {
     if (end - begin <= Leaf)
     {
@@ -148,8 +115,8 @@ private:
     std::nth_element(this->Ids.begin() + begin, this->Ids.begin() + middle, this->Ids.begin() + end,
       [this, axis](std::int64_t u, std::int64_t v) { return this->Points[u][axis] < this->Points[v][axis]; });
     this->Axis[middle] = static_cast<char>(axis);
-    this->BuildNumbered(begin, middle);
-    this->BuildNumbered(middle + 1, end);
+    this->Build(begin, middle);
+    this->Build(middle + 1, end);
   }
 
   void Search(const double x[3], std::int64_t begin, std::int64_t end, double& best) const

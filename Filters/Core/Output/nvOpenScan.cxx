@@ -7,6 +7,7 @@
 #include "nvNearestPoints.h"
 #include "nvParallel.h"
 #include "nvPartSteps.h"
+#include "nvPieces.h"
 #include "nvSurfaceField.h"
 
 #include <algorithm>
@@ -45,45 +46,6 @@ constexpr int SmoothingRounds = 10;
 /// A ray's end is on the other face when the nearest vertex there faces
 /// away from the ray's start: normals at more than about 135 degrees.
 constexpr double OppositeNormals = -0.7;
-
-/// Disjoint sets of indices (union by size, path halving).
-class Sets
-{
-public:
-  explicit Sets(std::int64_t n)
-    : Parent(static_cast<std::size_t>(n))
-    , Size(static_cast<std::size_t>(n), 1)
-  {
-    std::iota(this->Parent.begin(), this->Parent.end(), std::int64_t(0));
-  }
-  std::int64_t Find(std::int64_t a)
-  {
-    while (this->Parent[a] != a)
-    {
-      this->Parent[a] = this->Parent[this->Parent[a]];
-      a = this->Parent[a];
-    }
-    return a;
-  }
-  void Join(std::int64_t a, std::int64_t b)
-  {
-    a = this->Find(a);
-    b = this->Find(b);
-    if (a != b)
-    {
-      if (this->Size[a] < this->Size[b])
-      {
-        std::swap(a, b);
-      }
-      this->Parent[b] = a;
-      this->Size[a] += this->Size[b];
-    }
-  }
-
-private:
-  std::vector<std::int64_t> Parent;
-  std::vector<std::int64_t> Size;
-};
 
 /// Whether x lies inside the grid's box.
 bool InGrid(const Grid& grid, const double x[3])
@@ -332,7 +294,7 @@ bool MakeOpenSurface(const Grid& grid, const OpenScanInput& input, SurfaceMesh& 
     }
   }
   // Patches: the vertices on a face, joined by the sheet's edges.
-  Sets patches(vertices);
+  PointParts patches(vertices);
   for (std::int64_t t = 0; t < triangles; ++t)
   {
     for (int c = 0; c < 3; ++c)
@@ -351,7 +313,7 @@ bool MakeOpenSurface(const Grid& grid, const OpenScanInput& input, SurfaceMesh& 
   {
     if (partner[v] >= 0 && partner[partner[v]] >= 0)
     {
-      const std::int64_t a = patches.Find(v), b = patches.Find(partner[v]);
+      const std::int64_t a = patches.Root(v), b = patches.Root(partner[v]);
       if (a != b)
       {
         across.emplace_back(a, b);
@@ -404,9 +366,9 @@ bool MakeOpenSurface(const Grid& grid, const OpenScanInput& input, SurfaceMesh& 
   std::vector<std::int64_t> queue;
   for (std::int64_t v = 0; v < vertices; ++v)
   {
-    if (vertexPiece[v] >= 0 && partner[v] >= 0 && colour[patches.Find(v)] != 0)
+    if (vertexPiece[v] >= 0 && partner[v] >= 0 && colour[patches.Root(v)] != 0)
     {
-      face[v] = colour[patches.Find(v)];
+      face[v] = colour[patches.Root(v)];
       queue.push_back(v);
     }
   }
@@ -576,7 +538,7 @@ bool MakeOpenSurface(const Grid& grid, const OpenScanInput& input, SurfaceMesh& 
       std::pow(u[0] * v[1] - u[1] * v[0], 2));
   }
   const double least = M_PI * input.Offset * input.Offset;
-  const auto regionAreas = [&](char state, Sets& regions) {
+  const auto regionAreas = [&](char state, PointParts& regions) {
     for (const auto& pair : neighbours)
     {
       if (keep[pair.first] == state && keep[pair.second] == state)
@@ -587,41 +549,41 @@ bool MakeOpenSurface(const Grid& grid, const OpenScanInput& input, SurfaceMesh& 
     std::vector<double> total(static_cast<std::size_t>(rawTriangles), 0.0);
     for (std::int64_t t = 0; t < rawTriangles; ++t)
     {
-      total[regions.Find(t)] += keep[t] == state ? area[t] : 0.0;
+      total[regions.Root(t)] += keep[t] == state ? area[t] : 0.0;
     }
     return total;
   };
   {
-    Sets holes(rawTriangles);
+    PointParts holes(rawTriangles);
     regionAreas(2, holes);
     std::vector<char> reaches(static_cast<std::size_t>(rawTriangles), 0); // per region: reaches the mesh's end or the sheet
     for (std::int64_t t = 0; t < rawTriangles; ++t)
     {
       if (keep[t] == 2 && edged[t])
       {
-        reaches[holes.Find(t)] = 1;
+        reaches[holes.Root(t)] = 1;
       }
     }
     for (const auto& pair : neighbours)
     {
       if (keep[pair.first] == 2 && keep[pair.second] == 0)
       {
-        reaches[holes.Find(pair.first)] = 1;
+        reaches[holes.Root(pair.first)] = 1;
       }
       if (keep[pair.second] == 2 && keep[pair.first] == 0)
       {
-        reaches[holes.Find(pair.second)] = 1;
+        reaches[holes.Root(pair.second)] = 1;
       }
     }
     for (std::int64_t t = 0; t < rawTriangles; ++t)
     {
-      keep[t] = keep[t] == 2 && !reaches[holes.Find(t)] ? 1 : keep[t];
+      keep[t] = keep[t] == 2 && !reaches[holes.Root(t)] ? 1 : keep[t];
     }
   }
   {
     // Each region's boundary, its triangles' edges that no kept triangle
     // shares (each a third of its triangle's perimeter, near enough).
-    Sets shreds(rawTriangles);
+    PointParts shreds(rawTriangles);
     const std::vector<double> total = regionAreas(1, shreds);
     std::vector<int> shared(static_cast<std::size_t>(rawTriangles), 0);
     for (const auto& pair : neighbours)
@@ -644,7 +606,7 @@ bool MakeOpenSurface(const Grid& grid, const OpenScanInput& input, SurfaceMesh& 
           const double* y = &raw.Points[3 * raw.Triangles[3 * t + (c + 1) % 3]];
           perimeter += std::sqrt(std::pow(x[0] - y[0], 2) + std::pow(x[1] - y[1], 2) + std::pow(x[2] - y[2], 2));
         }
-        boundary[shreds.Find(t)] += (3 - shared[t]) * perimeter / 3.0;
+        boundary[shreds.Root(t)] += (3 - shared[t]) * perimeter / 3.0;
       }
     }
     // Gone: shreds smaller than a disc of radius l, and ribbons narrower than
@@ -652,7 +614,7 @@ bool MakeOpenSurface(const Grid& grid, const OpenScanInput& input, SurfaceMesh& 
     // of points along a curve leaves.
     for (std::int64_t t = 0; t < rawTriangles; ++t)
     {
-      const std::int64_t region = shreds.Find(t);
+      const std::int64_t region = shreds.Root(t);
       keep[t] = keep[t] == 1 && total[region] >= least && 2.0 * total[region] >= input.Offset * boundary[region] ? 1 : 0;
     }
   }

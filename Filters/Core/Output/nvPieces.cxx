@@ -20,80 +20,33 @@ namespace
 {
 constexpr std::int64_t Grain = 1 << 15; ///< triangles or points per task
 
-/// The parts of a surface: union-find over its points, joined from any
-/// thread. A root is only ever linked under a smaller index, so each part's
-/// root ends as its smallest point index, whichever thread joined first.
-class PointParts
-{
-public:
-  explicit PointParts(std::int64_t n)
-    : Parent(new std::atomic<std::int64_t>[static_cast<std::size_t>(n)])
-  {
-    ParallelFor(0, n, Grain, [&](std::int64_t first, std::int64_t last) {
-      for (std::int64_t p = first; p < last; ++p)
-      {
-        this->Parent[p].store(p, std::memory_order_relaxed);
-      }
-    });
-  }
-
-  std::int64_t Root(std::int64_t p)
-  {
-    for (;;)
-    {
-      std::int64_t parent = this->Parent[p].load();
-      if (parent == p)
-      {
-        return p;
-      }
-      // Path halving: p skips to its grandparent (still an ancestor, as links
-      // are never undone).
-      const std::int64_t grandparent = this->Parent[parent].load();
-      if (grandparent != parent)
-      {
-        this->Parent[p].compare_exchange_weak(parent, grandparent);
-      }
-      p = grandparent;
-    }
-  }
-
-  void Join(std::int64_t a, std::int64_t b)
-  {
-    for (;;)
-    {
-      a = this->Root(a);
-      b = this->Root(b);
-      if (a == b)
-      {
-        return;
-      }
-      if (a < b)
-      {
-        std::swap(a, b);
-      }
-      // a, the larger root, under b, unless another thread linked a first.
-      std::int64_t expected = a;
-      if (this->Parent[a].compare_exchange_strong(expected, b))
-      {
-        return;
-      }
-    }
-  }
-
-  /// Once every Join is done: each point's parent becomes its root.
-  void Flatten(std::int64_t n)
-  {
-    ParallelFor(0, n, Grain, [&](std::int64_t first, std::int64_t last) {
-      for (std::int64_t p = first; p < last; ++p)
-      {
-        this->Parent[p].store(this->Root(p), std::memory_order_relaxed);
-      }
-    });
-  }
-
-  std::unique_ptr<std::atomic<std::int64_t>[]> Parent;
-};
 } // namespace
+
+void JoinTriangles(const SurfaceArrays& surface, PointParts& parts)
+{
+  // The points that triangles share, joined on all threads.
+  const VertexId* triangles = surface.Triangles;
+  ParallelFor(0, surface.NumberOfTriangles, Grain, [&](std::int64_t first, std::int64_t last) {
+    for (std::int64_t t = first; t < last; ++t)
+    {
+      parts.Join(triangles[3 * t], triangles[3 * t + 1]);
+      parts.Join(triangles[3 * t], triangles[3 * t + 2]);
+    }
+  });
+  parts.Flatten(surface.NumberOfPoints);
+}
+
+std::vector<std::int64_t> SurfaceParts(const SurfaceArrays& surface)
+{
+  PointParts parts(surface.NumberOfPoints);
+  JoinTriangles(surface, parts);
+  std::vector<std::int64_t> root(static_cast<std::size_t>(surface.NumberOfPoints));
+  for (std::int64_t p = 0; p < surface.NumberOfPoints; ++p)
+  {
+    root[p] = parts.Parent[p].load(std::memory_order_relaxed);
+  }
+  return root;
+}
 
 double SmallPieceVolume(double offset)
 {
@@ -247,17 +200,9 @@ struct Part
 /// it returns) with their signed volumes, by ascending root.
 std::vector<Part> FindParts(const SurfaceArrays& surface, PointParts& parts)
 {
-  const std::int64_t n = surface.NumberOfPoints, m = surface.NumberOfTriangles;
+  const std::int64_t m = surface.NumberOfTriangles;
   const VertexId* triangles = surface.Triangles;
-  // Connected parts: the points that triangles share, joined on all threads.
-  ParallelFor(0, m, Grain, [&](std::int64_t first, std::int64_t last) {
-    for (std::int64_t t = first; t < last; ++t)
-    {
-      parts.Join(triangles[3 * t], triangles[3 * t + 1]);
-      parts.Join(triangles[3 * t], triangles[3 * t + 2]);
-    }
-  });
-  parts.Flatten(n);
+  JoinTriangles(surface, parts);
   auto root = [&parts](std::int64_t p) { return parts.Parent[p].load(std::memory_order_relaxed); };
   // Signed volume of each part: the sum of p0 . (p1 x p2) / 6 over its
   // triangles. Each fixed chunk of triangles sums its runs of one part (a

@@ -20,14 +20,101 @@
 #define nvPieces_h
 
 #include "nvGrid.h"
+#include "nvParallel.h"
 #include "nvSurface.h"
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
+#include <memory>
+#include <utility>
 #include <vector>
 
 namespace nv
 {
+
+/// Union-find over n items (a surface's points, or any others), joined from
+/// any thread. A root is only ever linked under a smaller index, so each
+/// part's root ends as its smallest index, whichever thread joined first.
+class PointParts
+{
+public:
+  explicit PointParts(std::int64_t n)
+    : Parent(new std::atomic<std::int64_t>[static_cast<std::size_t>(n)])
+  {
+    ParallelFor(0, n, Grain, [&](std::int64_t first, std::int64_t last) {
+      for (std::int64_t p = first; p < last; ++p)
+      {
+        this->Parent[p].store(p, std::memory_order_relaxed);
+      }
+    });
+  }
+
+  std::int64_t Root(std::int64_t p)
+  {
+    for (;;)
+    {
+      std::int64_t parent = this->Parent[p].load();
+      if (parent == p)
+      {
+        return p;
+      }
+      // Path halving: p skips to its grandparent (still an ancestor, as links
+      // are never undone).
+      const std::int64_t grandparent = this->Parent[parent].load();
+      if (grandparent != parent)
+      {
+        this->Parent[p].compare_exchange_weak(parent, grandparent);
+      }
+      p = grandparent;
+    }
+  }
+
+  void Join(std::int64_t a, std::int64_t b)
+  {
+    for (;;)
+    {
+      a = this->Root(a);
+      b = this->Root(b);
+      if (a == b)
+      {
+        return;
+      }
+      if (a < b)
+      {
+        std::swap(a, b);
+      }
+      // a, the larger root, under b, unless another thread linked a first.
+      std::int64_t expected = a;
+      if (this->Parent[a].compare_exchange_strong(expected, b))
+      {
+        return;
+      }
+    }
+  }
+
+  /// Once every Join is done: each point's parent becomes its root.
+  void Flatten(std::int64_t n)
+  {
+    ParallelFor(0, n, Grain, [&](std::int64_t first, std::int64_t last) {
+      for (std::int64_t p = first; p < last; ++p)
+      {
+        this->Parent[p].store(this->Root(p), std::memory_order_relaxed);
+      }
+    });
+  }
+
+  std::unique_ptr<std::atomic<std::int64_t>[]> Parent;
+
+private:
+  static constexpr std::int64_t Grain = 1 << 15; ///< items per task
+};
+/// A surface's points joined by its triangles (PointParts, flattened).
+void JoinTriangles(const SurfaceArrays& surface, PointParts& parts);
+
+/// The connected parts of a surface: each point's part, named by its
+/// smallest point index.
+std::vector<std::int64_t> SurfaceParts(const SurfaceArrays& surface);
 
 struct RemovedPieces
 {

@@ -198,16 +198,7 @@ bool MakePart(const Grid& grid, const Parameters& parameters, const float* outer
   }
   report.LostPoints = static_cast<std::int64_t>(lost.size());
   report.LostRegions = LostRegions(request.Scan, lost, LostRegionReach * h);
-  const SurfaceArrays arrays = sink.View();
-  for (std::int64_t p = 0; p < arrays.NumberOfPoints; ++p)
-  {
-    for (int a = 0; a < 3; ++a)
-    {
-      const double x = arrays.Points[3 * p + a];
-      report.Bounds[2 * a] = p == 0 ? x : std::min(report.Bounds[2 * a], x);
-      report.Bounds[2 * a + 1] = p == 0 ? x : std::max(report.Bounds[2 * a + 1], x);
-    }
-  }
+  report.Bounds = BoundsOf(sink.View());
   return !(monitor && monitor->Aborted());
 }
 

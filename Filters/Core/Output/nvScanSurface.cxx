@@ -13,7 +13,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numeric>
 #include <utility>
 #include <vector>
 
@@ -300,22 +299,7 @@ std::vector<std::int64_t> SlabVertices(const SurfaceArrays& surface, const std::
   const std::vector<double>& away, double h, double reach)
 {
   const std::int64_t points = surface.NumberOfPoints;
-  std::vector<std::int64_t> root(static_cast<std::size_t>(points));
-  std::iota(root.begin(), root.end(), std::int64_t(0));
-  const auto find = [&](std::int64_t a) {
-    while (root[a] != a)
-    {
-      a = root[a] = root[root[a]];
-    }
-    return a;
-  };
-  for (std::int64_t t = 0; t < surface.NumberOfTriangles; ++t)
-  {
-    for (int c = 1; c < 3; ++c)
-    {
-      root[find(surface.Triangles[3 * t + c])] = find(surface.Triangles[3 * t]);
-    }
-  }
+  const std::vector<std::int64_t> part = SurfaceParts(surface);
   std::vector<double> volume(static_cast<std::size_t>(points), 0.0), area(static_cast<std::size_t>(points), 0.0);
   for (std::int64_t t = 0; t < surface.NumberOfTriangles; ++t)
   {
@@ -325,22 +309,22 @@ std::vector<std::int64_t> SlabVertices(const SurfaceArrays& surface, const std::
     const double cross[3] = { (b[1] - a[1]) * (c[2] - a[2]) - (b[2] - a[2]) * (c[1] - a[1]),
       (b[2] - a[2]) * (c[0] - a[0]) - (b[0] - a[0]) * (c[2] - a[2]),
       (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]) };
-    const std::int64_t part = find(surface.Triangles[3 * t]);
-    area[part] += 0.5 * std::sqrt(cross[0] * cross[0] + cross[1] * cross[1] + cross[2] * cross[2]);
-    volume[part] += (a[0] * cross[0] + a[1] * cross[1] + a[2] * cross[2]) / 6.0;
+    const std::int64_t root = part[surface.Triangles[3 * t]];
+    area[root] += 0.5 * std::sqrt(cross[0] * cross[0] + cross[1] * cross[1] + cross[2] * cross[2]);
+    volume[root] += (a[0] * cross[0] + a[1] * cross[1] + a[2] * cross[2]) / 6.0;
   }
   std::vector<std::vector<double>> spread(static_cast<std::size_t>(points));
   for (std::size_t p = 0; p < nearest.size(); ++p)
   {
     if (nearest[p] >= 0 && away[p] * h < reach) // not the points of another piece, far
     {
-      spread[find(nearest[p])].push_back(away[p] * h);
+      spread[part[nearest[p]]].push_back(away[p] * h);
     }
   }
   std::vector<std::int64_t> slabs;
   for (std::int64_t v = 0; v < points; ++v)
   {
-    if (find(v) == v && !spread[v].empty() && area[v] > 0.0 &&
+    if (part[v] == v && !spread[v].empty() && area[v] > 0.0 &&
       2.0 * std::fabs(volume[v]) / area[v] < 2.0 * Quantile(spread[v], 0.95))
     {
       slabs.push_back(v);
@@ -365,7 +349,7 @@ std::int64_t NodeNear(const Grid& grid, const double* x)
 }
 
 /// Adds `part` to the sink's surface; returns its connected pieces.
-std::int64_t Append(const SurfaceMesh& part, SurfaceSink& sink)
+std::int64_t Append(SurfaceMesh& part, SurfaceSink& sink)
 {
   const std::int64_t points = static_cast<std::int64_t>(part.Points.size() / 3);
   const std::int64_t triangles = static_cast<std::int64_t>(part.Triangles.size() / 3);
@@ -384,27 +368,12 @@ std::int64_t Append(const SurfaceMesh& part, SurfaceSink& sink)
   {
     ids[i] = part.Triangles[i] + offset;
   }
-  // Its pieces: vertices joined by the triangles' edges.
-  std::vector<std::int64_t> root(static_cast<std::size_t>(points));
-  std::iota(root.begin(), root.end(), std::int64_t(0));
-  const auto find = [&](std::int64_t a) {
-    while (root[a] != a)
-    {
-      a = root[a] = root[root[a]];
-    }
-    return a;
-  };
-  for (std::int64_t t = 0; t < triangles; ++t)
-  {
-    for (int c = 1; c < 3; ++c)
-    {
-      root[find(part.Triangles[3 * t + c])] = find(part.Triangles[3 * t]);
-    }
-  }
+  // Its pieces: the parts named by themselves.
+  const std::vector<std::int64_t> root = SurfaceParts(part.View());
   std::int64_t pieces = 0;
   for (std::int64_t v = 0; v < points; ++v)
   {
-    pieces += find(v) == v ? 1 : 0;
+    pieces += root[v] == v ? 1 : 0;
   }
   return pieces;
 }
@@ -582,16 +551,7 @@ bool MakeScanSurface(const Grid& grid, const Parameters& parameters, const float
     report.OpenPieces = Append(openSurface, sink);
     away = PointDistances(sink.View(), scan, scanPoints, h);
   }
-  const SurfaceArrays surface = sink.View();
-  for (std::int64_t p = 0; p < surface.NumberOfPoints; ++p)
-  {
-    for (int a = 0; a < 3; ++a)
-    {
-      const double x = surface.Points[3 * p + a];
-      report.Bounds[2 * a] = p == 0 ? x : std::min(report.Bounds[2 * a], x);
-      report.Bounds[2 * a + 1] = p == 0 ? x : std::max(report.Bounds[2 * a + 1], x);
-    }
-  }
+  report.Bounds = BoundsOf(sink.View());
   report.Points = scanPoints;
   double sum = 0.0;
   for (double d : away)

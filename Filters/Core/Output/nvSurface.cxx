@@ -358,4 +358,19 @@ bool ContourBricks(const Grid& grid, const BrickField& field, SurfaceSink& sink,
   return contourer.Run(layerBegin, layerEnd, monitor);
 }
 
+std::array<double, 6> BoundsOf(const SurfaceArrays& surface)
+{
+  std::array<double, 6> bounds{ { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 } };
+  for (std::int64_t p = 0; p < surface.NumberOfPoints; ++p)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      const double x = surface.Points[3 * p + a];
+      bounds[2 * a] = p == 0 ? x : std::min(bounds[2 * a], x);
+      bounds[2 * a + 1] = p == 0 ? x : std::max(bounds[2 * a + 1], x);
+    }
+  }
+  return bounds;
+}
+
 } // namespace nv

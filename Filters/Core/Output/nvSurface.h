@@ -33,6 +33,7 @@
 
 #include "nvGrid.h"
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -77,6 +78,9 @@ public:
 };
 
 /// A sink that keeps the surface in plain arrays.
+/// The box of a surface's points: xmin, xmax, ymin, ... (all 0 when it has none).
+std::array<double, 6> BoundsOf(const SurfaceArrays& surface);
+
 class SurfaceMesh : public SurfaceSink
 {
 public:

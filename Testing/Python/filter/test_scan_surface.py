@@ -167,19 +167,6 @@ def test_phi_is_the_shell():
     assert np.array_equal(phi[0], phi[1])
 
 
-def boundary_points(surface):
-    """The points on the surface's boundary edges."""
-    from vtkmodules.vtkFiltersCore import vtkFeatureEdges
-    edges = vtkFeatureEdges()
-    edges.SetInputData(surface)
-    edges.BoundaryEdgesOn()
-    edges.FeatureEdgesOff()
-    edges.NonManifoldEdgesOff()
-    edges.ManifoldEdgesOff()
-    edges.Update()
-    return nvtesting.points_of(edges.GetOutput())
-
-
 @pytest.mark.parametrize("sigma", [0.0, 0.01], ids=["clean", "noisy"])
 def test_open_scan_gives_an_open_surface(sigma):
     """An open scan (a hemisphere, as one view of a scanner), clean and with
@@ -197,7 +184,7 @@ def test_open_scan_gives_an_open_surface(sigma):
         sigma, h, np.median(r), np.quantile(np.abs(r - 1.0), 0.99) / h))
     assert abs(np.median(r) - 1.0) < 0.1 * h + 0.2 * sigma * diagonal(cap), "on the scan, in its points' middle"
     assert np.quantile(np.abs(r - 1.0), 0.99) < h + 2.0 * sigma * diagonal(cap), "no second sheet"
-    rim = boundary_points(surface)
+    rim = nvtesting.points_of(nvtesting.boundary_of(surface))
     print("open hemisphere: boundary z from %.4f to %.4f, |z| median %.2f h, 95 %% %.2f h (the rim at 0)" % (
         rim[:, 2].min(), rim[:, 2].max(), np.median(np.abs(rim[:, 2])) / h, np.quantile(np.abs(rim[:, 2]), 0.95) / h))
     # The rim of a sampled surface is known to about a point's spacing:
@@ -216,7 +203,7 @@ def test_scan_with_a_wide_hole():
     assert said == [] and value(field, "ScanSurface") == 2 and nvtesting.regions(surface) == 1
     r = np.linalg.norm(nvtesting.points_of(surface), axis=1)
     assert np.quantile(np.abs(r - 1.0), 0.99) < h
-    rim = boundary_points(surface)
+    rim = nvtesting.points_of(nvtesting.boundary_of(surface))
     print("wide hole: boundary z %.4f to %.4f (the hole's rim at 0.8), h %.4f" % (rim[:, 2].min(), rim[:, 2].max(), h))
     assert np.quantile(np.abs(rim[:, 2] - 0.8), 0.95) < 4 * h, "open at the hole only"
 
