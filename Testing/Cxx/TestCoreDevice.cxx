@@ -30,7 +30,12 @@
 //                           vertices within 0.05 h of the CPU's, closed.
 //
 // Device GPU where there is no GPU stops with an error that says why: the
-// build has no CUDA, or the machine no CUDA device.
+// build has no CUDA, or the machine no CUDA device. A device that fails, or
+// lacks the memory a stage needs (checked before the band and before the
+// evolution against its free memory), stops the run with an error that
+// says so; a failed allocation leaks nothing and the launcher's count of
+// its bytes does not drift (both checked through the host launcher, whose
+// test hooks limit its allocations and set the free memory it reports).
 #include "nvAllenCahnSolver.h"
 #include "nvDeviceDistance.h"
 #include "nvDeviceEvolution.h"
@@ -650,6 +655,14 @@ public:
   {
   }
   std::string Name() const override { return "failing host launcher"; }
+  double DeviceBytes() const override { return this->Host->DeviceBytes(); }
+  double HeldBytes() const override { return this->Host->HeldBytes(); }
+  /// "evolution memory": 1 kB free once the band is stored, as a device
+  /// that something else filled meanwhile.
+  double FreeBytes() const override
+  {
+    return this->Where == "evolution memory" && this->BandStored ? 1e3 : this->Host->FreeBytes();
+  }
   void Fail(const char* kernel) const
   {
     if (this->Where == kernel)
@@ -693,6 +706,7 @@ public:
   void StoreBand(std::int64_t redCount, std::int64_t size, std::uint16_t* offset) override
   {
     this->Host->StoreBand(redCount, size, offset);
+    this->BandStored = true;
   }
   void ConnectBand(const std::int64_t* bricks, const std::int64_t* redStart, const std::int64_t* blackStart,
     std::int64_t numberOfBricks, const nv::device::NeighbourConstants& c) override
@@ -726,6 +740,7 @@ public:
 private:
   std::unique_ptr<nv::device::Launcher> Host;
   std::string Where;
+  bool BandStored = false;
 };
 
 /// A device that fails during the evolution, and one that fails making the
@@ -755,6 +770,226 @@ void TestDeviceFails()
   }
 }
 
+/// The device back end's stages in the engine's order (Run/nvDeviceEngine.cxx)
+/// through `launcher`: the band built there (batches of 200 bricks), the
+/// evolution, the surface. Throws DeviceError.
+nv::SurfaceMesh DeviceStages(
+  const std::vector<double>& xyz, const nv::Parameters& parameters, nv::device::Launcher& launcher)
+{
+  const nv::Grid grid = GridOf(xyz, parameters);
+  const nv::TruncatedDistance gridOnly(grid, parameters.Reach());
+  nv::NarrowBand band;
+  {
+    nv::device::LauncherDistance device(
+      gridOnly, xyz.data(), static_cast<std::int64_t>(xyz.size() / 3), launcher, 200);
+    band = nv::BuildNarrowBand(gridOnly, parameters, nullptr, nullptr, nullptr, nullptr, &device);
+  }
+  std::vector<nv::StepReport> reports;
+  const nv::BandValues phi = nv::device::Evolve(band, parameters, launcher, nullptr, reports);
+  launcher.ReleaseEvolution();
+  nv::SurfaceMesh mesh;
+  nv::ContourOnDevice(grid, band, phi, parameters, launcher, mesh);
+  return mesh;
+}
+
+/// A failed allocation (the host launcher's limit on its bytes, as a full
+/// GPU): the error names the array; nothing leaks (the bytes its allocator
+/// holds come back to their value before once the launcher goes) and the
+/// count does not drift (after the failure it is what the allocator holds,
+/// 0 once the points and the evolution are let go where the surface had not
+/// begun). Limits from 0 to the stages' peak make the band's construction
+/// and the evolution fail at one array after another.
+/// Then a whole run with the limit: the clear error, no result.
+void TestFailedAllocation()
+{
+  if (OnGpu)
+  {
+    return;
+  }
+  const double center[3] = { 0.3, -0.1, 0.2 };
+  const std::vector<double> xyz = nvtest::SpherePoints(4000, 0.5, center);
+  nv::Parameters p;
+  p.OffsetDistance = 0.1;
+  p.Spacing = 0.02;
+  p.MaximumNumberOfIterations = 2;
+  const double before = nv::device::HostLauncherBytes();
+  nv::SurfaceMesh whole;
+  double peak = 0.0;
+  {
+    std::unique_ptr<nv::device::Launcher> launcher = nv::device::MakeHostLauncher();
+    whole = DeviceStages(xyz, p, *launcher);
+    peak = launcher->DeviceBytes();
+    NV_CHECK(launcher->HeldBytes() == 0.0); // everything let go at the stages' ends
+    NV_CHECK(nv::device::HostLauncherBytes() == before);
+  }
+  NV_CHECK(peak > 0.0 && !whole.Triangles.empty());
+  std::map<std::string, int> arrays; // the arrays whose allocation failed
+  int drift = 0, leaks = 0, unclear = 0;
+  for (int k = 0; k < 40; ++k)
+  {
+    nv::device::HostLauncherHooks hooks;
+    hooks.AllocationLimit = peak * k / 40.0;
+    bool surfaceBegun = false;
+    {
+      std::unique_ptr<nv::device::Launcher> launcher = nv::device::MakeHostLauncher(hooks);
+      try
+      {
+        DeviceStages(xyz, p, *launcher);
+        unclear += 1; // below the peak, something must fail
+      }
+      catch (const nv::device::DeviceError& error)
+      {
+        const std::string message = error.what();
+        const std::string start = "The GPU failed (allocating ";
+        const std::size_t comma = message.find(", ");
+        if (message.compare(0, start.size(), start) != 0 || comma == std::string::npos ||
+          message.find("): out of memory (the launcher's limit of ") == std::string::npos)
+        {
+          std::printf("FAILED: an unclear allocation error: %s\n", message.c_str());
+          unclear += 1;
+        }
+        else
+        {
+          const std::string array = message.substr(start.size(), comma - start.size());
+          arrays[array] += 1;
+          surfaceBegun = array == "psi" || array == "the cut edges" || array == "the corners' signs";
+        }
+      }
+      // What the launcher counts is what its allocator holds, then, the
+      // points and the evolution let go, nothing but the surface's arrays.
+      drift += launcher->HeldBytes() != nv::device::HostLauncherBytes() - before ? 1 : 0;
+      launcher->FreePoints();
+      launcher->ReleaseEvolution();
+      drift += launcher->HeldBytes() != nv::device::HostLauncherBytes() - before ? 1 : 0;
+      drift += !surfaceBegun && launcher->HeldBytes() != 0.0 ? 1 : 0;
+    }
+    leaks += nv::device::HostLauncherBytes() != before ? 1 : 0;
+  }
+  std::string failed;
+  for (const auto& array : arrays)
+  {
+    failed += (failed.empty() ? "" : "; ") + array.first + " " + std::to_string(array.second);
+  }
+  std::printf("Allocations failing on purpose (40 limits below the host launcher's peak of %.3g MB): %s; the count "
+              "drifted %d times, memory leaked %d times, %d unclear or missing errors\n",
+    peak / 1e6, failed.c_str(), drift, leaks, unclear);
+  // The failures spread over the band's construction and the evolution
+  // (the surface needs less than the evolution held).
+  NV_CHECK(arrays.size() >= 6);
+  NV_CHECK(arrays.count("the points") == 1 && arrays.count("the neighbour table") == 1);
+  NV_CHECK(arrays.count("the coupling") + arrays.count("phi^n") + arrays.count("the decay") > 0);
+  NV_CHECK(drift == 0);
+  NV_CHECK(leaks == 0);
+  NV_CHECK(unclear == 0);
+
+  // The whole run with a launcher that fails allocating: the device's error,
+  // with the way out, no surface; the launcher's memory all given back.
+  nv::Settings settings;
+  settings.Device = nv::ComputeDevice::GPU;
+  settings.OffsetDistance = 0.1;
+  settings.SampleSpacing = 0.02;
+  settings.OutputVolume = false;
+  nv::device::HostLauncherHooks hooks;
+  hooks.AllocationLimit = 0.5 * peak;
+  {
+    nv::Reconstruction run(
+      settings, nullptr, nullptr, nv::MakeDeviceEngine(nv::device::MakeHostLauncher(hooks), "GPU"));
+    nv::SurfaceMesh surface;
+    const nv::Outcome outcome = nv::Reconstruct(run, xyz, nullptr, surface, nv::VolumeRequest(), false);
+    std::printf("Device GPU failing to allocate: %s\n", outcome.Error.c_str());
+    NV_CHECK(!outcome.Done);
+    NV_CHECK(outcome.Error.find("The GPU failed (allocating ") == 0);
+    NV_CHECK(outcome.Error.find("): out of memory (the launcher's limit of ") != std::string::npos);
+    NV_CHECK(outcome.Error.find("\nChoose Device CPU or Automatic.") != std::string::npos);
+    NV_CHECK(surface.Points.empty() && surface.Triangles.empty());
+  }
+  NV_CHECK(nv::device::HostLauncherBytes() == before);
+}
+
+/// The number of bytes in ByteWords' words at `from` ("12.3 MB", "4.56 GB"); -1 if none.
+double BytesAt(const std::string& text, std::size_t from)
+{
+  double value = 0.0;
+  char unit[3] = { 0, 0, 0 };
+  if (from == std::string::npos || std::sscanf(text.c_str() + from, "%lf %2s", &value, unit) != 2)
+  {
+    return -1.0;
+  }
+  return std::string(unit) == "GB" ? value * 1e9 : std::string(unit) == "MB" ? value * 1e6 : -1.0;
+}
+
+/// The checks of the device's free memory (Run/nvDeviceEngine.cxx): before
+/// the band (the host launcher reporting 0.1 MB free) and before the
+/// evolution (1 kB free once the band is stored), a refusal with the bytes
+/// needed and free and the way out, and no result; with enough memory
+/// (1 TB reported free) the run is the CPU's bit for bit.
+void TestMemoryChecks()
+{
+  if (OnGpu)
+  {
+    return;
+  }
+  nv::Settings settings;
+  settings.Device = nv::ComputeDevice::GPU;
+  settings.OffsetDistance = 0.1;
+  settings.SampleSpacing = 0.02;
+  settings.OutputVolume = false;
+  const double center[3] = { 0.0, 0.0, 0.0 };
+  const std::vector<double> xyz = nvtest::SpherePoints(4000, 0.5, center);
+  const std::string advice =
+    " is free. Choose a coarser grid (increase SampleSpacing or lower MaximumDimension), or choose Device CPU or "
+    "Automatic.";
+  const double before = nv::device::HostLauncherBytes();
+  {
+    nv::device::HostLauncherHooks hooks;
+    hooks.FreeBytes = 1e5;
+    nv::Reconstruction run(
+      settings, nullptr, nullptr, nv::MakeDeviceEngine(nv::device::MakeHostLauncher(hooks), "GPU"));
+    nv::SurfaceMesh surface;
+    const nv::Outcome outcome = nv::Reconstruct(run, xyz, nullptr, surface, nv::VolumeRequest(), false);
+    std::printf("Device GPU with 0.1 MB free: %s\n", outcome.Error.c_str());
+    const std::string start = "The GPU has too little free memory to build the narrow band: it needs about ";
+    const double needed = BytesAt(outcome.Error, outcome.Error.find(start) == 0 ? start.size() : std::string::npos);
+    NV_CHECK(!outcome.Done && !outcome.Ran);
+    NV_CHECK(needed > 1e5);
+    NV_CHECK(outcome.Error.find(", and 0.1 MB" + advice) != std::string::npos);
+    NV_CHECK(run.RelativeChanges().empty() && surface.Points.empty());
+  }
+  {
+    nv::Reconstruction run(settings, nullptr, nullptr,
+      nv::MakeDeviceEngine(std::unique_ptr<nv::device::Launcher>(new FailingLauncher("evolution memory")), "GPU"));
+    nv::SurfaceMesh surface;
+    const nv::Outcome outcome = nv::Reconstruct(run, xyz, nullptr, surface, nv::VolumeRequest(), false);
+    std::printf("Device GPU with 1 kB free after the band: %s\n", outcome.Error.c_str());
+    const std::string start = "The GPU has too little free memory for the evolution on the band's ";
+    long long nodes = 0;
+    const bool said = outcome.Error.find(start) == 0 &&
+      std::sscanf(outcome.Error.c_str() + start.size(), "%lld nodes", &nodes) == 1;
+    NV_CHECK(said && nodes > 1000);
+    const std::string needed = "nodes: it needs about " + nv::device::ByteWords(nv::device::EvolutionBytes(nodes));
+    NV_CHECK(outcome.Error.find(needed + ", and 0.001 MB" + advice) != std::string::npos);
+    NV_CHECK(!outcome.Done && !outcome.Ran);
+    NV_CHECK(run.RelativeChanges().empty() && surface.Points.empty());
+  }
+  {
+    // Enough memory: nothing changes.
+    nv::device::HostLauncherHooks hooks;
+    hooks.FreeBytes = 1e12;
+    nv::Reconstruction gpu(
+      settings, nullptr, nullptr, nv::MakeDeviceEngine(nv::device::MakeHostLauncher(hooks), "GPU"));
+    nv::SurfaceMesh gpuMesh, cpuMesh;
+    NV_CHECK(nv::Reconstruct(gpu, xyz, nullptr, gpuMesh, nv::VolumeRequest(), false).Done);
+    settings.Device = nv::ComputeDevice::CPU;
+    nv::Reconstruction cpu(settings, nullptr, nullptr);
+    NV_CHECK(nv::Reconstruct(cpu, xyz, nullptr, cpuMesh, nv::VolumeRequest(), false).Done);
+    const bool same = !cpuMesh.Triangles.empty() && SameValues(gpuMesh.Points, cpuMesh.Points) &&
+      SameValues(gpuMesh.Normals, cpuMesh.Normals) && SameValues(gpuMesh.Triangles, cpuMesh.Triangles);
+    std::printf("Device GPU with 1 TB free, the surface the CPU's bit for bit: %s\n", same ? "yes" : "NO");
+    NV_CHECK(same);
+  }
+  NV_CHECK(nv::device::HostLauncherBytes() == before);
+}
+
 } // namespace
 
 int main(int argc, char* argv[])
@@ -767,5 +1002,7 @@ int main(int argc, char* argv[])
   TestMissingGpu();
   TestDeviceCannot();
   TestDeviceFails();
+  TestFailedAllocation();
+  TestMemoryChecks();
   return nvtest::Result(NV_TEST_NAME);
 }

@@ -16,6 +16,22 @@
 // from PyPI); scripts/test-gpu.sh runs it on a machine with a GPU (where it
 // stands: doc/performance.md, "On a GPU").
 //
+// Memory: every array is a DeviceBuffer (nvDeviceMemory.h) that owns its
+// device memory: freed when it is reset or replaced, when the launcher
+// goes, and when an exception unwinds past a call's own copies (Scratch),
+// and counted in the launcher's ledger meanwhile, so that a failed
+// allocation leaks nothing and the count (DeviceBytes) does not drift.
+//
+// Errors: each allocation, copy and launch names its array or kernel in
+// the DeviceError it throws ("The GPU failed (launching PsiKernel): ...").
+// Launches are asynchronous: a kernel that faults is reported by the next
+// call that waits for the device, a copy, under that copy's name. With the
+// environment variable NV_CUDA_SYNC=1 (any value but empty or 0) the
+// launcher waits for the device after each launch (cudaDeviceSynchronize),
+// so that a fault is reported under the kernel that caused it ("running
+// PsiKernel"); slower, for debugging. Without it, an error that may be an
+// earlier kernel's says to set it.
+//
 // Reductions (the sweeps' max change, the stopping rule's norms): each block
 // reduces its nodes in shared memory and writes one partial; the host adds
 // the partials in block order. With the fixed launch shape below the result
@@ -26,6 +42,8 @@
 #include <cuda_runtime.h>
 
 #include <algorithm>
+#include <cstdlib>
+#include <cstring>
 #include <string>
 #include <utility>
 #include <vector>
@@ -39,13 +57,78 @@ namespace
 constexpr int Threads = 256;      ///< threads a block
 constexpr int MaximumBlocks = 4096; ///< blocks of a launch: grid-stride loops beyond
 
-void Check(cudaError_t status, const char* what)
+/// Whether NV_CUDA_SYNC asks to wait for the device after each launch.
+bool SyncLaunches()
 {
-  if (status != cudaSuccess)
-  {
-    throw DeviceError(std::string("The GPU failed (") + what + "): " + cudaGetErrorString(status));
-  }
+  const char* value = std::getenv("NV_CUDA_SYNC");
+  return value && *value && std::strcmp(value, "0") != 0;
 }
+
+/// Throws the DeviceError of a failed CUDA call; `what` names the call's
+/// kernel or array.
+void Check(cudaError_t status, const std::string& what)
+{
+  if (status == cudaSuccess)
+  {
+    return;
+  }
+  std::string message = "The GPU failed (" + what + "): " + cudaGetErrorString(status);
+  if (status != cudaErrorMemoryAllocation && !SyncLaunches())
+  {
+    message += " (it may be an earlier kernel's fault: set NV_CUDA_SYNC=1 to have it reported under that kernel)";
+  }
+  throw DeviceError(message);
+}
+
+/// The CUDA launcher's memory: cudaMalloc's.
+struct CudaMemory
+{
+  static void* Allocate(std::size_t bytes, const char* what)
+  {
+    void* memory = nullptr;
+    Check(cudaMalloc(&memory, bytes),
+      std::string("allocating ") + what + ", " + ByteWords(static_cast<double>(bytes)));
+    return memory;
+  }
+  static void Free(void* memory) { cudaFree(memory); } // errors ignored: it may run while one unwinds
+};
+
+/// An array in the GPU's memory, owned and counted (nvDeviceMemory.h).
+template <typename T>
+using Array = DeviceBuffer<T, CudaMemory>;
+
+/// Device copies and work arrays of one call (the sort's, the neighbour
+/// table's, the surface's uploads), freed together when this goes or is
+/// cleared.
+class Scratch
+{
+public:
+  /// Device memory for `count` values.
+  template <typename T>
+  T* Get(DeviceLedger& ledger, std::int64_t count, const char* what)
+  {
+    Array<unsigned char> memory;
+    memory.Allocate(ledger, std::max<std::int64_t>(count, 1) * static_cast<std::int64_t>(sizeof(T)), what);
+    T* values = reinterpret_cast<T*>(memory.Data());
+    this->Held.push_back(std::move(memory));
+    return values;
+  }
+  /// A device copy of `count` values of host memory.
+  template <typename T>
+  T* Copy(DeviceLedger& ledger, const T* host, std::int64_t count, const char* what)
+  {
+    T* values = this->Get<T>(ledger, count, what);
+    if (count > 0)
+    {
+      Check(cudaMemcpy(values, host, sizeof(T) * count, cudaMemcpyHostToDevice), std::string("copying ") + what);
+    }
+    return values;
+  }
+  void Clear() { this->Held.clear(); }
+
+private:
+  std::vector<Array<unsigned char>> Held;
+};
 
 int BlocksFor(std::int64_t n)
 {
@@ -91,147 +174,118 @@ __global__ void Reduce(std::int64_t begin, std::int64_t end, Kernel kernel, doub
   }
 }
 
-template <typename T>
-T* Allocate(std::int64_t count, double& bytes, double& peak, const char* what)
-{
-  void* memory = nullptr;
-  const std::size_t size = static_cast<std::size_t>(std::max<std::int64_t>(count, 1)) * sizeof(T);
-  Check(cudaMalloc(&memory, size), what);
-  bytes += static_cast<double>(size);
-  peak = std::max(peak, bytes);
-  return static_cast<T*>(memory);
-}
-
-/// Frees what Allocate<T>(count) gave (null: nothing) and sets it null.
-template <typename T>
-void Release(T*& memory, std::int64_t count, double& bytes)
-{
-  if (memory)
-  {
-    cudaFree(memory);
-    bytes -= static_cast<double>(static_cast<std::size_t>(std::max<std::int64_t>(count, 1)) * sizeof(T));
-    memory = nullptr;
-  }
-}
-
 class CudaLauncher : public Launcher
 {
 public:
   explicit CudaLauncher(int device)
+    : Synchronous(SyncLaunches())
   {
     Check(cudaSetDevice(device), "cudaSetDevice");
     cudaDeviceProp properties;
     Check(cudaGetDeviceProperties(&properties, device), "cudaGetDeviceProperties");
     this->DeviceName = properties.name;
-    this->Partial = Allocate<double>(MaximumBlocks, this->Bytes, this->Peak, "the reductions' partials");
+    this->Partial.Allocate(this->Ledger, MaximumBlocks, "the reductions' partials");
     this->HostPartial.resize(MaximumBlocks);
   }
-  ~CudaLauncher() override
-  {
-    // Errors are ignored here: the destructor may run while a DeviceError unwinds.
-    this->ReleaseContour();
-    this->ReleaseDense();
-    for (void* memory : { static_cast<void*>(this->Partial), static_cast<void*>(this->Neighbor),
-           static_cast<void*>(this->Distance), static_cast<void*>(this->A.Phi), static_cast<void*>(this->A.Previous),
-           static_cast<void*>(this->A.Coupling), static_cast<void*>(this->A.Decay), static_cast<void*>(this->Points),
-           static_cast<void*>(this->BucketStart), static_cast<void*>(this->Bricks),
-           static_cast<void*>(this->BrickDistance), static_cast<void*>(this->Covered),
-           static_cast<void*>(this->RedCount), static_cast<void*>(this->BlackCount),
-           static_cast<void*>(this->RedFirst), static_cast<void*>(this->BlackFirst),
-           static_cast<void*>(this->Inside), static_cast<void*>(this->BandOffset) })
-    {
-      cudaFree(memory);
-    }
-    for (const BatchNodes& batch : this->Batches)
-    {
-      cudaFree(batch.Offset);
-      cudaFree(batch.Distance);
-    }
-  }
+  // The arrays free their memory themselves (errors ignored: the launcher
+  // may go while a DeviceError unwinds).
+  ~CudaLauncher() override = default;
 
   std::string Name() const override { return "CUDA (" + this->DeviceName + ")"; }
-  double DeviceBytes() const override { return this->Peak; }
+  double DeviceBytes() const override { return this->Ledger.Peak(); }
+  double HeldBytes() const override { return this->Ledger.Held(); }
+  double FreeBytes() const override
+  {
+    std::size_t free = 0, total = 0;
+    Check(cudaMemGetInfo(&free, &total), "asking for the free memory (cudaMemGetInfo)");
+    return static_cast<double>(free);
+  }
 
   void Upload(std::int64_t size, const std::uint32_t* neighbor, const double* distance, double inside,
     double outside) override
   {
     const bool held = !neighbor && !distance && size > 0; // the band built here (StoreBand, ConnectBand)
-    if (held && (this->BandSize != size || !this->Neighbor || !this->Distance))
+    if (held && (this->BandSize != size || !this->Neighbor.Data() || !this->Distance.Data()))
     {
       throw DeviceError("The GPU holds no band of " + std::to_string(size) + " nodes to evolve.");
     }
     if (held)
     {
-      Release(this->BandOffset, size, this->Bytes); // the host has its copy
+      this->BandOffset.Reset(); // the host has its copy
     }
+    this->A = EvolutionArrays();
     this->A.Size = size;
     if (!held)
     {
-      this->Neighbor = Allocate<std::uint32_t>(6 * size, this->Bytes, this->Peak, "the neighbour table");
-      this->Distance = Allocate<double>(size, this->Bytes, this->Peak, "the distances");
+      this->Neighbor.Allocate(this->Ledger, 6 * size, "the neighbour table");
+      this->Distance.Allocate(this->Ledger, size, "the distances");
     }
-    this->A.Phi = Allocate<double>(size + 2, this->Bytes, this->Peak, "phi");
-    this->A.Previous = Allocate<double>(size, this->Bytes, this->Peak, "phi^n");
-    this->A.Coupling = Allocate<double>(size, this->Bytes, this->Peak, "the coupling");
-    this->A.Decay = Allocate<float>(size, this->Bytes, this->Peak, "the decay");
-    this->A.Neighbor = this->Neighbor;
-    this->A.Distance = this->Distance;
+    this->Phi.Allocate(this->Ledger, size + 2, "phi");
+    this->Previous.Allocate(this->Ledger, size, "phi^n");
+    this->Coupling.Allocate(this->Ledger, size, "the coupling");
+    this->Decay.Allocate(this->Ledger, size, "the decay");
     if (!held)
     {
-      Check(cudaMemcpy(this->Neighbor, neighbor, sizeof(std::uint32_t) * 6 * size, cudaMemcpyHostToDevice),
+      Check(cudaMemcpy(this->Neighbor.Data(), neighbor, sizeof(std::uint32_t) * 6 * size, cudaMemcpyHostToDevice),
         "copying the neighbour table");
-      Check(cudaMemcpy(this->Distance, distance, sizeof(double) * size, cudaMemcpyHostToDevice),
+      Check(cudaMemcpy(this->Distance.Data(), distance, sizeof(double) * size, cudaMemcpyHostToDevice),
         "copying the distances");
     }
     const double slots[2] = { inside, outside };
-    Check(cudaMemcpy(this->A.Phi + size, slots, sizeof(slots), cudaMemcpyHostToDevice), "copying eq. (5)'s values");
+    Check(cudaMemcpy(this->Phi.Data() + size, slots, sizeof(slots), cudaMemcpyHostToDevice),
+      "copying eq. (5)'s values into phi");
+    this->A.Neighbor = this->Neighbor.Data();
+    this->A.Distance = this->Distance.Data();
+    this->A.Phi = this->Phi.Data();
+    this->A.Previous = this->Previous.Data();
+    this->A.Coupling = this->Coupling.Data();
+    this->A.Decay = this->Decay.Data();
   }
   void InitialField(const EvolutionConstants& constants) override
   {
-    this->For(0, this->A.Size, InitialPhiKernel{ this->A, constants });
-    Check(cudaDeviceSynchronize(), "phi0");
-    Check(cudaFree(this->Distance), "freeing the distances");
-    this->Bytes -= static_cast<double>(sizeof(double) * std::max<std::int64_t>(this->A.Size, 1));
-    this->Distance = nullptr;
+    this->Launch("InitialPhiKernel", 0, this->A.Size, InitialPhiKernel{ this->A, constants });
+    Check(cudaDeviceSynchronize(), "running InitialPhiKernel");
+    this->Distance.Reset();
     this->A.Distance = nullptr;
   }
   void Coefficients(const EvolutionConstants& constants) override
   {
-    this->For(0, this->A.Size, CoefficientsKernel{ this->A, constants });
+    this->Launch("CoefficientsKernel", 0, this->A.Size, CoefficientsKernel{ this->A, constants });
   }
-  void KeepPrevious() override { this->For(0, this->A.Size, KeepPreviousKernel{ this->A }); }
+  void KeepPrevious() override
+  {
+    this->Launch("KeepPreviousKernel", 0, this->A.Size, KeepPreviousKernel{ this->A });
+  }
   double Relax(std::int64_t begin, std::int64_t end, double omega) override
   {
-    return this->Reduction<true>(begin, end, RelaxKernel{ this->A, omega });
+    return this->Reduction<true>("RelaxKernel", begin, end, RelaxKernel{ this->A, omega });
   }
-  void React() override { this->For(0, this->A.Size, ReactKernel{ this->A }); }
+  void React() override { this->Launch("ReactKernel", 0, this->A.Size, ReactKernel{ this->A }); }
   double ChangeSquared(std::int64_t begin, std::int64_t end) override
   {
-    return this->Reduction<false>(begin, end, ChangeSquaredKernel{ this->A });
+    return this->Reduction<false>("ChangeSquaredKernel", begin, end, ChangeSquaredKernel{ this->A });
   }
   double NormSquared(std::int64_t begin, std::int64_t end) override
   {
-    return this->Reduction<false>(begin, end, NormSquaredKernel{ this->A });
+    return this->Reduction<false>("NormSquaredKernel", begin, end, NormSquaredKernel{ this->A });
   }
   void Download(UninitializedVector<double>& phi) override
   {
     phi.resize(static_cast<std::size_t>(this->A.Size + 2));
-    Check(cudaMemcpy(phi.data(), this->A.Phi, sizeof(double) * (this->A.Size + 2), cudaMemcpyDeviceToHost),
+    Check(cudaMemcpy(phi.data(), this->Phi.Data(), sizeof(double) * (this->A.Size + 2), cudaMemcpyDeviceToHost),
       "copying phi back");
   }
 
   void ReleaseEvolution() override
   {
-    const std::int64_t size = this->A.Size;
-    Release(this->A.Previous, size, this->Bytes);
-    Release(this->A.Coupling, size, this->Bytes);
-    Release(this->A.Decay, size, this->Bytes);
-    Release(this->Neighbor, 6 * size, this->Bytes);
-    Release(this->Distance, size, this->Bytes);
-    Release(this->BandOffset, this->BandSize, this->Bytes);
+    this->Previous.Reset();
+    this->Coupling.Reset();
+    this->Decay.Reset();
+    this->ReleaseBand();
+    this->A.Previous = this->A.Coupling = nullptr;
+    this->A.Decay = nullptr;
     this->A.Neighbor = nullptr;
     this->A.Distance = nullptr;
-    this->BandSize = 0;
   }
   void SortPoints(const double* cloud, std::int64_t numberOfPoints, const PointConstants& constants,
     std::vector<std::int64_t>& reached) override
@@ -240,44 +294,43 @@ public:
     a.NumberOfPoints = numberOfPoints;
     a.NumberOfBricks = constants.BrickDims[0] * constants.BrickDims[1] * constants.BrickDims[2];
     const std::int64_t chunks = (a.NumberOfBricks + ChunkBricks - 1) / ChunkBricks;
-    this->NumberOfPoints = numberOfPoints;
-    this->NumberOfBricks = a.NumberOfBricks;
     // Held until FreePoints: the sorted points and their buckets.
-    this->Points = Allocate<double>(3 * numberOfPoints, this->Bytes, this->Peak, "the points");
-    this->BucketStart = Allocate<std::int64_t>(a.NumberOfBricks + 1, this->Bytes, this->Peak, "the points' bricks");
-    // Freed below, through ScratchMemory: the cloud, each point's brick,
-    // the buckets' free slots, the marks of the reached bricks, the chunks.
-    a.Cloud = this->ToDevice(cloud, 3 * numberOfPoints, "the cloud");
-    a.BrickOf = this->Scratch<std::int64_t>(numberOfPoints, "each point's brick");
-    a.Next = this->Scratch<std::int64_t>(a.NumberOfBricks, "the buckets' free slots");
-    a.Reached = this->Scratch<std::uint8_t>(a.NumberOfBricks, "the reached bricks' marks");
-    a.ChunkCount = this->Scratch<std::int64_t>(chunks, "the chunks' sums");
-    std::int64_t* chunkFirst = this->Scratch<std::int64_t>(chunks, "the chunks' starts");
+    this->Points.Allocate(this->Ledger, 3 * numberOfPoints, "the points");
+    this->BucketStart.Allocate(this->Ledger, a.NumberOfBricks + 1, "the points' buckets");
+    // Freed on the way out, whatever happens: the cloud, each point's
+    // brick, the buckets' free slots, the marks of the reached bricks, the chunks.
+    Scratch scratch;
+    a.Cloud = scratch.Copy(this->Ledger, cloud, 3 * numberOfPoints, "the cloud");
+    a.BrickOf = scratch.Get<std::int64_t>(this->Ledger, numberOfPoints, "each point's brick");
+    a.Next = scratch.Get<std::int64_t>(this->Ledger, a.NumberOfBricks, "the buckets' free slots");
+    a.Reached = scratch.Get<std::uint8_t>(this->Ledger, a.NumberOfBricks, "the reached bricks' marks");
+    a.ChunkCount = scratch.Get<std::int64_t>(this->Ledger, chunks, "the chunks' sums");
+    std::int64_t* chunkFirst = scratch.Get<std::int64_t>(this->Ledger, chunks, "the chunks' starts");
     a.ChunkFirst = chunkFirst;
-    a.BucketStart = this->BucketStart;
-    a.Points = this->Points;
-    Check(cudaMemset(this->BucketStart, 0, sizeof(std::int64_t) * (a.NumberOfBricks + 1)), "clearing the counts");
-    Check(cudaMemset(a.Reached, 0, static_cast<std::size_t>(a.NumberOfBricks)), "clearing the marks");
+    a.BucketStart = this->BucketStart.Data();
+    a.Points = this->Points.Data();
+    Check(cudaMemset(a.BucketStart, 0, sizeof(std::int64_t) * (a.NumberOfBricks + 1)),
+      "clearing the points' buckets");
+    Check(cudaMemset(a.Reached, 0, static_cast<std::size_t>(a.NumberOfBricks)), "clearing the reached bricks' marks");
     std::vector<std::int64_t> sums(static_cast<std::size_t>(chunks)), firsts;
     // The counting sort: counts, their sums chunk by chunk, the points placed.
-    this->For(0, numberOfPoints, BucketPointsKernel{ a, constants });
-    this->For(0, chunks, ChunkSumKernel<std::int64_t>{ a, a.BucketStart + 1 });
+    this->Launch("BucketPointsKernel", 0, numberOfPoints, BucketPointsKernel{ a, constants });
+    this->Launch("ChunkSumKernel (the buckets)", 0, chunks, ChunkSumKernel<std::int64_t>{ a, a.BucketStart + 1 });
     this->ChunkFirsts(a.ChunkCount, chunkFirst, sums, firsts);
-    this->For(0, chunks, ChunkScanKernel{ a });
-    this->For(0, numberOfPoints, ScatterPointsKernel{ a, constants });
+    this->Launch("ChunkScanKernel", 0, chunks, ChunkScanKernel{ a });
+    this->Launch("ScatterPointsKernel", 0, numberOfPoints, ScatterPointsKernel{ a, constants });
     // The bricks reached, marked and listed in order.
-    this->For(0, numberOfPoints, ReachKernel{ a, constants });
-    this->For(0, chunks, ChunkSumKernel<std::uint8_t>{ a, a.Reached });
+    this->Launch("ReachKernel", 0, numberOfPoints, ReachKernel{ a, constants });
+    this->Launch("ChunkSumKernel (the reached bricks)", 0, chunks, ChunkSumKernel<std::uint8_t>{ a, a.Reached });
     const std::int64_t total = this->ChunkFirsts(a.ChunkCount, chunkFirst, sums, firsts);
-    a.ReachList = this->Scratch<std::int64_t>(total, "the reached bricks");
-    this->For(0, chunks, ReachListKernel{ a });
+    a.ReachList = scratch.Get<std::int64_t>(this->Ledger, total, "the reached bricks");
+    this->Launch("ReachListKernel", 0, chunks, ReachListKernel{ a });
     reached.resize(static_cast<std::size_t>(total));
     if (total > 0)
     {
       Check(cudaMemcpy(reached.data(), a.ReachList, sizeof(std::int64_t) * total, cudaMemcpyDeviceToHost),
         "copying the reached bricks back");
     }
-    this->ReleaseScratch(); // the arrays above but the sorted points and their buckets
   }
   void DistanceBricks(const std::int64_t* bricks, std::int64_t count, const DistanceConstants& constants,
     double* distance, std::uint8_t* covered) override
@@ -288,31 +341,31 @@ public:
     }
     if (count > this->BatchCapacity) // the batch's buffers, kept from batch to batch
     {
-      this->ReleaseBatch();
-      this->Bricks = Allocate<std::int64_t>(count, this->Bytes, this->Peak, "the bricks of a batch");
-      this->BrickDistance = Allocate<double>(count * 512, this->Bytes, this->Peak, "the distances of a batch");
-      this->Covered = Allocate<std::uint8_t>(count, this->Bytes, this->Peak, "the covered bricks of a batch");
+      this->BatchCapacity = 0; // until all three are there
+      this->Bricks.Allocate(this->Ledger, count, "the bricks of a batch");
+      this->BrickDistance.Allocate(this->Ledger, count * 512, "the distances of a batch");
+      this->Covered.Allocate(this->Ledger, count, "the covered bricks of a batch");
       this->BatchCapacity = count;
     }
-    Check(cudaMemcpy(this->Bricks, bricks, sizeof(std::int64_t) * count, cudaMemcpyHostToDevice),
+    Check(cudaMemcpy(this->Bricks.Data(), bricks, sizeof(std::int64_t) * count, cudaMemcpyHostToDevice),
       "copying the bricks of a batch");
     DistanceArrays arrays;
-    arrays.Points = this->Points;
-    arrays.BucketStart = this->BucketStart;
-    arrays.Bricks = this->Bricks;
-    arrays.Distance = this->BrickDistance;
-    arrays.Covered = this->Covered;
-    this->For(0, count, CoveredKernel{ arrays, constants });
+    arrays.Points = this->Points.Data();
+    arrays.BucketStart = this->BucketStart.Data();
+    arrays.Bricks = this->Bricks.Data();
+    arrays.Distance = this->BrickDistance.Data();
+    arrays.Covered = this->Covered.Data();
+    this->Launch("CoveredKernel", 0, count, CoveredKernel{ arrays, constants });
     // One thread a node: a block of 256 threads is half a brick.
-    this->For(0, count * 512, DistanceKernel{ arrays, constants });
+    this->Launch("DistanceKernel", 0, count * 512, DistanceKernel{ arrays, constants });
     if (covered)
     {
-      Check(cudaMemcpy(covered, this->Covered, count, cudaMemcpyDeviceToHost), "copying the covered bricks back");
+      Check(cudaMemcpy(covered, this->Covered.Data(), count, cudaMemcpyDeviceToHost), "copying the covered bricks back");
     }
     if (distance)
     {
-      Check(cudaMemcpy(distance, this->BrickDistance, sizeof(double) * 512 * count, cudaMemcpyDeviceToHost),
-        "copying the distances back");
+      Check(cudaMemcpy(distance, this->BrickDistance.Data(), sizeof(double) * 512 * count, cudaMemcpyDeviceToHost),
+        "copying the distances of a batch back");
     }
   }
   void BandNodes(std::int64_t count, const BandNodeConstants& constants, std::int32_t* red, std::int32_t* black,
@@ -324,111 +377,122 @@ public:
     }
     if (count > this->NodeCapacity) // the counts' buffers, kept from batch to batch
     {
-      this->ReleaseNodes();
-      this->RedCount = Allocate<std::int32_t>(count, this->Bytes, this->Peak, "the red counts of a batch");
-      this->BlackCount = Allocate<std::int32_t>(count, this->Bytes, this->Peak, "the black counts of a batch");
-      this->RedFirst = Allocate<std::int64_t>(count, this->Bytes, this->Peak, "the red nodes' places in a batch");
-      this->BlackFirst = Allocate<std::int64_t>(count, this->Bytes, this->Peak, "the black nodes' places in a batch");
-      this->Inside = Allocate<std::uint64_t>(8 * count, this->Bytes, this->Peak, "the inside bits of a batch");
+      this->NodeCapacity = 0; // until all five are there
+      this->RedCount.Allocate(this->Ledger, count, "the red counts of a batch");
+      this->BlackCount.Allocate(this->Ledger, count, "the black counts of a batch");
+      this->RedFirst.Allocate(this->Ledger, count, "the red nodes' places in a batch");
+      this->BlackFirst.Allocate(this->Ledger, count, "the black nodes' places in a batch");
+      this->Inside.Allocate(this->Ledger, 8 * count, "the inside bits of a batch");
       this->NodeCapacity = count;
     }
     BandNodeArrays arrays;
-    arrays.Bricks = this->Bricks;
-    arrays.Distance = this->BrickDistance;
-    arrays.Covered = this->Covered;
-    arrays.RedCount = this->RedCount;
-    arrays.BlackCount = this->BlackCount;
-    arrays.RedFirst = this->RedFirst;
-    arrays.BlackFirst = this->BlackFirst;
-    arrays.Inside = this->Inside;
-    this->For(0, count, BandCountKernel{ arrays, constants });
-    Check(cudaMemcpy(red, this->RedCount, sizeof(std::int32_t) * count, cudaMemcpyDeviceToHost),
+    arrays.Bricks = this->Bricks.Data();
+    arrays.Distance = this->BrickDistance.Data();
+    arrays.Covered = this->Covered.Data();
+    arrays.RedCount = this->RedCount.Data();
+    arrays.BlackCount = this->BlackCount.Data();
+    arrays.RedFirst = this->RedFirst.Data();
+    arrays.BlackFirst = this->BlackFirst.Data();
+    arrays.Inside = this->Inside.Data();
+    this->Launch("BandCountKernel", 0, count, BandCountKernel{ arrays, constants });
+    Check(cudaMemcpy(red, arrays.RedCount, sizeof(std::int32_t) * count, cudaMemcpyDeviceToHost),
       "copying the red counts back");
-    Check(cudaMemcpy(black, this->BlackCount, sizeof(std::int32_t) * count, cudaMemcpyDeviceToHost),
+    Check(cudaMemcpy(black, arrays.BlackCount, sizeof(std::int32_t) * count, cudaMemcpyDeviceToHost),
       "copying the black counts back");
-    Check(cudaMemcpy(inside, this->Inside, sizeof(std::uint64_t) * 8 * count, cudaMemcpyDeviceToHost),
+    Check(cudaMemcpy(inside, arrays.Inside, sizeof(std::uint64_t) * 8 * count, cudaMemcpyDeviceToHost),
       "copying the inside bits back");
     std::vector<std::int64_t> redFirst, blackFirst;
     FirstNodes(red, black, count, redFirst, blackFirst);
-    Check(cudaMemcpy(this->RedFirst, redFirst.data(), sizeof(std::int64_t) * count, cudaMemcpyHostToDevice),
+    Check(cudaMemcpy(this->RedFirst.Data(), redFirst.data(), sizeof(std::int64_t) * count, cudaMemcpyHostToDevice),
       "copying the red nodes' places");
-    Check(cudaMemcpy(this->BlackFirst, blackFirst.data(), sizeof(std::int64_t) * count, cudaMemcpyHostToDevice),
+    Check(cudaMemcpy(this->BlackFirst.Data(), blackFirst.data(), sizeof(std::int64_t) * count, cudaMemcpyHostToDevice),
       "copying the black nodes' places");
-    // The batch's list of band nodes, kept until StoreBand.
+    // The batch's list of band nodes, kept until StoreBand (freed here if
+    // anything below fails).
     BatchNodes batch;
     batch.Red = redFirst[count];
-    batch.Size = blackFirst[count];
-    batch.Offset = Allocate<std::uint16_t>(batch.Size, this->Bytes, this->Peak, "the band nodes of a batch");
-    batch.Distance = Allocate<double>(batch.Size, this->Bytes, this->Peak, "the band nodes' distances");
-    this->Batches.push_back(batch);
-    arrays.NodeOffset = batch.Offset;
-    arrays.NodeDistance = batch.Distance;
-    this->For(0, count, BandCompactKernel{ arrays, constants });
+    batch.Offset.Allocate(this->Ledger, blackFirst[count], "the band nodes of a batch");
+    batch.Distance.Allocate(this->Ledger, blackFirst[count], "the band nodes' distances");
+    arrays.NodeOffset = batch.Offset.Data();
+    arrays.NodeDistance = batch.Distance.Data();
+    this->Launch("BandCompactKernel", 0, count, BandCompactKernel{ arrays, constants });
+    this->Batches.push_back(std::move(batch));
   }
   void StoreBand(std::int64_t redCount, std::int64_t size, std::uint16_t* offset) override
   {
     this->ReleaseBand();
-    this->BandSize = size;
-    this->BandRedCount = redCount;
-    this->BandOffset = Allocate<std::uint16_t>(size, this->Bytes, this->Peak, "the band's node places");
-    this->Distance = Allocate<double>(size, this->Bytes, this->Peak, "the distances");
+    this->BandOffset.Allocate(this->Ledger, size, "the band's node places");
+    this->Distance.Allocate(this->Ledger, size, "the distances");
     // Each batch's red nodes after the batches' before it, its black ones
     // likewise after all the red ones: two copies a batch and array.
     std::int64_t red = 0, black = redCount;
-    for (BatchNodes& batch : this->Batches)
+    for (const BatchNodes& batch : this->Batches)
     {
-      const std::int64_t blacks = batch.Size - batch.Red;
-      this->CopyOnDevice(this->BandOffset + red, batch.Offset, batch.Red);
-      this->CopyOnDevice(this->BandOffset + black, batch.Offset + batch.Red, blacks);
-      this->CopyOnDevice(this->Distance + red, batch.Distance, batch.Red);
-      this->CopyOnDevice(this->Distance + black, batch.Distance + batch.Red, blacks);
+      const std::int64_t blacks = batch.Offset.Size() - batch.Red;
+      const std::uint16_t* batchOffset = batch.Offset.Data();
+      const double* batchDistance = batch.Distance.Data();
+      CopyOnDevice(this->BandOffset.Data() + red, batchOffset, batch.Red, "joining the batches' node places");
+      CopyOnDevice(this->BandOffset.Data() + black, batchOffset + batch.Red, blacks, "joining the batches' node places");
+      CopyOnDevice(this->Distance.Data() + red, batchDistance, batch.Red, "joining the batches' distances");
+      CopyOnDevice(this->Distance.Data() + black, batchDistance + batch.Red, blacks, "joining the batches' distances");
       red += batch.Red;
       black += blacks;
     }
-    this->ReleaseBatchNodes();
+    this->Batches.clear();
     if (size > 0)
     {
-      Check(cudaMemcpy(offset, this->BandOffset, sizeof(std::uint16_t) * size, cudaMemcpyDeviceToHost),
+      Check(cudaMemcpy(offset, this->BandOffset.Data(), sizeof(std::uint16_t) * size, cudaMemcpyDeviceToHost),
         "copying the band's node places back");
     }
+    this->BandSize = size;
+    this->BandRedCount = redCount;
   }
   void ConnectBand(const std::int64_t* bricks, const std::int64_t* redStart, const std::int64_t* blackStart,
     std::int64_t numberOfBricks, const NeighbourConstants& constants) override
   {
+    Scratch scratch; // the copies below, freed on the way out
     NeighbourArrays band;
     band.NumberOfBricks = numberOfBricks;
     band.RedCount = this->BandRedCount;
     band.Size = this->BandSize;
-    band.Bricks = this->ToDevice(bricks, numberOfBricks, "the band's bricks");
-    band.RedStart = this->ToDevice(redStart, numberOfBricks + 1, "the band's red starts");
-    band.BlackStart = this->ToDevice(blackStart, numberOfBricks + 1, "the band's black starts");
-    band.Offset = this->BandOffset;
-    band.Distance = this->Distance;
-    band.Adjacent = this->Scratch<std::int32_t>(6 * numberOfBricks, "the adjacent bricks");
-    this->Neighbor = Allocate<std::uint32_t>(6 * this->BandSize, this->Bytes, this->Peak, "the neighbour table");
-    band.Neighbor = this->Neighbor;
-    this->For(0, numberOfBricks, AdjacentBricksKernel{ band, constants });
-    this->For(0, this->BandSize, NeighboursKernel{ band, constants });
-    Check(cudaDeviceSynchronize(), "the neighbour table");
-    this->ReleaseScratch(); // the copies above
+    band.Bricks = scratch.Copy(this->Ledger, bricks, numberOfBricks, "the band's bricks");
+    band.RedStart = scratch.Copy(this->Ledger, redStart, numberOfBricks + 1, "the band's red starts");
+    band.BlackStart = scratch.Copy(this->Ledger, blackStart, numberOfBricks + 1, "the band's black starts");
+    band.Offset = this->BandOffset.Data();
+    band.Distance = this->Distance.Data();
+    band.Adjacent = scratch.Get<std::int32_t>(this->Ledger, 6 * numberOfBricks, "the adjacent bricks");
+    this->Neighbor.Allocate(this->Ledger, 6 * this->BandSize, "the neighbour table");
+    band.Neighbor = this->Neighbor.Data();
+    this->Launch("AdjacentBricksKernel", 0, numberOfBricks, AdjacentBricksKernel{ band, constants });
+    this->Launch("NeighboursKernel", 0, this->BandSize, NeighboursKernel{ band, constants });
+    Check(cudaDeviceSynchronize(), "running NeighboursKernel");
   }
   void DownloadBand(double* distance, std::uint32_t* neighbor) override
   {
     if (this->BandSize > 0)
     {
-      Check(cudaMemcpy(distance, this->Distance, sizeof(double) * this->BandSize, cudaMemcpyDeviceToHost),
+      Check(cudaMemcpy(distance, this->Distance.Data(), sizeof(double) * this->BandSize, cudaMemcpyDeviceToHost),
         "copying the band's distances back");
-      Check(cudaMemcpy(neighbor, this->Neighbor, sizeof(std::uint32_t) * 6 * this->BandSize, cudaMemcpyDeviceToHost),
+      Check(cudaMemcpy(neighbor, this->Neighbor.Data(), sizeof(std::uint32_t) * 6 * this->BandSize,
+              cudaMemcpyDeviceToHost),
         "copying the neighbour table back");
     }
   }
   void FreePoints() override
   {
-    Release(this->Points, 3 * this->NumberOfPoints, this->Bytes);
-    Release(this->BucketStart, this->NumberOfBricks + 1, this->Bytes);
-    this->ReleaseBatch();
-    this->ReleaseNodes();
-    this->ReleaseBatchNodes();
+    this->Points.Reset();
+    this->BucketStart.Reset();
+    this->BatchCapacity = 0;
+    this->Bricks.Reset();
+    this->BrickDistance.Reset();
+    this->Covered.Reset();
+    this->NodeCapacity = 0;
+    this->RedCount.Reset();
+    this->BlackCount.Reset();
+    this->RedFirst.Reset();
+    this->BlackFirst.Reset();
+    this->Inside.Reset();
+    this->Batches.clear();
   }
 
   void ContourCounts(const ContourArrays& band, std::int64_t numberOfNodes, const ContourConstants& constants,
@@ -439,25 +503,30 @@ public:
     ContourArrays& k = this->K;
     k.NumberOfBricks = band.NumberOfBricks;
     k.NumberOfCutBricks = band.NumberOfCutBricks;
-    this->ContourNodes = numberOfNodes;
     const std::int64_t bricks = band.NumberOfBricks, cut = band.NumberOfCutBricks;
-    k.Bricks = this->ToDevice(band.Bricks, bricks, "the band's bricks");
-    k.RedStart = this->ToDevice(band.RedStart, bricks + 1, "the band's red starts");
-    k.BlackStart = this->ToDevice(band.BlackStart, bricks + 1, "the band's black starts");
-    k.Inside = this->ToDevice(band.Inside, 8 * bricks, "the band's inside bits");
-    k.Offset = this->ToDevice(band.Offset, numberOfNodes, "the band's node places");
+    Scratch& up = this->ContourUploads; // until ContourGeometry's end
+    k.Bricks = up.Copy(this->Ledger, band.Bricks, bricks, "the band's bricks");
+    k.RedStart = up.Copy(this->Ledger, band.RedStart, bricks + 1, "the band's red starts");
+    k.BlackStart = up.Copy(this->Ledger, band.BlackStart, bricks + 1, "the band's black starts");
+    k.Inside = up.Copy(this->Ledger, band.Inside, 8 * bricks, "the band's inside bits");
+    k.Offset = up.Copy(this->Ledger, band.Offset, numberOfNodes, "the band's node places");
     // The evolution's phi, still here (ReleaseEvolution kept it), or a copy.
-    const bool held = this->A.Phi && this->A.Size == numberOfNodes;
-    k.Phi = held ? this->A.Phi : this->ToDevice(band.Phi, numberOfNodes, "phi for the surface");
-    k.CutBricks = this->ToDevice(band.CutBricks, cut, "the cut bricks");
-    k.Cases = this->ToDevice(band.Cases, 1, "the case table");
-    k.Psi = Allocate<float>(512 * bricks, this->Bytes, this->Peak, "psi");
-    k.Cut = Allocate<std::uint64_t>(CutWords * cut, this->Bytes, this->Peak, "the cut edges");
-    k.Above = Allocate<std::uint16_t>(AboveRows * cut, this->Bytes, this->Peak, "the corners' signs");
-    k.VertexCount = Allocate<std::int32_t>(cut, this->Bytes, this->Peak, "the vertex counts");
-    k.TriangleCount = Allocate<std::int32_t>(cut, this->Bytes, this->Peak, "the triangle counts");
-    this->For(0, bricks, PsiKernel{ k, constants });
-    this->For(0, cut, CutCellsKernel{ k, constants });
+    const bool held = this->Phi.Data() && this->A.Size == numberOfNodes;
+    k.Phi = held ? this->Phi.Data() : up.Copy(this->Ledger, band.Phi, numberOfNodes, "phi for the surface");
+    k.CutBricks = up.Copy(this->Ledger, band.CutBricks, cut, "the cut bricks");
+    k.Cases = up.Copy(this->Ledger, band.Cases, 1, "the case table");
+    this->Psi.Allocate(this->Ledger, 512 * bricks, "psi");
+    this->Cut.Allocate(this->Ledger, CutWords * cut, "the cut edges");
+    this->Above.Allocate(this->Ledger, AboveRows * cut, "the corners' signs");
+    this->VertexCount.Allocate(this->Ledger, cut, "the vertex counts");
+    this->TriangleCount.Allocate(this->Ledger, cut, "the triangle counts");
+    k.Psi = this->Psi.Data();
+    k.Cut = this->Cut.Data();
+    k.Above = this->Above.Data();
+    k.VertexCount = this->VertexCount.Data();
+    k.TriangleCount = this->TriangleCount.Data();
+    this->Launch("PsiKernel", 0, bricks, PsiKernel{ k, constants });
+    this->Launch("CutCellsKernel", 0, cut, CutCellsKernel{ k, constants });
     if (cut > 0)
     {
       Check(cudaMemcpy(vertices, k.VertexCount, sizeof(std::int32_t) * cut, cudaMemcpyDeviceToHost),
@@ -472,15 +541,17 @@ public:
   {
     ContourArrays& k = this->K;
     const std::int64_t cut = k.NumberOfCutBricks;
-    this->NumberOfVertices = numberOfVertices;
-    this->NumberOfTriangles = numberOfTriangles;
-    k.FirstVertex = this->ToDevice(firstVertex, cut, "the first vertices");
-    k.FirstTriangle = this->ToDevice(firstTriangle, cut, "the first triangles");
-    k.Points = Allocate<double>(3 * numberOfVertices, this->Bytes, this->Peak, "the vertices");
-    k.Normals = Allocate<float>(3 * numberOfVertices, this->Bytes, this->Peak, "the normals");
-    k.Triangles = Allocate<long long>(3 * numberOfTriangles, this->Bytes, this->Peak, "the triangles");
-    this->For(0, cut, VerticesKernel{ k, this->KC });
-    this->For(0, cut, TrianglesKernel{ k, this->KC });
+    Scratch& up = this->ContourUploads;
+    k.FirstVertex = up.Copy(this->Ledger, firstVertex, cut, "the first vertices");
+    k.FirstTriangle = up.Copy(this->Ledger, firstTriangle, cut, "the first triangles");
+    this->OutPoints.Allocate(this->Ledger, 3 * numberOfVertices, "the vertices");
+    this->OutNormals.Allocate(this->Ledger, 3 * numberOfVertices, "the normals");
+    this->OutTriangles.Allocate(this->Ledger, 3 * numberOfTriangles, "the triangles");
+    k.Points = this->OutPoints.Data();
+    k.Normals = this->OutNormals.Data();
+    k.Triangles = this->OutTriangles.Data();
+    this->Launch("VerticesKernel", 0, cut, VerticesKernel{ k, this->KC });
+    this->Launch("TrianglesKernel", 0, cut, TrianglesKernel{ k, this->KC });
     if (numberOfVertices > 0)
     {
       Check(cudaMemcpy(points, k.Points, sizeof(double) * 3 * numberOfVertices, cudaMemcpyDeviceToHost),
@@ -503,36 +574,41 @@ public:
     this->VC = constants;
     const std::int64_t nodes = constants.Nodes();
     if (arrays.Phi)
-      this->V.Phi = Allocate<float>(nodes, this->Bytes, this->Peak, "the dense phi");
+      this->DensePhi.Allocate(this->Ledger, nodes, "the dense phi");
     if (arrays.InitialPhi)
-      this->V.InitialPhi = Allocate<float>(nodes, this->Bytes, this->Peak, "the dense phi0");
+      this->DenseInitialPhi.Allocate(this->Ledger, nodes, "the dense phi0");
     if (arrays.Distance)
-      this->V.Distance = Allocate<float>(nodes, this->Bytes, this->Peak, "the dense distances");
+      this->DenseDistance.Allocate(this->Ledger, nodes, "the dense distances");
     if (arrays.Band)
-      this->V.Band = Allocate<std::uint8_t>(nodes, this->Bytes, this->Peak, "the dense band flags");
-    this->For(0, nodes, DenseClearKernel{ this->V, constants });
+      this->DenseFlags.Allocate(this->Ledger, nodes, "the dense band flags");
+    this->V.Phi = this->DensePhi.Data();
+    this->V.InitialPhi = this->DenseInitialPhi.Data();
+    this->V.Distance = this->DenseDistance.Data();
+    this->V.Band = this->DenseFlags.Data();
+    this->Launch("DenseClearKernel", 0, nodes, DenseClearKernel{ this->V, constants });
   }
   void DenseBricks(std::int64_t count) override
   {
     DistanceArrays batch;
-    batch.Bricks = this->Bricks;
-    batch.Distance = this->BrickDistance;
-    batch.Covered = this->Covered;
-    this->For(0, count * 512, DenseBrickKernel{ batch, this->V, this->VC });
+    batch.Bricks = this->Bricks.Data();
+    batch.Distance = this->BrickDistance.Data();
+    batch.Covered = this->Covered.Data();
+    this->Launch("DenseBrickKernel", 0, count * 512, DenseBrickKernel{ batch, this->V, this->VC });
   }
   void DenseBand(const DenseBandArrays& band, std::int64_t numberOfBricks, std::int64_t numberOfNodes) override
   {
+    Scratch scratch; // the band's copies, freed on the way out
     DenseBandArrays onDevice;
-    onDevice.Bricks = this->ToDevice(band.Bricks, numberOfBricks, "the band's bricks");
-    onDevice.RedStart = this->ToDevice(band.RedStart, numberOfBricks + 1, "the band's red starts");
-    onDevice.BlackStart = this->ToDevice(band.BlackStart, numberOfBricks + 1, "the band's black starts");
-    onDevice.Offset = this->ToDevice(band.Offset, numberOfNodes, "the band's node places");
+    onDevice.Bricks = scratch.Copy(this->Ledger, band.Bricks, numberOfBricks, "the band's bricks");
+    onDevice.RedStart = scratch.Copy(this->Ledger, band.RedStart, numberOfBricks + 1, "the band's red starts");
+    onDevice.BlackStart = scratch.Copy(this->Ledger, band.BlackStart, numberOfBricks + 1, "the band's black starts");
+    onDevice.Offset = scratch.Copy(this->Ledger, band.Offset, numberOfNodes, "the band's node places");
     // The evolution's phi, still here (Download copied it, kept it).
-    onDevice.Phi = this->A.Phi && this->A.Size == numberOfNodes ? this->A.Phi
-                                                                : this->ToDevice(band.Phi, numberOfNodes, "phi");
-    this->For(0, numberOfBricks, DenseBandKernel{ onDevice, this->V, this->VC });
-    Check(cudaDeviceSynchronize(), "the dense volume's band");
-    this->ReleaseScratch(); // the band's copies
+    onDevice.Phi = this->Phi.Data() && this->A.Size == numberOfNodes
+      ? this->Phi.Data()
+      : scratch.Copy(this->Ledger, band.Phi, numberOfNodes, "phi");
+    this->Launch("DenseBandKernel", 0, numberOfBricks, DenseBandKernel{ onDevice, this->V, this->VC });
+    Check(cudaDeviceSynchronize(), "running DenseBandKernel");
   }
   void DenseDownload() override
   {
@@ -555,31 +631,12 @@ public:
 private:
   void ReleaseDense()
   {
-    const std::int64_t nodes = this->VC.Nodes();
-    Release(this->V.Phi, nodes, this->Bytes);
-    Release(this->V.InitialPhi, nodes, this->Bytes);
-    Release(this->V.Distance, nodes, this->Bytes);
-    Release(this->V.Band, nodes, this->Bytes);
+    this->DensePhi.Reset();
+    this->DenseInitialPhi.Reset();
+    this->DenseDistance.Reset();
+    this->DenseFlags.Reset();
+    this->V = DenseArrays();
     this->HostDense = DenseArrays();
-  }
-  /// A device copy of `count` values of host memory (freed by ReleaseScratch).
-  template <typename T>
-  T* ToDevice(const T* host, std::int64_t count, const char* what)
-  {
-    T* memory = this->Scratch<T>(count, what);
-    if (count > 0)
-    {
-      Check(cudaMemcpy(memory, host, sizeof(T) * count, cudaMemcpyHostToDevice), what);
-    }
-    return memory;
-  }
-  /// Device memory for `count` values, freed by ReleaseScratch.
-  template <typename T>
-  T* Scratch(std::int64_t count, const char* what)
-  {
-    T* memory = Allocate<T>(count, this->Bytes, this->Peak, what);
-    this->ScratchMemory.push_back({ memory, static_cast<std::size_t>(std::max<std::int64_t>(count, 1)) * sizeof(T) });
-    return memory;
   }
   /// The chunks' sums (`sums` on the device) to the host, where each
   /// chunk's part begins (ChunkStarts) back to `first` on the device;
@@ -598,92 +655,67 @@ private:
       "copying the chunks' starts");
     return total;
   }
-  /// Frees what Scratch and ToDevice gave.
-  void ReleaseScratch()
-  {
-    for (const auto& held : this->ScratchMemory)
-    {
-      cudaFree(held.first);
-      this->Bytes -= static_cast<double>(held.second);
-    }
-    this->ScratchMemory.clear();
-  }
   void ReleaseContour()
   {
-    this->ReleaseScratch();
-    const std::int64_t bricks = this->K.NumberOfBricks, cut = this->K.NumberOfCutBricks;
-    Release(this->K.Psi, 512 * bricks, this->Bytes);
-    Release(this->K.Cut, CutWords * cut, this->Bytes);
-    Release(this->K.Above, AboveRows * cut, this->Bytes);
-    Release(this->K.VertexCount, cut, this->Bytes);
-    Release(this->K.TriangleCount, cut, this->Bytes);
-    Release(this->K.Points, 3 * this->NumberOfVertices, this->Bytes);
-    Release(this->K.Normals, 3 * this->NumberOfVertices, this->Bytes);
-    Release(this->K.Triangles, 3 * this->NumberOfTriangles, this->Bytes);
+    this->ContourUploads.Clear();
+    this->Psi.Reset();
+    this->Cut.Reset();
+    this->Above.Reset();
+    this->VertexCount.Reset();
+    this->TriangleCount.Reset();
+    this->OutPoints.Reset();
+    this->OutNormals.Reset();
+    this->OutTriangles.Reset();
     this->K = ContourArrays();
   }
-  void ReleaseBatch()
-  {
-    Release(this->Bricks, this->BatchCapacity, this->Bytes);
-    Release(this->BrickDistance, 512 * this->BatchCapacity, this->Bytes);
-    Release(this->Covered, this->BatchCapacity, this->Bytes);
-    this->BatchCapacity = 0;
-  }
-  void ReleaseNodes()
-  {
-    Release(this->RedCount, this->NodeCapacity, this->Bytes);
-    Release(this->BlackCount, this->NodeCapacity, this->Bytes);
-    Release(this->RedFirst, this->NodeCapacity, this->Bytes);
-    Release(this->BlackFirst, this->NodeCapacity, this->Bytes);
-    Release(this->Inside, 8 * this->NodeCapacity, this->Bytes);
-    this->NodeCapacity = 0;
-  }
-  void ReleaseBatchNodes()
-  {
-    for (BatchNodes& batch : this->Batches)
-    {
-      Release(batch.Offset, batch.Size, this->Bytes);
-      Release(batch.Distance, batch.Size, this->Bytes);
-    }
-    this->Batches.clear();
-  }
-  /// A band built before (StoreBand, ConnectBand) and not evolved.
+  /// A band built before (StoreBand, ConnectBand) and not evolved, or the
+  /// evolution's distances and neighbour table.
   void ReleaseBand()
   {
-    Release(this->BandOffset, this->BandSize, this->Bytes);
-    Release(this->Distance, this->BandSize, this->Bytes);
-    Release(this->Neighbor, 6 * this->BandSize, this->Bytes);
+    this->BandOffset.Reset();
+    this->Distance.Reset();
+    this->Neighbor.Reset();
     this->BandSize = 0;
   }
   template <typename T>
-  void CopyOnDevice(T* to, const T* from, std::int64_t count)
+  static void CopyOnDevice(T* to, const T* from, std::int64_t count, const char* what)
   {
     if (count > 0)
     {
-      Check(cudaMemcpy(to, from, sizeof(T) * count, cudaMemcpyDeviceToDevice), "joining the band's batches");
+      Check(cudaMemcpy(to, from, sizeof(T) * count, cudaMemcpyDeviceToDevice), what);
     }
   }
+  /// `kernel` on [begin, end), `name` in its errors; waits for it with
+  /// NV_CUDA_SYNC.
   template <typename Kernel>
-  void For(std::int64_t begin, std::int64_t end, const Kernel& kernel)
+  void Launch(const char* name, std::int64_t begin, std::int64_t end, const Kernel& kernel)
   {
     if (end > begin)
     {
       ForEach<<<BlocksFor(end - begin), Threads>>>(begin, end, kernel);
-      Check(cudaGetLastError(), "a kernel's launch");
+      Check(cudaGetLastError(), std::string("launching ") + name);
+      if (this->Synchronous)
+      {
+        Check(cudaDeviceSynchronize(), std::string("running ") + name);
+      }
     }
   }
   template <bool Max, typename Kernel>
-  double Reduction(std::int64_t begin, std::int64_t end, const Kernel& kernel)
+  double Reduction(const char* name, std::int64_t begin, std::int64_t end, const Kernel& kernel)
   {
     if (end <= begin)
     {
       return 0.0;
     }
     const int blocks = BlocksFor(end - begin);
-    Reduce<Max><<<blocks, Threads>>>(begin, end, kernel, this->Partial);
-    Check(cudaGetLastError(), "a reduction's launch");
-    Check(cudaMemcpy(this->HostPartial.data(), this->Partial, sizeof(double) * blocks, cudaMemcpyDeviceToHost),
-      "copying a reduction back");
+    Reduce<Max><<<blocks, Threads>>>(begin, end, kernel, this->Partial.Data());
+    Check(cudaGetLastError(), std::string("launching ") + name);
+    if (this->Synchronous)
+    {
+      Check(cudaDeviceSynchronize(), std::string("running ") + name);
+    }
+    Check(cudaMemcpy(this->HostPartial.data(), this->Partial.Data(), sizeof(double) * blocks, cudaMemcpyDeviceToHost),
+      std::string("copying ") + name + "'s partial results back");
     double result = 0.0;
     for (int b = 0; b < blocks; ++b)
     {
@@ -693,58 +725,69 @@ private:
   }
 
   std::string DeviceName;
-  double Bytes = 0.0; ///< held now
-  double Peak = 0.0;  ///< the most held at once
+  bool Synchronous = false; ///< NV_CUDA_SYNC: wait for each launch
+  /// Counts the arrays below; declared first, so that it outlives them.
+  DeviceLedger Ledger;
   // The truncated distance's arrays (DistanceArrays), until FreePoints.
-  std::int64_t NumberOfPoints = 0;
-  std::int64_t NumberOfBricks = 0;
-  std::int64_t BatchCapacity = 0;
-  double* Points = nullptr;
-  std::int64_t* BucketStart = nullptr;
-  std::int64_t* Bricks = nullptr;
-  double* BrickDistance = nullptr;
-  std::uint8_t* Covered = nullptr;
+  Array<double> Points;
+  Array<std::int64_t> BucketStart;
+  std::int64_t BatchCapacity = 0; ///< bricks the batch's buffers hold
+  Array<std::int64_t> Bricks;
+  Array<double> BrickDistance;
+  Array<std::uint8_t> Covered;
   // The band nodes of a batch (BandNodeArrays): the counts' buffers, and
   // each batch's list until StoreBand.
-  std::int64_t NodeCapacity = 0;
-  std::int32_t* RedCount = nullptr;
-  std::int32_t* BlackCount = nullptr;
-  std::int64_t* RedFirst = nullptr;
-  std::int64_t* BlackFirst = nullptr;
-  std::uint64_t* Inside = nullptr;
+  std::int64_t NodeCapacity = 0; ///< bricks the counts' buffers hold
+  Array<std::int32_t> RedCount;
+  Array<std::int32_t> BlackCount;
+  Array<std::int64_t> RedFirst;
+  Array<std::int64_t> BlackFirst;
+  Array<std::uint64_t> Inside;
   struct BatchNodes
   {
-    std::int64_t Red = 0;  ///< its red nodes first
-    std::int64_t Size = 0; ///< all of them
-    std::uint16_t* Offset = nullptr;
-    double* Distance = nullptr;
+    std::int64_t Red = 0; ///< its red nodes first
+    Array<std::uint16_t> Offset;
+    Array<double> Distance;
   };
   std::vector<BatchNodes> Batches;
   // The band built here (StoreBand, ConnectBand): its Offset until the
-  // evolution's Upload; Distance and Neighbor below, until InitialField and
-  // the launcher's end.
+  // evolution's Upload; Distance and Neighbor until InitialField and
+  // ReleaseEvolution.
   std::int64_t BandSize = 0;
   std::int64_t BandRedCount = 0;
-  std::uint16_t* BandOffset = nullptr;
+  Array<std::uint16_t> BandOffset;
+  Array<double> Distance;
+  Array<std::uint32_t> Neighbor;
+  // The evolution's arrays (A points into them); phi stays after
+  // ReleaseEvolution for the dense volume and the surface.
+  EvolutionArrays A;
+  Array<double> Phi;
+  Array<double> Previous;
+  Array<double> Coupling;
+  Array<float> Decay;
   // The dense volume (DenseArrays): on the device in V, the host's in
   // HostDense, until DenseDownload.
   DenseArrays V;
   DenseArrays HostDense;
   DenseConstants VC;
+  Array<float> DensePhi;
+  Array<float> DenseInitialPhi;
+  Array<float> DenseDistance;
+  Array<std::uint8_t> DenseFlags;
   // The surface's arrays (ContourArrays): the uploaded ones in
-  // ScratchMemory, the others in K, until ContourGeometry ends.
+  // ContourUploads, the others below, until ContourGeometry ends.
   ContourArrays K;
   ContourConstants KC;
-  std::int64_t ContourNodes = 0;
-  std::int64_t NumberOfVertices = 0;
-  std::int64_t NumberOfTriangles = 0;
-  /// Copies and work arrays of one call (the sort's, the neighbour table's,
-  /// the surface's uploads): pointer and bytes, freed by ReleaseScratch.
-  std::vector<std::pair<void*, std::size_t>> ScratchMemory;
-  EvolutionArrays A;
-  std::uint32_t* Neighbor = nullptr;
-  double* Distance = nullptr;
-  double* Partial = nullptr;
+  Scratch ContourUploads;
+  Array<float> Psi;
+  Array<std::uint64_t> Cut;
+  Array<std::uint16_t> Above;
+  Array<std::int32_t> VertexCount;
+  Array<std::int32_t> TriangleCount;
+  Array<double> OutPoints;
+  Array<float> OutNormals;
+  Array<long long> OutTriangles;
+  Array<double> Partial;
   std::vector<double> HostPartial;
 };
 } // namespace

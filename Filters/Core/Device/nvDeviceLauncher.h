@@ -11,12 +11,17 @@
 // CUDA. The suite runs the kernels through the host launcher and compiles
 // the CUDA one (scripts/test.sh); scripts/test-gpu.sh runs it on a machine
 // with a GPU (where it stands: doc/performance.md, "On a GPU").
+//
+// Both launchers hold their arrays in DeviceBuffers (nvDeviceMemory.h):
+// each owns its memory and is counted, so that nothing leaks and the count
+// stays right whatever fails; a DeviceError names the kernel or array.
 #ifndef nvDeviceLauncher_h
 #define nvDeviceLauncher_h
 
 #include "nvDeviceKernels.h"
 #include "nvSurfaceKernels.h"
 #include "nvVolumeKernels.h"
+#include "nvDeviceMemory.h"
 #include "nvMemory.h"
 
 #include <cstdint>
@@ -29,14 +34,6 @@ namespace nv
 {
 namespace device
 {
-
-/// What a launcher throws when the device fails (an allocation, a copy, a
-/// launch): the message says which, with the CUDA runtime's words.
-class DeviceError : public std::runtime_error
-{
-public:
-  using std::runtime_error::runtime_error;
-};
 
 // A launcher's kernels come in four groups, one interface each, so that a
 // stage's code sees only its own: the points' sort, the distances and the
@@ -187,9 +184,17 @@ class Launcher
 public:
   /// "host launcher" or "CUDA (device name)".
   virtual std::string Name() const = 0;
-  /// The most bytes the launcher has held on its device at once (0 for the
-  /// host launcher).
-  virtual double DeviceBytes() const { return 0.0; }
+  /// The most bytes the launcher's buffers have held on its device at once
+  /// (the host launcher: its own arrays, in host memory).
+  virtual double DeviceBytes() const = 0;
+  /// The bytes its buffers hold now: 0 once it has let everything go,
+  /// whatever failed before.
+  virtual double HeldBytes() const = 0;
+  /// The device's free memory now, in bytes: cudaMemGetInfo's on a GPU; the
+  /// host launcher's, the host's available memory (HostAvailableBytes) or
+  /// the test hook's (HostLauncherHooks). The run compares what it will
+  /// need with it before the band and before the evolution.
+  virtual double FreeBytes() const = 0;
 };
 
 /// Where each brick of a batch puts its band nodes (BandNodeArrays'
@@ -199,8 +204,23 @@ public:
 void FirstNodes(const std::int32_t* red, const std::int32_t* black, std::int64_t count,
   std::vector<std::int64_t>& redFirst, std::vector<std::int64_t>& blackFirst);
 
+/// The host launcher's test hooks: a limit on the bytes its buffers may
+/// hold at once (an allocation beyond it fails as on a full GPU, with a
+/// DeviceError), and the free memory it reports (FreeBytes); both < 0: none
+/// (the host's available memory is reported).
+struct HostLauncherHooks
+{
+  double AllocationLimit = -1.0;
+  double FreeBytes = -1.0;
+};
+
 /// The host launcher: the kernels over nv::ParallelFor and its reductions.
-std::unique_ptr<Launcher> MakeHostLauncher();
+std::unique_ptr<Launcher> MakeHostLauncher(const HostLauncherHooks& hooks = HostLauncherHooks());
+
+/// The bytes all host launchers' arrays hold now, counted by their
+/// allocator apart from their ledgers: the tests' check that a failed
+/// allocation leaks nothing.
+double HostLauncherBytes();
 
 /// Whether this build has the CUDA launcher (NARROWVOLUME_CUDA).
 bool CudaCompiled();

@@ -3,13 +3,19 @@
 // The host launcher: the device back end's kernels (nvDeviceKernels.h) run
 // over the core's threads (nvParallel.h), node by node as a GPU thread runs
 // them. The reductions split the ranges as the CPU core's solver does
-// (ParallelMax, ParallelSum), so phi is the CPU core's bit for bit.
+// (ParallelMax, ParallelSum), so phi is the CPU core's bit for bit. Its
+// arrays are DeviceBuffers in host memory, counted as the CUDA launcher's
+// are on the GPU (nvDeviceMemory.h), so that a test can make an allocation
+// fail (HostLauncherHooks) and check what is left held.
 #include "nvDeviceLauncher.h"
 
 #include "nvMemory.h"
 #include "nvParallel.h"
 
 #include <algorithm>
+#include <atomic>
+#include <cstdlib>
+#include <cstring>
 #include <vector>
 
 namespace nv
@@ -41,6 +47,41 @@ void FirstNodes(const std::int32_t* red, const std::int32_t* black, std::int64_t
 namespace
 {
 constexpr std::int64_t Grain = 4096;
+
+/// The bytes the host launchers' arrays hold (HostLauncherBytes).
+std::atomic<std::int64_t> Allocated{ 0 };
+
+/// The host launcher's memory: malloc's, each block's size kept in 16 bytes
+/// before it (so that the values stay 16-byte aligned) and counted in
+/// Allocated, apart from the launcher's ledger.
+struct HostMemory
+{
+  static constexpr std::size_t Header = 16;
+  static void* Allocate(std::size_t bytes, const char* what)
+  {
+    unsigned char* block = static_cast<unsigned char*>(std::malloc(Header + bytes));
+    if (!block)
+    {
+      throw DeviceError(std::string("The GPU failed (allocating ") + what + ", " +
+        ByteWords(static_cast<double>(bytes)) + "): out of host memory");
+    }
+    std::memcpy(block, &bytes, sizeof(bytes));
+    Allocated += static_cast<std::int64_t>(bytes);
+    return block + Header;
+  }
+  static void Free(void* memory)
+  {
+    unsigned char* block = static_cast<unsigned char*>(memory) - Header;
+    std::size_t bytes = 0;
+    std::memcpy(&bytes, block, sizeof(bytes));
+    Allocated -= static_cast<std::int64_t>(bytes);
+    std::free(block);
+  }
+};
+
+/// An array of the host launcher, counted in its ledger.
+template <typename T>
+using HostArray = DeviceBuffer<T, HostMemory>;
 
 template <typename Kernel>
 void For(std::int64_t begin, std::int64_t end, const Kernel& kernel, std::int64_t grain = Grain)
@@ -82,19 +123,34 @@ double Sum(std::int64_t begin, std::int64_t end, const Kernel& kernel)
 class HostLauncher : public Launcher
 {
 public:
+  explicit HostLauncher(const HostLauncherHooks& hooks)
+    : Hooks(hooks)
+  {
+    if (hooks.AllocationLimit >= 0.0)
+    {
+      this->Ledger.SetLimit(hooks.AllocationLimit);
+    }
+  }
+
   std::string Name() const override { return "host launcher"; }
+  double DeviceBytes() const override { return this->Ledger.Peak(); }
+  double HeldBytes() const override { return this->Ledger.Held(); }
+  double FreeBytes() const override
+  {
+    return this->Hooks.FreeBytes >= 0.0 ? this->Hooks.FreeBytes : HostAvailableBytes();
+  }
 
   void Upload(std::int64_t size, const std::uint32_t* neighbor, const double* distance, double inside,
     double outside) override
   {
     // Allocated unset, first written by the kernels' parallel loops, as the
     // CPU core's arrays.
-    this->Phi.resize(static_cast<std::size_t>(size + 2));
-    this->Previous.resize(static_cast<std::size_t>(size));
-    this->Coupling.resize(static_cast<std::size_t>(size));
-    this->Decay.resize(static_cast<std::size_t>(size));
-    this->Phi[size] = inside;
-    this->Phi[size + 1] = outside;
+    this->Phi.Allocate(this->Ledger, size + 2, "phi");
+    this->Previous.Allocate(this->Ledger, size, "phi^n");
+    this->Coupling.Allocate(this->Ledger, size, "the coupling");
+    this->Decay.Allocate(this->Ledger, size, "the decay");
+    this->Phi.Data()[size] = inside;
+    this->Phi.Data()[size + 1] = outside;
     this->A.Size = size;
     this->A.Neighbor = neighbor;
     this->A.Distance = distance;
@@ -106,18 +162,18 @@ public:
       }
       this->A.Neighbor = this->Band.Neighbor;
       this->A.Distance = this->Band.Distance;
-      Free(this->BandOffset); // the host has its copy
+      this->BandOffset.Reset(); // the host has its copy
     }
-    this->A.Phi = this->Phi.data();
-    this->A.Previous = this->Previous.data();
-    this->A.Coupling = this->Coupling.data();
-    this->A.Decay = this->Decay.data();
+    this->A.Phi = this->Phi.Data();
+    this->A.Previous = this->Previous.Data();
+    this->A.Coupling = this->Coupling.Data();
+    this->A.Decay = this->Decay.Data();
   }
   void InitialField(const EvolutionConstants& constants) override
   {
     For(0, this->A.Size, InitialPhiKernel{ this->A, constants });
     this->A.Distance = nullptr; // the band's: its owner frees it
-    Free(this->BandDistance); // if the band was built here
+    this->BandDistance.Reset(); // if the band was built here
     this->Band.Distance = nullptr;
   }
   void Coefficients(const EvolutionConstants& constants) override
@@ -140,43 +196,55 @@ public:
   }
   void Download(UninitializedVector<double>& phi) override
   {
-    phi.swap(this->Phi); // already in host memory
+    const std::int64_t values = this->Phi.Size();
+    phi.resize(static_cast<std::size_t>(values));
+    std::copy(this->Phi.Data(), this->Phi.Data() + values, phi.data());
+    this->Phi.Reset(); // the host launcher reads the caller's copy from now on
     this->A = EvolutionArrays();
-    Free(this->BandNeighbor); // if the band was built here
+    this->BandNeighbor.Reset(); // if the band was built here
     this->Band = NeighbourArrays();
   }
 
   void ReleaseEvolution() override
   {
     // phi went to the caller (Download); the host launcher reads it there.
-    Free(this->Previous);
-    Free(this->Coupling);
-    Free(this->Decay);
+    this->Phi.Reset();
+    this->Previous.Reset();
+    this->Coupling.Reset();
+    this->Decay.Reset();
+    this->ReleaseBand(); // a band built here and not evolved
+    this->A = EvolutionArrays();
   }
   void SortPoints(const double* cloud, std::int64_t numberOfPoints, const PointConstants& constants,
     std::vector<std::int64_t>& reached) override
   {
     // The CPU core's sort and list (nvPointSort.h), the same kernels.
     const std::int64_t bricks = constants.BrickDims[0] * constants.BrickDims[1] * constants.BrickDims[2];
-    this->SortedPoints.resize(static_cast<std::size_t>(3 * numberOfPoints));
-    this->Bucket.resize(static_cast<std::size_t>(bricks + 1));
-    nv::SortPoints(cloud, numberOfPoints, constants, this->SortedPoints.data(), this->Bucket.data());
-    reached = ListReachedBricks(this->SortedPoints.data(), numberOfPoints, constants);
-    this->D.Points = this->SortedPoints.data();
-    this->D.BucketStart = this->Bucket.data();
+    this->SortedPoints.Allocate(this->Ledger, 3 * numberOfPoints, "the points");
+    this->Bucket.Allocate(this->Ledger, bricks + 1, "the points' bricks");
+    nv::SortPoints(cloud, numberOfPoints, constants, this->SortedPoints.Data(), this->Bucket.Data());
+    reached = ListReachedBricks(this->SortedPoints.Data(), numberOfPoints, constants);
+    this->D.Points = this->SortedPoints.Data();
+    this->D.BucketStart = this->Bucket.Data();
   }
   void DistanceBricks(const std::int64_t* bricks, std::int64_t count, const DistanceConstants& constants,
     double* distance, std::uint8_t* covered) override
   {
-    if (!distance) // kept here for BandNodes
+    if (!distance) // kept here for BandNodes, from batch to batch
     {
-      this->BatchDistance.resize(static_cast<std::size_t>(count * 512));
-      distance = this->BatchDistance.data();
+      if (this->BatchDistance.Size() < count * 512)
+      {
+        this->BatchDistance.Allocate(this->Ledger, count * 512, "the distances of a batch");
+      }
+      distance = this->BatchDistance.Data();
     }
     if (!covered)
     {
-      this->BatchCovered.resize(static_cast<std::size_t>(count));
-      covered = this->BatchCovered.data();
+      if (this->BatchCovered.Size() < count)
+      {
+        this->BatchCovered.Allocate(this->Ledger, count, "the covered bricks of a batch");
+      }
+      covered = this->BatchCovered.Data();
     }
     DistanceArrays& arrays = this->D;
     arrays.Bricks = bricks;
@@ -198,74 +266,79 @@ public:
     arrays.Inside = inside;
     For(0, count, BandCountKernel{ arrays, constants }, 8);
     std::vector<std::int64_t> redFirst, blackFirst;
-    this->Batches.emplace_back();
-    BatchNodes& batch = this->Batches.back();
     FirstNodes(red, black, count, redFirst, blackFirst);
+    BatchNodes batch; // kept until StoreBand; freed here if an allocation fails
     batch.Red = redFirst[count];
-    batch.Offset.resize(static_cast<std::size_t>(blackFirst[count]));
-    batch.Distance.resize(batch.Offset.size());
+    batch.Offset.Allocate(this->Ledger, blackFirst[count], "the band nodes of a batch");
+    batch.Distance.Allocate(this->Ledger, blackFirst[count], "the band nodes' distances");
     arrays.RedFirst = redFirst.data();
     arrays.BlackFirst = blackFirst.data();
-    arrays.NodeOffset = batch.Offset.data();
-    arrays.NodeDistance = batch.Distance.data();
+    arrays.NodeOffset = batch.Offset.Data();
+    arrays.NodeDistance = batch.Distance.Data();
     For(0, count, BandCompactKernel{ arrays, constants }, 8);
+    this->Batches.push_back(std::move(batch));
   }
   void StoreBand(std::int64_t redCount, std::int64_t size, std::uint16_t* offset) override
   {
-    this->BandOffset.resize(static_cast<std::size_t>(size));
-    this->BandDistance.resize(static_cast<std::size_t>(size));
+    this->ReleaseBand();
+    this->BandOffset.Allocate(this->Ledger, size, "the band's node places");
+    this->BandDistance.Allocate(this->Ledger, size, "the distances");
     // Each batch's red nodes after the batches' before it, its black ones
     // likewise after all the red ones.
+    std::uint16_t* const bandOffset = this->BandOffset.Data();
+    double* const bandDistance = this->BandDistance.Data();
     std::int64_t red = 0, black = redCount;
     for (BatchNodes& batch : this->Batches)
     {
-      const std::int64_t blacks = static_cast<std::int64_t>(batch.Offset.size()) - batch.Red;
-      std::copy(batch.Offset.begin(), batch.Offset.begin() + batch.Red, this->BandOffset.begin() + red);
-      std::copy(batch.Offset.begin() + batch.Red, batch.Offset.end(), this->BandOffset.begin() + black);
-      std::copy(batch.Distance.begin(), batch.Distance.begin() + batch.Red, this->BandDistance.begin() + red);
-      std::copy(batch.Distance.begin() + batch.Red, batch.Distance.end(), this->BandDistance.begin() + black);
+      const std::int64_t nodes = batch.Offset.Size(), blacks = nodes - batch.Red;
+      const std::uint16_t* const batchOffset = batch.Offset.Data();
+      const double* const batchDistance = batch.Distance.Data();
+      std::copy(batchOffset, batchOffset + batch.Red, bandOffset + red);
+      std::copy(batchOffset + batch.Red, batchOffset + nodes, bandOffset + black);
+      std::copy(batchDistance, batchDistance + batch.Red, bandDistance + red);
+      std::copy(batchDistance + batch.Red, batchDistance + nodes, bandDistance + black);
       red += batch.Red;
       black += blacks;
-      Free(batch.Offset);
-      Free(batch.Distance);
+      batch.Offset.Reset();
+      batch.Distance.Reset();
     }
     std::vector<BatchNodes>().swap(this->Batches);
-    std::copy(this->BandOffset.begin(), this->BandOffset.end(), offset);
+    std::copy(bandOffset, bandOffset + size, offset);
     this->Band = NeighbourArrays();
     this->Band.Size = size;
     this->Band.RedCount = redCount;
-    this->Band.Offset = this->BandOffset.data();
-    this->Band.Distance = this->BandDistance.data();
+    this->Band.Offset = bandOffset;
+    this->Band.Distance = bandDistance;
   }
   void ConnectBand(const std::int64_t* bricks, const std::int64_t* redStart, const std::int64_t* blackStart,
     std::int64_t numberOfBricks, const NeighbourConstants& constants) override
   {
-    this->Adjacent.resize(static_cast<std::size_t>(6 * numberOfBricks));
-    this->BandNeighbor.resize(static_cast<std::size_t>(6 * this->Band.Size));
+    HostArray<std::int32_t> adjacent; // freed here, whatever happens
+    adjacent.Allocate(this->Ledger, 6 * numberOfBricks, "the adjacent bricks");
+    this->BandNeighbor.Allocate(this->Ledger, 6 * this->Band.Size, "the neighbour table");
     this->Band.NumberOfBricks = numberOfBricks;
     this->Band.Bricks = bricks; // the host's, read in place
     this->Band.RedStart = redStart;
     this->Band.BlackStart = blackStart;
-    this->Band.Adjacent = this->Adjacent.data();
-    this->Band.Neighbor = this->BandNeighbor.data();
+    this->Band.Adjacent = adjacent.Data();
+    this->Band.Neighbor = this->BandNeighbor.Data();
     For(0, numberOfBricks, AdjacentBricksKernel{ this->Band, constants }, 64);
     For(0, this->Band.Size, NeighboursKernel{ this->Band, constants });
-    std::vector<std::int32_t>().swap(this->Adjacent);
     this->Band.Bricks = this->Band.RedStart = this->Band.BlackStart = nullptr;
     this->Band.Adjacent = nullptr;
   }
   void DownloadBand(double* distance, std::uint32_t* neighbor) override
   {
-    std::copy(this->BandDistance.begin(), this->BandDistance.end(), distance);
-    std::copy(this->BandNeighbor.begin(), this->BandNeighbor.end(), neighbor);
+    std::copy(this->BandDistance.Data(), this->BandDistance.Data() + this->BandDistance.Size(), distance);
+    std::copy(this->BandNeighbor.Data(), this->BandNeighbor.Data() + this->BandNeighbor.Size(), neighbor);
   }
   void FreePoints() override
   {
     this->D = DistanceArrays();
-    Free(this->SortedPoints);
-    std::vector<std::int64_t>().swap(this->Bucket);
-    Free(this->BatchDistance);
-    std::vector<std::uint8_t>().swap(this->BatchCovered);
+    this->SortedPoints.Reset();
+    this->Bucket.Reset();
+    this->BatchDistance.Reset();
+    this->BatchCovered.Reset();
     std::vector<BatchNodes>().swap(this->Batches);
   }
 
@@ -275,12 +348,12 @@ public:
     // The band's arrays read in place; 8 bricks a task, as the CPU core's surface.
     this->K = band;
     this->KC = constants;
-    this->Psi.resize(static_cast<std::size_t>(512 * band.NumberOfBricks));
-    this->Cut.resize(static_cast<std::size_t>(CutWords * band.NumberOfCutBricks));
-    this->Above.resize(static_cast<std::size_t>(AboveRows * band.NumberOfCutBricks));
-    this->K.Psi = this->Psi.data();
-    this->K.Cut = this->Cut.data();
-    this->K.Above = this->Above.data();
+    this->Psi.Allocate(this->Ledger, 512 * band.NumberOfBricks, "psi");
+    this->Cut.Allocate(this->Ledger, CutWords * band.NumberOfCutBricks, "the cut edges");
+    this->Above.Allocate(this->Ledger, AboveRows * band.NumberOfCutBricks, "the corners' signs");
+    this->K.Psi = this->Psi.Data();
+    this->K.Cut = this->Cut.Data();
+    this->K.Above = this->Above.Data();
     this->K.VertexCount = vertices;
     this->K.TriangleCount = triangles;
     For(0, band.NumberOfBricks, PsiKernel{ this->K, this->KC }, 8);
@@ -297,9 +370,9 @@ public:
     For(0, this->K.NumberOfCutBricks, VerticesKernel{ this->K, this->KC }, 8);
     For(0, this->K.NumberOfCutBricks, TrianglesKernel{ this->K, this->KC }, 8);
     this->K = ContourArrays();
-    Free(this->Psi);
-    Free(this->Cut);
-    Free(this->Above);
+    this->Psi.Reset();
+    this->Cut.Reset();
+    this->Above.Reset();
   }
 
   void DenseBegin(const DenseArrays& arrays, const DenseConstants& constants) override
@@ -319,42 +392,58 @@ public:
   void DenseDownload() override { this->V = DenseArrays(); } // already in host memory
 
 private:
+  /// A band built before (StoreBand, ConnectBand) and not evolved.
+  void ReleaseBand()
+  {
+    this->BandOffset.Reset();
+    this->BandDistance.Reset();
+    this->BandNeighbor.Reset();
+    this->Band = NeighbourArrays();
+  }
+
+  HostLauncherHooks Hooks;
+  /// Counts the arrays below; declared first, so that it outlives them.
+  DeviceLedger Ledger;
   /// One batch's band nodes (BandNodes), its Red red ones first.
   struct BatchNodes
   {
     std::int64_t Red = 0;
-    UninitializedVector<std::uint16_t> Offset;
-    UninitializedVector<double> Distance;
+    HostArray<std::uint16_t> Offset;
+    HostArray<double> Distance;
   };
   std::vector<BatchNodes> Batches;
-  UninitializedVector<double> SortedPoints; ///< SortPoints', until FreePoints
-  std::vector<std::int64_t> Bucket;
+  HostArray<double> SortedPoints; ///< SortPoints', until FreePoints
+  HostArray<std::int64_t> Bucket;
   NeighbourArrays Band; ///< the band built here, until the evolution
-  UninitializedVector<std::uint16_t> BandOffset;
-  UninitializedVector<double> BandDistance;
-  UninitializedVector<std::uint32_t> BandNeighbor;
-  std::vector<std::int32_t> Adjacent;
+  HostArray<std::uint16_t> BandOffset;
+  HostArray<double> BandDistance;
+  HostArray<std::uint32_t> BandNeighbor;
   DenseArrays V;
   DenseConstants VC;
   ContourArrays K;
   ContourConstants KC;
-  UninitializedVector<float> Psi;
-  UninitializedVector<std::uint64_t> Cut;
-  UninitializedVector<std::uint16_t> Above;
+  HostArray<float> Psi;
+  HostArray<std::uint64_t> Cut;
+  HostArray<std::uint16_t> Above;
   DistanceArrays D;
-  UninitializedVector<double> BatchDistance;
-  std::vector<std::uint8_t> BatchCovered;
+  HostArray<double> BatchDistance;
+  HostArray<std::uint8_t> BatchCovered;
   EvolutionArrays A;
-  UninitializedVector<double> Phi;
-  UninitializedVector<double> Previous;
-  UninitializedVector<double> Coupling;
-  UninitializedVector<float> Decay;
+  HostArray<double> Phi;
+  HostArray<double> Previous;
+  HostArray<double> Coupling;
+  HostArray<float> Decay;
 };
 } // namespace
 
-std::unique_ptr<Launcher> MakeHostLauncher()
+double HostLauncherBytes()
 {
-  return std::unique_ptr<Launcher>(new HostLauncher());
+  return static_cast<double>(Allocated.load());
+}
+
+std::unique_ptr<Launcher> MakeHostLauncher(const HostLauncherHooks& hooks)
+{
+  return std::unique_ptr<Launcher>(new HostLauncher(hooks));
 }
 
 } // namespace device

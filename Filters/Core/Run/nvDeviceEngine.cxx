@@ -6,6 +6,14 @@
 // The points go up once; the band's distances and neighbour table are built
 // and stay there for the evolution; phi comes back once and stays there for
 // the dense volume and the surface.
+//
+// Before the band is built, and again before the evolution, the engine
+// compares what the stage will need on the device (nvDeviceMemory.h's
+// counts of the CUDA launcher's arrays) with the device's free memory
+// (Launcher::FreeBytes) and refuses a stage that does not fit, with the
+// bytes needed and free and what to change (CheckFreeMemory). Device GPU
+// does not fall back to the CPU (nvEngine.h's one rule); Automatic runs on
+// the CPU and never comes here.
 #include "nvEngine.h"
 
 #include "nvDeviceDistance.h"
@@ -63,6 +71,21 @@ public:
     // (nvDeviceDistance.h); the dense arrays, if asked for, from each
     // batch's distances there (nvVolumeKernels.h).
     return Guard([&]() {
+      // What the points' sort and the band's batches need, with the dense
+      // arrays, against the device's free memory (the band's own arrays
+      // come after: their size is known once the distances are).
+      const std::array<std::int64_t, 3> brickDims = BrickDimensions(grid);
+      const std::int64_t bricks = brickDims[0] * brickDims[1] * brickDims[2];
+      double denseBytes = 0.0;
+      if (dense)
+      {
+        const VolumeArrays& a = dense->Arrays;
+        denseBytes = device::DenseBytes((dense->End - dense->Begin) * grid.Dims[0] * grid.Dims[1],
+          (a.Phi ? 1 : 0) + (a.InitialPhi ? 1 : 0) + (a.Distance ? 1 : 0), a.Band != nullptr);
+      }
+      this->CheckFreeMemory(device::BandBuildBytes(static_cast<std::int64_t>(xyz.size() / 3), bricks,
+                              std::min(device::LauncherDistance::DefaultBatch, bricks), denseBytes),
+        "to build the narrow band");
       const auto sorting = StageTimes::Clock::now();
       const TruncatedDistance gridOnly(grid, scheme.Reach()); // the points are the device's
       device::LauncherDistance onDevice(
@@ -82,7 +105,13 @@ public:
   std::vector<StepReport> Evolve(NarrowBand& band, const Parameters& scheme, Halo*, const EngineContext& context) override
   {
     std::vector<StepReport> reports;
-    Guard([&]() { this->DevicePhi = device::Evolve(band, scheme, *this->Launcher, context.TheMonitor, reports); });
+    Guard([&]() {
+      // The evolution's arrays, on top of the band's, against the device's
+      // free memory.
+      this->CheckFreeMemory(device::EvolutionBytes(band.Size()),
+        "for the evolution on the band's " + std::to_string(band.Size()) + " nodes");
+      this->DevicePhi = device::Evolve(band, scheme, *this->Launcher, context.TheMonitor, reports);
+    });
     return reports;
   }
 
@@ -142,6 +171,20 @@ public:
   }
 
 private:
+  /// Refuses a stage that needs more than the device's free memory: an
+  /// EngineError with the bytes needed and free and what to change.
+  void CheckFreeMemory(double needed, const std::string& stage) const
+  {
+    const double free = this->Launcher->FreeBytes();
+    if (needed > free)
+    {
+      throw EngineError("The GPU has too little free memory " + stage + ": it needs about " +
+        device::ByteWords(needed) + ", and " + device::ByteWords(free) +
+        " is free. Choose a coarser grid (increase SampleSpacing or lower MaximumDimension), or choose "
+        "Device CPU or Automatic.");
+    }
+  }
+
   /// fn(), its device's failure the run's error (EngineError).
   template <typename Fn>
   static auto Guard(Fn&& fn) -> decltype(fn())

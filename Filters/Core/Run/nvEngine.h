@@ -13,9 +13,11 @@
 //                      for the tests (GpuKernels::OnHost).
 //
 // The one fallback rule: Device GPU does not fall back to the CPU. What the
-// device cannot do (DeviceCannot) and a device that fails stop the run with
-// an error that says so and to choose Device CPU or Automatic (which runs on
-// the CPU until the GPU has passed its tests on one).
+// device cannot do (DeviceCannot), a device that fails, and a device with
+// too little free memory for the band or the evolution (checked before
+// each, nvDeviceEngine.cxx) stop the run with an error that says so and to
+// choose Device CPU or Automatic (which runs on the CPU until the GPU has
+// passed its tests on one, so it never meets these checks).
 //
 // This header is the interface only: the run, the VTK filter and the Python
 // binding that include it compile no kernels.
