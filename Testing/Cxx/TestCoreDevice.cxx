@@ -28,6 +28,11 @@
 //                           host (nvDeviceKernels.h keeps nvcc from fusing
 //                           the distance's products and sums); the surfaces'
 //                           vertices within 0.05 h of the CPU's, closed.
+//   TestCoreDevice cuda small   one sphere through every kernel (the evolution
+//                           and its surface, the distances and the band,
+//                           the whole run with the Volume output): the case
+//                           scripts/test-gpu.sh runs under compute-sanitizer,
+//                           where kernels run many times slower.
 //
 // Device GPU where there is no GPU stops with an error that says why: the
 // build has no CUDA, or the machine no CUDA device.
@@ -591,6 +596,25 @@ void TestRuns()
   CompareRuns("sphere (l = 0.3, h = 0.02), the Volume output", nvtest::SpherePoints(8000, 0.5, center), settings, true);
 }
 
+/// One sphere through every kernel, the checks above (`small`).
+void TestSmall()
+{
+  const double center[3] = { 0.3, -0.1, 0.2 };
+  nv::Parameters p;
+  p.OffsetDistance = 0.1;
+  p.Spacing = 0.02;
+  p.MaximumNumberOfIterations = 3;
+  Compare("sphere, eq. (4), 3 steps", nvtest::SpherePoints(4000, 0.5, center), p);
+  p.OffsetDistance = 0.2;
+  CompareDistance("sphere (l = 10 h)", nvtest::SpherePoints(8000, 0.5, center), p, true);
+  nv::Settings settings;
+  settings.OffsetDistance = 0.3;
+  settings.SampleSpacing = 0.02;
+  settings.OutputVolume = true;
+  const double origin[3] = { 0.0, 0.0, 0.0 };
+  CompareRuns("sphere (l = 0.3, h = 0.02), the Volume output", nvtest::SpherePoints(8000, 0.5, origin), settings, true);
+}
+
 /// Device GPU where the GPU is missing: an error that says what is missing.
 void TestMissingGpu()
 {
@@ -760,6 +784,11 @@ void TestDeviceFails()
 int main(int argc, char* argv[])
 {
   OnGpu = argc > 1 && std::strcmp(argv[1], "cuda") == 0;
+  if (argc > 2 && std::strcmp(argv[2], "small") == 0)
+  {
+    TestSmall();
+    return nvtest::Result(NV_TEST_NAME);
+  }
   TestSphere();
   TestTorus();
   TestDistance();
