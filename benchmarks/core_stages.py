@@ -265,7 +265,7 @@ def parent(args):
     print_table(records)
     if missing:
         print()
-        print("Not in the table (the %g s timeout): %s" % (args.timeout, ", ".join(
+        print("Runs not made or stopped (the %g s timeout): %s" % (args.timeout, ", ".join(
             "%s with %d threads" % column for column in sorted(set(missing)))))
         sys.exit(1)
 
