@@ -117,9 +117,8 @@ trap stop_all INT TERM
 # is left. Returns COMMAND's status.
 step() {
   local name=$1 cap show=$3 file status started pid
+  cap=$(cap_of "$2")
   shift 3
-  cap=$(cap_of "$1")
-  shift
   file="$work/logs/${name//[^A-Za-z0-9._-]/-}.log"
   if [ "$cap" -lt 10 ]; then
     say "$name: skipped, the ${budget} s budget is spent"
@@ -269,12 +268,14 @@ build_core() {
 build_cap=$(cap_of "${NV_GPU_BUILD_SECONDS:-240}")
 say "the builds, side by side (at most ${build_cap} s each; logs: $work/logs/build-*.log)"
 started=$SECONDS
-timeout --kill-after=10 "$build_cap" bash -c "$(declare -f build_pip); $(declare -p venv work python jobs arch nvcc source_dir); build_pip" \
-  >"$work/logs/build-pip.log" 2>&1 &
+# Each writes its seconds where it ends (none when it is stopped: the cap).
+rm -f "$work/logs/build-pip.seconds" "$work/logs/build-core.seconds"
+timeout --kill-after=10 "$build_cap" bash -c "$(declare -f build_pip); $(declare -p venv work python jobs arch nvcc source_dir)
+  build_pip; status=\$?; echo \$SECONDS >'$work/logs/build-pip.seconds'; exit \$status" >"$work/logs/build-pip.log" 2>&1 &
 pip_job=$!
 running+=("$pip_job")
-timeout --kill-after=10 "$build_cap" bash -c "$(declare -f build_core); $(declare -p core_build jobs arch nvcc source_dir); build_core" \
-  >"$work/logs/build-core.log" 2>&1 &
+timeout --kill-after=10 "$build_cap" bash -c "$(declare -f build_core); $(declare -p core_build jobs arch nvcc source_dir)
+  build_core; status=\$?; echo \$SECONDS >'$work/logs/build-core.seconds'; exit \$status" >"$work/logs/build-core.log" 2>&1 &
 core_job=$!
 running+=("$core_job")
 wait "$pip_job"
@@ -286,14 +287,15 @@ cat "$work/logs/build-pip.log" "$work/logs/build-core.log" >>"$log"
 for which in pip core; do
   if [ "$which" = pip ]; then status=$pip_status; else status=$core_status; fi
   result=$(result_of "$status" "$build_cap")
+  took=$(cat "$work/logs/build-$which.seconds" 2>/dev/null || echo "$build_cap")
   if [ "$status" -ne 0 ]; then
     tail -15 "$work/logs/build-$which.log"
     say "the $which build: $result (its log: $work/logs/build-$which.log)"
   fi
   if [ "$which" = pip ]; then
-    record "build: pip package, NARROWVOLUME_CUDA=ON" "$result" $((SECONDS - started)) "the core and its binding, sm_$arch"
+    record "build: pip package, NARROWVOLUME_CUDA=ON" "$result" "$took" "the core and its binding, sm_$arch"
   else
-    record "build: TestCoreDevice, NARROWVOLUME_CORE_ONLY=ON NARROWVOLUME_CUDA=ON" "$result" $((SECONDS - started)) "no VTK"
+    record "build: TestCoreDevice, NARROWVOLUME_CORE_ONLY=ON NARROWVOLUME_CUDA=ON" "$result" "$took" "no VTK"
   fi
 done
 say "built in $((SECONDS - started)) s"
