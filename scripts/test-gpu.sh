@@ -100,6 +100,7 @@ result_of() { # result_of STATUS CAP
 # The steps' processes (each `timeout` leads a process group of its own):
 # Ctrl-C or a TERM stops them and the script.
 running=()
+# shellcheck disable=SC2317 # called by the trap
 stop_all() {
   local pid
   for pid in "${running[@]}"; do
@@ -244,6 +245,7 @@ done
 # --- 3. The builds, side by side, each capped.
 venv="$work/venv"
 core_build="$work/core"
+# shellcheck disable=SC2317 # called through bash -c below
 build_pip() {
   if [ ! -x "$venv/bin/python" ]; then
     # Without pip of its own: the system's pip, nanobind, scikit-build-core
@@ -260,6 +262,7 @@ build_pip() {
     --config-settings=cmake.define.CMAKE_CUDA_COMPILER="$nvcc" \
     --config-settings=build-dir="$work/pip-build" --config-settings=cmake.build-type=Release "$source_dir"
 }
+# shellcheck disable=SC2317 # called through bash -c below
 build_core() {
   cmake -S "$source_dir" -B "$core_build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DNARROWVOLUME_CORE_ONLY=ON \
     -DBUILD_TESTING=ON -DNARROWVOLUME_CUDA=ON -DCMAKE_CUDA_COMPILER="$nvcc" -DCMAKE_CUDA_ARCHITECTURES="$arch" &&
