@@ -54,6 +54,7 @@
 #include "nvVolume.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -286,6 +287,33 @@ bool Closed(const nv::SurfaceMesh& mesh, int& pieces)
   return !edges.empty();
 }
 
+/// The launcher's cut bricks (CutBricks: CutMarkKernel's marks listed by
+/// the point sort's kernels) against CutBricksOf's, made on one host thread
+/// with a sort: the same ascending list, on the host and on a GPU.
+void CompareCutBricks(const char* what, const nv::NarrowBand& band, nv::device::Launcher& launcher)
+{
+  nv::device::ContourArrays arrays;
+  arrays.NumberOfBricks = static_cast<std::int64_t>(band.Bricks.size());
+  arrays.Bricks = band.Bricks.data();
+  arrays.RedStart = band.RedStart.data();
+  arrays.BlackStart = band.BlackStart.data();
+  arrays.Inside = band.Inside.data();
+  nv::device::ContourConstants constants;
+  const std::array<std::int64_t, 3> dims = nv::BrickDimensions(band.GridNodes);
+  for (int a = 0; a < 3; ++a)
+  {
+    constants.GridDims[a] = band.GridNodes.Dims[a];
+    constants.BrickDims[a] = dims[a];
+  }
+  std::vector<std::int64_t> device;
+  launcher.CutBricks(arrays, constants, device);
+  const std::vector<std::int64_t> host = nv::CutBricksOf(band);
+  std::printf("%s, the cut bricks by the kernels on %s: %zu of the band's %zu bricks, CutBricksOf's list: %s\n", what,
+    launcher.Name().c_str(), device.size(), band.Bricks.size(), device == host ? "yes" : "NO");
+  NV_CHECK(!host.empty());
+  NV_CHECK(device == host);
+}
+
 /// The device back end's surface (nvDeviceSurface.h: the surface kernels of
 /// nvSurfaceKernels.h) from the device's phi against the CPU core's
 /// (ContourBricks on BandField) from the CPU's: through the host launcher
@@ -294,6 +322,7 @@ bool Closed(const nv::SurfaceMesh& mesh, int& pieces)
 void CompareSurface(const char* what, const nv::NarrowBand& band, const nv::BandValues& cpuPhi,
   const nv::BandValues& devicePhi, const nv::Parameters& parameters, nv::device::Launcher& launcher)
 {
+  CompareCutBricks(what, band, launcher);
   nv::SurfaceMesh cpu, device;
   NV_CHECK(nv::ContourBricks(band.GridNodes, nv::BandField(band, cpuPhi, parameters), cpu));
   nv::ContourOnDevice(band.GridNodes, band, devicePhi, parameters, launcher, device);
@@ -725,6 +754,11 @@ public:
   }
   void DownloadBand(double* distance, std::uint32_t* neighbor) override { this->Host->DownloadBand(distance, neighbor); }
   void FreePoints() override { this->Host->FreePoints(); }
+  void CutBricks(const nv::device::ContourArrays& band, const nv::device::ContourConstants& c,
+    std::vector<std::int64_t>& cut) override
+  {
+    this->Host->CutBricks(band, c, cut);
+  }
   void ContourCounts(const nv::device::ContourArrays& band, std::int64_t numberOfNodes,
     const nv::device::ContourConstants& c, std::int32_t* vertices, std::int32_t* triangles) override
   {

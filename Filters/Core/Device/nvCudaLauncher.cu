@@ -431,6 +431,40 @@ public:
     this->ReleaseBatchNodes();
   }
 
+  void CutBricks(const ContourArrays& band, const ContourConstants& constants, std::vector<std::int64_t>& cut) override
+  {
+    // Up: the band's bricks, their starts and inside bits; here: a mark a
+    // grid brick and the chunks' sums; back: the chunks' sums and the list.
+    // All freed below, through ScratchMemory (ContourCounts uploads the band again).
+    ContourArrays k;
+    const std::int64_t bricks = band.NumberOfBricks;
+    k.NumberOfBricks = bricks;
+    k.Bricks = this->ToDevice(band.Bricks, bricks, "the band's bricks, for the cut bricks");
+    k.RedStart = this->ToDevice(band.RedStart, bricks + 1, "the band's red starts, for the cut bricks");
+    k.BlackStart = this->ToDevice(band.BlackStart, bricks + 1, "the band's black starts, for the cut bricks");
+    k.Inside = this->ToDevice(band.Inside, 8 * bricks, "the band's inside bits, for the cut bricks");
+    PointArrays list;
+    list.NumberOfBricks = constants.BrickDims[0] * constants.BrickDims[1] * constants.BrickDims[2];
+    const std::int64_t chunks = (list.NumberOfBricks + ChunkBricks - 1) / ChunkBricks;
+    list.Reached = this->Scratch<std::uint8_t>(list.NumberOfBricks, "the cut bricks' marks");
+    list.ChunkCount = this->Scratch<std::int64_t>(chunks, "the cut bricks' chunk sums");
+    std::int64_t* chunkFirst = this->Scratch<std::int64_t>(chunks, "the cut bricks' chunk starts");
+    list.ChunkFirst = chunkFirst;
+    Check(cudaMemset(list.Reached, 0, static_cast<std::size_t>(list.NumberOfBricks)), "clearing the cut bricks' marks");
+    this->For(0, bricks, CutMarkKernel{ k, constants, list.Reached });
+    this->For(0, chunks, ChunkSumKernel<std::uint8_t>{ list, list.Reached });
+    std::vector<std::int64_t> sums(static_cast<std::size_t>(chunks)), firsts;
+    const std::int64_t total = this->ChunkFirsts(list.ChunkCount, chunkFirst, sums, firsts);
+    list.ReachList = this->Scratch<std::int64_t>(total, "the cut bricks");
+    this->For(0, chunks, ReachListKernel{ list });
+    cut.resize(static_cast<std::size_t>(total));
+    if (total > 0)
+    {
+      Check(cudaMemcpy(cut.data(), list.ReachList, sizeof(std::int64_t) * total, cudaMemcpyDeviceToHost),
+        "copying the cut bricks back");
+    }
+    this->ReleaseScratch();
+  }
   void ContourCounts(const ContourArrays& band, std::int64_t numberOfNodes, const ContourConstants& constants,
     std::int32_t* vertices, std::int32_t* triangles) override
   {
