@@ -107,21 +107,17 @@ class DeviceMemory:
 
     def __init__(self):
         self.how, self.peak, self.before, self._stop, self._thread, self._smi = None, 0.0, 0.0, None, None, None
-        try:
-            import cupy  # noqa: F401 (optional)
-            cupy.cuda.runtime.memGetInfo()
-            self.how = "cudaMemGetInfo (CuPy)"
-        except Exception:  # no CuPy, or no device
+        for how in ("cudaMemGetInfo (CuPy)", "nvidia-smi"):
+            self.how = how
             try:
-                subprocess.run(["nvidia-smi", "--query-gpu=memory.used", "--format=csv,noheader,nounits"],
-                               capture_output=True, timeout=10, check=True)
-                self.how = "nvidia-smi"
+                self.used_mb()  # CuPy missing, no device, or no number: the next way
+                return
             except Exception:
                 self.how = None
 
     def used_mb(self):
         if self.how and self.how.startswith("cudaMemGetInfo"):
-            import cupy
+            import cupy  # optional: the first way, where it is installed
             free, total = cupy.cuda.runtime.memGetInfo()
             return (total - free) / 2.0 ** 20
         result = subprocess.run(["nvidia-smi", "--query-gpu=memory.used", "--format=csv,noheader,nounits",
