@@ -111,10 +111,16 @@ build_wheel() {
   # Windows: the import libraries (FindPython's Development.Module wants the
   # version's own even when the module links python3.lib).
   [ -d "$headers/libs" ] && defines+=("-Ccmake.define.Python_LIBRARY=$headers/libs/python$nodot.lib")
+  # Python 3.9's Python.h includes <crypt.h> on Linux, which zig's glibc
+  # headers lack (libcrypt is apart); nothing here calls crypt().
+  local flags=""
+  case $target in *-linux-*) flags="-isystem $work/compat" ;; esac
+  mkdir -p "$work/compat"
+  echo "/* crypt(3) is not used: the empty header Python 3.9's Python.h includes. */" >"$work/compat/crypt.h"
   say "$name: cp$nodot-$abi-$platform (zig $target)"
   local raw="$work/raw/$name"
   rm -rf "$raw" && mkdir -p "$raw"
-  NV_ZIG_TARGET="$target" NV_ZIG_TOOLS="$tools" \
+  NV_ZIG_TARGET="$target" NV_ZIG_TOOLS="$tools" CFLAGS="$flags" CXXFLAGS="$flags" \
     "$venv/bin/python" -m pip wheel "$source_dir" --no-deps --no-build-isolation -w "$raw" -q \
     -Cbuild-dir="$work/cmake/$name" \
     -Ccmake.define.CMAKE_TOOLCHAIN_FILE="$source_dir/cmake/zig-toolchain.cmake" \

@@ -28,6 +28,11 @@
 //                           host (nvDeviceKernels.h keeps nvcc from fusing
 //                           the distance's products and sums); the surfaces'
 //                           vertices within 0.05 h of the CPU's, closed.
+//   TestCoreDevice cuda small   one sphere through every kernel (the evolution
+//                           and its surface, the distances and the band,
+//                           the whole run with the Volume output): the case
+//                           scripts/test-gpu.sh runs under compute-sanitizer,
+//                           where kernels run many times slower.
 //
 // Device GPU where there is no GPU stops with an error that says why: the
 // build has no CUDA, or the machine no CUDA device. A device that fails, or
@@ -54,6 +59,7 @@
 #include "nvVolume.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -286,6 +292,33 @@ bool Closed(const nv::SurfaceMesh& mesh, int& pieces)
   return !edges.empty();
 }
 
+/// The launcher's cut bricks (CutBricks: CutMarkKernel's marks listed by
+/// the point sort's kernels) against CutBricksOf's, made on one host thread
+/// with a sort: the same ascending list, on the host and on a GPU.
+void CompareCutBricks(const char* what, const nv::NarrowBand& band, nv::device::Launcher& launcher)
+{
+  nv::device::ContourArrays arrays;
+  arrays.NumberOfBricks = static_cast<std::int64_t>(band.Bricks.size());
+  arrays.Bricks = band.Bricks.data();
+  arrays.RedStart = band.RedStart.data();
+  arrays.BlackStart = band.BlackStart.data();
+  arrays.Inside = band.Inside.data();
+  nv::device::ContourConstants constants;
+  const std::array<std::int64_t, 3> dims = nv::BrickDimensions(band.GridNodes);
+  for (int a = 0; a < 3; ++a)
+  {
+    constants.GridDims[a] = band.GridNodes.Dims[a];
+    constants.BrickDims[a] = dims[a];
+  }
+  std::vector<std::int64_t> device;
+  launcher.CutBricks(arrays, constants, device);
+  const std::vector<std::int64_t> host = nv::CutBricksOf(band);
+  std::printf("%s, the cut bricks by the kernels on %s: %zu of the band's %zu bricks, CutBricksOf's list: %s\n", what,
+    launcher.Name().c_str(), device.size(), band.Bricks.size(), device == host ? "yes" : "NO");
+  NV_CHECK(!host.empty());
+  NV_CHECK(device == host);
+}
+
 /// The device back end's surface (nvDeviceSurface.h: the surface kernels of
 /// nvSurfaceKernels.h) from the device's phi against the CPU core's
 /// (ContourBricks on BandField) from the CPU's: through the host launcher
@@ -294,6 +327,7 @@ bool Closed(const nv::SurfaceMesh& mesh, int& pieces)
 void CompareSurface(const char* what, const nv::NarrowBand& band, const nv::BandValues& cpuPhi,
   const nv::BandValues& devicePhi, const nv::Parameters& parameters, nv::device::Launcher& launcher)
 {
+  CompareCutBricks(what, band, launcher);
   nv::SurfaceMesh cpu, device;
   NV_CHECK(nv::ContourBricks(band.GridNodes, nv::BandField(band, cpuPhi, parameters), cpu));
   nv::ContourOnDevice(band.GridNodes, band, devicePhi, parameters, launcher, device);
@@ -596,6 +630,25 @@ void TestRuns()
   CompareRuns("sphere (l = 0.3, h = 0.02), the Volume output", nvtest::SpherePoints(8000, 0.5, center), settings, true);
 }
 
+/// One sphere through every kernel, the checks above (`small`).
+void TestSmall()
+{
+  const double center[3] = { 0.3, -0.1, 0.2 };
+  nv::Parameters p;
+  p.OffsetDistance = 0.1;
+  p.Spacing = 0.02;
+  p.MaximumNumberOfIterations = 3;
+  Compare("sphere, eq. (4), 3 steps", nvtest::SpherePoints(4000, 0.5, center), p);
+  p.OffsetDistance = 0.2;
+  CompareDistance("sphere (l = 10 h)", nvtest::SpherePoints(8000, 0.5, center), p, true);
+  nv::Settings settings;
+  settings.OffsetDistance = 0.3;
+  settings.SampleSpacing = 0.02;
+  settings.OutputVolume = true;
+  const double origin[3] = { 0.0, 0.0, 0.0 };
+  CompareRuns("sphere (l = 0.3, h = 0.02), the Volume output", nvtest::SpherePoints(8000, 0.5, origin), settings, true);
+}
+
 /// Device GPU where the GPU is missing: an error that says what is missing.
 void TestMissingGpu()
 {
@@ -715,6 +768,11 @@ public:
   }
   void DownloadBand(double* distance, std::uint32_t* neighbor) override { this->Host->DownloadBand(distance, neighbor); }
   void FreePoints() override { this->Host->FreePoints(); }
+  void CutBricks(const nv::device::ContourArrays& band, const nv::device::ContourConstants& c,
+    std::vector<std::int64_t>& cut) override
+  {
+    this->Host->CutBricks(band, c, cut);
+  }
   void ContourCounts(const nv::device::ContourArrays& band, std::int64_t numberOfNodes,
     const nv::device::ContourConstants& c, std::int32_t* vertices, std::int32_t* triangles) override
   {
@@ -995,6 +1053,11 @@ void TestMemoryChecks()
 int main(int argc, char* argv[])
 {
   OnGpu = argc > 1 && std::strcmp(argv[1], "cuda") == 0;
+  if (argc > 2 && std::strcmp(argv[2], "small") == 0)
+  {
+    TestSmall();
+    return nvtest::Result(NV_TEST_NAME);
+  }
   TestSphere();
   TestTorus();
   TestDistance();

@@ -495,6 +495,41 @@ public:
     this->Batches.clear();
   }
 
+  void CutBricks(const ContourArrays& band, const ContourConstants& constants, std::vector<std::int64_t>& cut) override
+  {
+    // Up: the band's bricks, their starts and inside bits; here: a mark a
+    // grid brick and the chunks' sums; back: the chunks' sums and the list.
+    // All freed on the way out (ContourCounts uploads the band again).
+    Scratch scratch;
+    ContourArrays k;
+    const std::int64_t bricks = band.NumberOfBricks;
+    k.NumberOfBricks = bricks;
+    k.Bricks = scratch.Copy(this->Ledger, band.Bricks, bricks, "the band's bricks, for the cut bricks");
+    k.RedStart = scratch.Copy(this->Ledger, band.RedStart, bricks + 1, "the band's red starts, for the cut bricks");
+    k.BlackStart =
+      scratch.Copy(this->Ledger, band.BlackStart, bricks + 1, "the band's black starts, for the cut bricks");
+    k.Inside = scratch.Copy(this->Ledger, band.Inside, 8 * bricks, "the band's inside bits, for the cut bricks");
+    PointArrays list;
+    list.NumberOfBricks = constants.BrickDims[0] * constants.BrickDims[1] * constants.BrickDims[2];
+    const std::int64_t chunks = (list.NumberOfBricks + ChunkBricks - 1) / ChunkBricks;
+    list.Reached = scratch.Get<std::uint8_t>(this->Ledger, list.NumberOfBricks, "the cut bricks' marks");
+    list.ChunkCount = scratch.Get<std::int64_t>(this->Ledger, chunks, "the cut bricks' chunk sums");
+    std::int64_t* chunkFirst = scratch.Get<std::int64_t>(this->Ledger, chunks, "the cut bricks' chunk starts");
+    list.ChunkFirst = chunkFirst;
+    Check(cudaMemset(list.Reached, 0, static_cast<std::size_t>(list.NumberOfBricks)), "clearing the cut bricks' marks");
+    this->Launch("CutMarkKernel", 0, bricks, CutMarkKernel{ k, constants, list.Reached });
+    this->Launch("ChunkSumKernel (the cut bricks)", 0, chunks, ChunkSumKernel<std::uint8_t>{ list, list.Reached });
+    std::vector<std::int64_t> sums(static_cast<std::size_t>(chunks)), firsts;
+    const std::int64_t total = this->ChunkFirsts(list.ChunkCount, chunkFirst, sums, firsts);
+    list.ReachList = scratch.Get<std::int64_t>(this->Ledger, total, "the cut bricks");
+    this->Launch("ReachListKernel (the cut bricks)", 0, chunks, ReachListKernel{ list });
+    cut.resize(static_cast<std::size_t>(total));
+    if (total > 0)
+    {
+      Check(cudaMemcpy(cut.data(), list.ReachList, sizeof(std::int64_t) * total, cudaMemcpyDeviceToHost),
+        "copying the cut bricks back");
+    }
+  }
   void ContourCounts(const ContourArrays& band, std::int64_t numberOfNodes, const ContourConstants& constants,
     std::int32_t* vertices, std::int32_t* triangles) override
   {

@@ -130,6 +130,14 @@ class SurfaceLauncher
 {
 public:
   virtual ~SurfaceLauncher();
+  /// The cut bricks of `band` (host memory: its Bricks, RedStart,
+  /// BlackStart and Inside of NumberOfBricks bricks), ascending, into `cut`:
+  /// CutMarkKernel on the band's bricks marks them, a byte a brick of the
+  /// grid, and the marks are listed in order as the point sort's reached
+  /// bricks (ChunkSumKernel, ChunkStarts on the host, ReachListKernel).
+  /// CutBricksOf's list (nvDeviceSurface.h), made by kernels.
+  virtual void CutBricks(const ContourArrays& band, const ContourConstants& constants,
+    std::vector<std::int64_t>& cut) = 0;
   /// Holds the band's arrays, phi and the cut bricks of `band` (host memory:
   /// Bricks, RedStart, BlackStart, Inside of NumberOfBricks bricks, Offset
   /// and Phi of `numberOfNodes` nodes, CutBricks, Cases; the host launcher

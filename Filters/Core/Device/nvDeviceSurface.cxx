@@ -58,8 +58,6 @@ void ContourOnDevice(const Grid& grid, const NarrowBand& band, const BandValues&
   constants.Scale = psi.GetScale();
   constants.Cap = psi.GetCap();
 
-  const std::vector<std::int64_t> cutBricks = CutBricksOf(band);
-  const std::int64_t cut = static_cast<std::int64_t>(cutBricks.size());
   device::ContourArrays arrays;
   arrays.NumberOfBricks = static_cast<std::int64_t>(band.Bricks.size());
   arrays.Bricks = band.Bricks.data();
@@ -68,6 +66,10 @@ void ContourOnDevice(const Grid& grid, const NarrowBand& band, const BandValues&
   arrays.Offset = band.Offset.data();
   arrays.Inside = band.Inside.data();
   arrays.Phi = phi.data();
+  // The cut bricks by the launcher's kernels: CutBricksOf's list.
+  std::vector<std::int64_t> cutBricks;
+  launcher.CutBricks(arrays, constants, cutBricks);
+  const std::int64_t cut = static_cast<std::int64_t>(cutBricks.size());
   arrays.NumberOfCutBricks = cut;
   arrays.CutBricks = cutBricks.data();
   arrays.Cases = &MarchingCubesTable();

@@ -7,12 +7,14 @@
 // host launcher gives its vertices, normals and triangles bit for bit
 // (TestCoreDevice); on a GPU the vertices may differ in the last bits.
 //
-// What runs where: the per-brick and per-cell work (psi from phi, the
-// corners' signs, the cut edges, the vertices and normals, the triangles)
-// in the kernels; on the host, the list of cut bricks (the band's bricks
-// where psi varies and the bricks just below them) before, the sums of the
-// counts (each cut brick's first vertex and triangle) between, and the
-// sink's arrays after. Serial runs only, as the device back end.
+// What runs where: the list of cut bricks (the band's bricks where psi
+// varies and the bricks just below them, marked and listed in ascending
+// order), the per-brick and per-cell work (psi from phi, the corners'
+// signs, the cut edges, the vertices and normals, the triangles) in the
+// kernels; on the host, the sums of the chunks' marks while the cut bricks
+// are listed, the sums of the counts (each cut brick's first vertex and
+// triangle) between, and the sink's arrays after. Serial runs only, as the
+// device back end.
 #ifndef nvDeviceSurface_h
 #define nvDeviceSurface_h
 
@@ -32,7 +34,9 @@ namespace nv
 /// distance varies (band nodes, or nodes on both sides of the shell) and
 /// the bricks just below them on any axis, whose cells reach their first
 /// nodes (nvSurface.cxx's CutBricks, over the whole grid at once; the
-/// bricks where psi varies: UniformBandBrick, nvSurfaceField.h).
+/// bricks where psi varies: UniformBandBrick, nvSurfaceField.h). On one
+/// host thread with a sort: the list the launchers' CutBricks make with
+/// kernels, which TestCoreDevice compares with it.
 std::vector<std::int64_t> CutBricksOf(const NarrowBand& band);
 
 /**

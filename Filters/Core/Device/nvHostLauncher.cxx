@@ -342,6 +342,23 @@ public:
     std::vector<BatchNodes>().swap(this->Batches);
   }
 
+  void CutBricks(const ContourArrays& band, const ContourConstants& constants, std::vector<std::int64_t>& cut) override
+  {
+    // The band's arrays read in place; a mark a grid brick, listed in order.
+    PointArrays list;
+    list.NumberOfBricks = constants.BrickDims[0] * constants.BrickDims[1] * constants.BrickDims[2];
+    const std::int64_t chunks = (list.NumberOfBricks + ChunkBricks - 1) / ChunkBricks;
+    std::vector<std::uint8_t> marks(static_cast<std::size_t>(list.NumberOfBricks), 0);
+    std::vector<std::int64_t> sums(static_cast<std::size_t>(chunks)), first;
+    list.Reached = marks.data();
+    list.ChunkCount = sums.data();
+    For(0, band.NumberOfBricks, CutMarkKernel{ band, constants, marks.data() }, 64);
+    For(0, chunks, ChunkSumKernel<std::uint8_t>{ list, marks.data() }, 64);
+    cut.resize(static_cast<std::size_t>(ChunkStarts(sums, first)));
+    list.ChunkFirst = first.data();
+    list.ReachList = cut.data();
+    For(0, chunks, ReachListKernel{ list }, 64);
+  }
   void ContourCounts(const ContourArrays& band, std::int64_t, const ContourConstants& constants,
     std::int32_t* vertices, std::int32_t* triangles) override
   {

@@ -14,6 +14,14 @@
 // works on, where it reads psi (the band's bricks, found by a binary
 // search) and where it writes:
 //
+//   CutMarkKernel     a band brick where psi varies (not UniformBrick):
+//                     itself and the bricks just below it on any axis,
+//                     whose cells reach its first nodes, marked in a byte
+//                     a grid brick; the marks are then listed in ascending
+//                     order as the point sort's reached bricks
+//                     (nvPointSort.h's ChunkSumKernel, ChunkStarts on the
+//                     host, ReachListKernel): the cut bricks, CutBricksOf's
+//                     list;
 //   PsiKernel         a band brick: the implied distance
 //                       psi = sqrt(2) xi atanh(phi)   (the inverse of eq. 2)
 //                     at its 512 nodes, clamped to +-eta/2, the band's
@@ -35,10 +43,10 @@
 //                     the order of its cut edges.
 //
 // Between the counts and the geometry the host adds up the counts (the
-// first vertex and triangle of each cut brick, in brick order); it also
-// lists the cut bricks (the bricks where psi varies and those just below
-// them, sorted) before the kernels run. Both are compactions of a few bytes
-// a brick; the per-node and per-cell work is in the kernels.
+// first vertex and triangle of each cut brick, in brick order), and it adds
+// up the chunks' counts of marked bricks while the cut bricks are listed:
+// compactions of a few bytes a brick; the per-node and per-cell work is in
+// the kernels.
 //
 // The CUDA launcher runs them a brick a thread (the kernels' call operators
 // take a brick); CutCellsKernel and VerticesKernel each hold the brick's
@@ -140,6 +148,37 @@ struct PsiKernel
   }
 };
 
+
+/// Band brick a, where psi varies: the cut bricks it makes marked (Marks, a
+/// byte a grid brick, cleared before; marks of 1 from several threads at
+/// once): itself and the bricks just below it on each axis within the grid,
+/// as CutBricksOf (nvDeviceSurface.h).
+struct CutMarkKernel
+{
+  ContourArrays A;
+  ContourConstants C;
+  std::uint8_t* Marks;
+  NV_HD void operator()(std::int64_t a) const
+  {
+    bool inside;
+    if (UniformBrick(A.Inside + 8 * a, A.RedStart[a], A.RedStart[a + 1], A.BlackStart[a], A.BlackStart[a + 1], inside))
+    {
+      return;
+    }
+    std::int64_t b[3];
+    BrickAt(C.BrickDims, A.Bricks[a], b);
+    for (int dz = 0; dz < 2 && b[2] - dz >= 0; ++dz)
+    {
+      for (int dy = 0; dy < 2 && b[1] - dy >= 0; ++dy)
+      {
+        for (int dx = 0; dx < 2 && b[0] - dx >= 0; ++dx)
+        {
+          Mark(Marks + (b[0] - dx) + C.BrickDims[0] * ((b[1] - dy) + C.BrickDims[1] * (b[2] - dz)));
+        }
+      }
+    }
+  }
+};
 
 /// The bricks around a brick for its window (nvSurfaceTerms.h's
 /// FillWindow): a band brick's psi, -eta/2 on a brick no point reaches

@@ -122,15 +122,13 @@ private:
  * Whether psi takes one value on band brick a: no band nodes, and all its
  * nodes on one side of the shell (`inside`: which). The bricks where it
  * varies are those BandField::Layer lists and the device's surface contours
- * (CutBricksOf, Device/nvDeviceSurface.h).
+ * (CutMarkKernel, Device/nvSurfaceKernels.h). UniformBrick's test
+ * (nvSurfaceTerms.h), on the band's arrays.
  */
 inline bool UniformBandBrick(const NarrowBand& band, std::int64_t a, bool& inside)
 {
-  const std::uint64_t* words = &band.Inside[8 * a];
-  inside = std::all_of(words, words + 8, [](std::uint64_t w) { return w == ~std::uint64_t(0); });
-  const bool outside = std::all_of(words, words + 8, [](std::uint64_t w) { return w == 0; });
-  const bool banded = band.RedStart[a + 1] > band.RedStart[a] || band.BlackStart[a + 1] > band.BlackStart[a];
-  return !banded && (inside || outside);
+  return UniformBrick(&band.Inside[8 * a], band.RedStart[a], band.RedStart[a + 1], band.BlackStart[a],
+    band.BlackStart[a + 1], inside);
 }
 
 /// Bricks per axis of a grid.

@@ -35,8 +35,8 @@
 //
 // Still written on each side, each for its own data flow: the list of cut
 // bricks (the CPU core's a brick layer at a time from its ring, the
-// device's for the whole band at once, CutBricksOf; the test of a brick
-// where psi varies is one, UniformBandBrick), where a window's bricks are
+// device's for the whole band at once, CutMarkKernel; the test of a brick
+// where psi varies is one, UniformBrick), where a window's bricks are
 // read from (RingBricks, BandBricks), the numbering of the vertices (the
 // CPU core counts them serially as it goes and keeps each word's count
 // before it; the host adds up the kernels' counts, and a kernel counts a
@@ -71,6 +71,26 @@ constexpr int CellEdges = 12;
 /// triangles. Three points inside three different edges of a cube are never
 /// on one line, so every triangle then has an area.
 constexpr double VertexMargin = 1e-3;
+
+/// Whether a band brick has one value of psi: none of its nodes in the
+/// band ([redBegin, redEnd) and [blackBegin, blackEnd) empty) and all of
+/// them on one side of the shell (its 8 words of inside bits all ones,
+/// `inside`, or all zeros). The CPU core's layers skip such a brick
+/// (BandField, UniformBandBrick) and the device's cut bricks leave it out
+/// (CutMarkKernel).
+NV_HD inline bool UniformBrick(const std::uint64_t* words, std::int64_t redBegin, std::int64_t redEnd,
+  std::int64_t blackBegin, std::int64_t blackEnd, bool& inside)
+{
+  bool all = true, none = true;
+  for (int w = 0; w < 8; ++w)
+  {
+    all = all && words[w] == ~std::uint64_t(0);
+    none = none && words[w] == 0;
+  }
+  inside = all;
+  const bool banded = redEnd > redBegin || blackEnd > blackBegin;
+  return !banded && (all || none);
+}
 
 /// psi of phi, clamped to [-cap, cap] (cap = eta/2); its sign is phi's.
 /// scale = sqrt(2) xi; atanh(phi) = log((1 + phi) / (1 - phi)) / 2, the
