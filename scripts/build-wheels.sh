@@ -120,13 +120,14 @@ build_wheel() {
   say "$name: cp$nodot-$abi-$platform (zig $target)"
   local raw="$work/raw/$name"
   rm -rf "$raw" && mkdir -p "$raw"
-  NV_ZIG_TARGET="$target" NV_ZIG_TOOLS="$tools" CFLAGS="$flags" CXXFLAGS="$flags" \
+  NV_ZIG_TARGET="$target" NV_ZIG_TOOLS="$tools" \
     "$venv/bin/python" -m pip wheel "$source_dir" --no-deps --no-build-isolation -w "$raw" -q \
     -Cbuild-dir="$work/cmake/$name" \
     -Ccmake.define.CMAKE_TOOLCHAIN_FILE="$source_dir/cmake/zig-toolchain.cmake" \
     -Ccmake.define.NARROWVOLUME_TARGET_PYTHON="$python_version" \
     -Ccmake.define.NARROWVOLUME_EXTENSION_SUFFIX="$suffix" \
     -Ccmake.define.Python_INCLUDE_DIR="$headers/include" \
+    -Ccmake.define.CMAKE_C_FLAGS="$flags" -Ccmake.define.CMAKE_CXX_FLAGS="$flags" \
     "${defines[@]}"
   local built
   built=$(ls "$raw"/*.whl)

@@ -5,8 +5,8 @@
 # x86_64 machine can (not in the 15-minute suite: about 30 minutes, most of
 # it the first build of every wheel):
 #
-#   linux x86_64   every Python 3.9 to 3.13 found on PATH (python3.X): a fresh
-#                  venv, the manylinux wheel and vtk from PyPI, and the
+#   linux x86_64   every Python 3.9 to 3.13 found (python3.X): a fresh venv,
+#                  the manylinux wheel, vtk and pyvista (3.10+) from PyPI, and the
 #                  package's tests (Testing/Python/package/test_python_api.py,
 #                  against the C++ filter's record where the build folder has it)
 #   ParaView       the cp311 wheel's Python plugin in Debian's pvpython, by the
@@ -51,18 +51,37 @@ fi
 mkdir -p "$tests"
 probe="$source_dir/Testing/Python/package/core_probe.py"
 
+# find_python MINOR: a python3.MINOR that runs (PATH, /usr/bin, pyenv's
+# versions: a pyenv shim on PATH may refuse a version not selected).
+find_python() {
+  local candidate
+  for candidate in "$(command -v "python3.$1")" "/usr/bin/python3.$1" "/usr/local/bin/python3.$1" \
+    "${PYENV_ROOT:-$HOME/.pyenv}"/versions/3."$1".*/bin/python3."$1"; do
+    [ -x "$candidate" ] && "$candidate" -c "import sys" 2>/dev/null && { echo "$candidate"; return 0; }
+  done
+  return 1
+}
+
 # --- Linux x86_64: the package's tests on every Python found.
 cache="$tests/pip-cache"
-reference="$build/Testing/pip/reference"
-[ -d "$reference" ] || reference=""
+# The C++ filter's record, for the bit-for-bit comparisons: made now by the
+# build's PipReference test (pvpython), so that it is this tree's.
+reference=""
+if [ -f "$build/CTestTestfile.cmake" ] && (cd "$build" && ctest -R '^PipReference$' -FA '.*' >"$tests/reference.log" 2>&1); then
+  reference="$build/Testing/pip/reference"
+else
+  say "no record of the C++ filter (PipReference in $build): the wheels' comparisons with it are skipped"
+fi
 for minor in 9 10 11 12 13; do
-  python=$(command -v "python3.$minor") || { row "linux x86_64 Python 3.$minor" skipped "no python3.$minor on PATH"; continue; }
+  python=$(find_python "$minor") || { row "linux x86_64 Python 3.$minor" skipped "no python3.$minor found"; continue; }
   name="py3$minor"
   rm -rf "$tests/$name" && mkdir -p "$tests/$name/dist"
   cp "$wheelhouse"/narrowvolume-*-manylinux*x86_64*.whl "$tests/$name/dist/"
   log="$tests/$name.log"
-  if "$python" "$source_dir/Testing/Python/package/pip_venv.py" wheels "$cache" vtk >"$log" 2>&1 &&
-    "$python" "$source_dir/Testing/Python/package/pip_venv.py" test env "$cache" "$tests/$name" "$reference" vtk >>"$log" 2>&1; then
+  # pyvista (the accessor's tests) where a pyvista the package takes exists: 3.10 and later.
+  requirements="vtk pyvista>=0.48"; [ "$minor" = 9 ] && requirements="vtk"
+  if "$python" "$source_dir/Testing/Python/package/pip_venv.py" wheels "$cache" "$requirements" >"$log" 2>&1 &&
+    "$python" "$source_dir/Testing/Python/package/pip_venv.py" test env "$cache" "$tests/$name" "$reference" $requirements >>"$log" 2>&1; then
     result=passed
   else
     result=FAILED
@@ -75,21 +94,23 @@ for minor in 9 10 11 12 13; do
 done
 
 # --- ParaView: the cp311 wheel's Python plugin in Debian's pvpython.
-if [ -f "$build/CTestTestfile.cmake" ] && (cd "$build" && ctest -N -R '^PythonPlugin$' | grep -q "Total Tests: 1"); then
+if [ -f "$build/CTestTestfile.cmake" ] && (cd "$build" && ctest -N -R '^PythonPlugin$') | grep ": PythonPlugin$" >/dev/null; then
   rm -rf "$tests/plugin" && mkdir -p "$tests/plugin"
   cp "$wheelhouse"/narrowvolume-*-cp311-*manylinux*x86_64*.whl "$tests/plugin/"
   log="$tests/plugin.log"
   # The build's PythonPlugin test, given this wheel instead of PipWheel's.
   if (cd "$build" && ctest -R '^PythonPlugin$' --show-only=json-v1) | python3 -c '
 import json, os, subprocess, sys
-test = json.load(sys.stdin)["tests"][0]
+test = [t for t in json.load(sys.stdin)["tests"] if t["name"] == "PythonPlugin"][0]
 command = test["command"]
 command[command.index("--wheel-dir") + 1] = sys.argv[1]
-env = dict(os.environ)
+env, cwd = dict(os.environ), sys.argv[2]
 for p in test.get("properties", []):
     if p["name"] == "ENVIRONMENT":
         env.update(v.split("=", 1) for v in p["value"])
-sys.exit(subprocess.run(command, env=env, cwd=sys.argv[2]).returncode)' "$tests/plugin" "$build/Testing" >"$log" 2>&1; then
+    elif p["name"] == "WORKING_DIRECTORY":
+        cwd = p["value"]
+sys.exit(subprocess.run(command, env=env, cwd=cwd).returncode)' "$tests/plugin" "$build/Testing" >"$log" 2>&1; then
     result=passed
   else
     result=FAILED
@@ -156,10 +177,11 @@ sys.exit(1 if different or a["error"] else 0)
 EOF
   then return 0; else return 1; fi
 }
-native_probe() { # native_probe WHEEL_GLOB: the probe on the x86_64 wheel of the same Python
-  local wheel
-  wheel=$(ls $wheelhouse/$1 | head -1)
-  python3 "$probe" "$(module_of "$wheel")" >"$tests/native.json" 2>&1
+native_probe() { # native_probe VERSION TAG: the probe on the x86_64 wheel of that Python
+  local wheel python
+  wheel=$(ls "$wheelhouse"/narrowvolume-*-"$2"-*manylinux*x86_64*.whl | head -1)
+  python=$(find_python "${1#3.}") || { echo "no python$1 found for the x86_64 wheel" >"$tests/native.json"; return; }
+  "$python" "$probe" "$(module_of "$wheel")" >"$tests/native.json" 2>&1
 }
 
 # aarch64 under qemu-user, with Debian's aarch64 C library.
@@ -172,7 +194,7 @@ if install_missing qemu-aarch64 qemu-user libc6-arm64-cross && [ -d /usr/aarch64
     log="$tests/aarch64-$tag.json"
     PYTHONHOME="$python_dir" LD_LIBRARY_PATH="$python_dir/lib:$python_dir" \
       qemu-aarch64 -L /usr/aarch64-linux-gnu "$python_dir/bin/python$version" "$probe" "$(module_of "$wheel")" >"$log" 2>&1
-    native_probe "narrowvolume-*-$tag-*manylinux*x86_64*.whl"
+    native_probe "$version" "$tag"
     if words=$(compare aarch64 "$log" "$tests/native.json" 2>&1); then
       row "linux aarch64 $tag (qemu-user)" passed "$words"
     else
@@ -211,7 +233,7 @@ EOF
     fi
     # Through a pipe: wine gives Python no valid handle for a file.
     (cd "$python_dir" && timeout 600 "$wine" python.exe core_probe.py "Z:$module" 2>&1 | cat >"$log")
-    native_probe "narrowvolume-*-$tag-*manylinux*x86_64*.whl"
+    native_probe "$version" "$tag"
     if words=$(compare windows "$log" "$tests/native.json" 2>&1); then
       row "windows amd64 $tag (wine)" passed "$words"
     else
