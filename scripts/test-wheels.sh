@@ -2,8 +2,8 @@
 # SPDX-FileCopyrightText: Copyright (c) 2026 the NarrowVolume developers
 # SPDX-License-Identifier: BSD-3-Clause
 # The binary wheels (scripts/build-wheels.sh), tested as far as one Linux
-# x86_64 machine can (not in the 15-minute suite: about 30 minutes, most of
-# it the first build of every wheel):
+# x86_64 machine can (not in the 15-minute suite: the tests take about 12
+# minutes on 2 cores after the build, most of it pip and pytest):
 #
 #   linux x86_64   every Python 3.9 to 3.13 found (python3.X): a fresh venv,
 #                  the manylinux wheel, vtk and pyvista (3.10+) from PyPI, and the
