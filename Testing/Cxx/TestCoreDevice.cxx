@@ -976,6 +976,46 @@ double BytesAt(const std::string& text, std::size_t from)
   return std::string(unit) == "GB" ? value * 1e9 : std::string(unit) == "MB" ? value * 1e6 : -1.0;
 }
 
+/// The evolution's arrays other than phi come once the distances are let go
+/// (InitialField): on a band built by the host launcher, the ledger's peak
+/// through the evolution is the band's bytes (neighbours, distances, node
+/// places: 34 a node) plus 18 bytes a node and eq. (5)'s two values, 52 a
+/// node, not plus 26 (phi, phi^n, the coupling and the decay over the
+/// distances: 60 a node), and EvolutionBytes says so. The outputs stay the
+/// CPU's bit for bit (Compare, CompareRuns).
+void TestEvolutionPeak()
+{
+  if (OnGpu)
+  {
+    return;
+  }
+  const double center[3] = { 0.3, -0.1, 0.2 };
+  const std::vector<double> xyz = nvtest::SpherePoints(4000, 0.5, center);
+  nv::Parameters p;
+  p.OffsetDistance = 0.1;
+  p.Spacing = 0.02;
+  p.MaximumNumberOfIterations = 2;
+  std::unique_ptr<nv::device::Launcher> launcher = nv::device::MakeHostLauncher();
+  const nv::Grid grid = GridOf(xyz, p);
+  const nv::TruncatedDistance gridOnly(grid, p.Reach());
+  nv::NarrowBand band;
+  {
+    nv::device::LauncherDistance device(
+      gridOnly, xyz.data(), static_cast<std::int64_t>(xyz.size() / 3), *launcher, 200);
+    band = nv::BuildNarrowBand(gridOnly, p, nullptr, nullptr, nullptr, nullptr, &device);
+  }
+  const double n = static_cast<double>(band.Size());
+  const double held = launcher->HeldBytes(), before = launcher->DeviceBytes();
+  NV_CHECK(n > 0.0 && before < held + 18.0 * n); // the band's construction does not hide the evolution's peak
+  std::vector<nv::StepReport> reports;
+  const nv::BandValues phi = nv::device::Evolve(band, p, *launcher, nullptr, reports);
+  launcher->ReleaseEvolution();
+  const double peak = launcher->DeviceBytes();
+  std::printf("evolution peak: %.2f bytes a node (the band's %.2f)\n", peak / n, held / n);
+  NV_CHECK(peak == held + nv::device::EvolutionBytes(band.Size()));
+  NV_CHECK(phi.size() == band.Size() + 2);
+}
+
 /// The checks of the device's free memory (Run/nvDeviceEngine.cxx): before
 /// the band (the host launcher reporting 0.1 MB free) and before the
 /// evolution (1 kB free once the band is stored), a refusal with the bytes
@@ -1066,6 +1106,7 @@ int main(int argc, char* argv[])
   TestDeviceCannot();
   TestDeviceFails();
   TestFailedAllocation();
+  TestEvolutionPeak();
   TestMemoryChecks();
   return nvtest::Result(NV_TEST_NAME);
 }

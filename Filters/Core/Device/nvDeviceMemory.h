@@ -159,7 +159,9 @@ private:
 double BandBuildBytes(std::int64_t points, std::int64_t bricks, std::int64_t batch, double dense);
 /// The evolution's arrays on a band of `nodes` nodes, on top of the band's
 /// (Upload): phi with its two slots, phi^n, the coupling (8 bytes a node
-/// each) and the decay (4).
+/// each) and the decay (4), less the distances (8) and node places (2),
+/// let go before phi^n, the coupling and the decay come (InitialField):
+/// 18 bytes a node and 16 (the band's 34 and these, 52 a node at the peak).
 double EvolutionBytes(std::int64_t nodes);
 
 /// The dense arrays of `nodes` nodes: 4 bytes a node for each of phi,
