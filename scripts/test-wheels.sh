@@ -26,6 +26,9 @@
 #   NV_WHEELS_SKIP_BUILD=1 ./scripts/test-wheels.sh
 #   NV_BUILD=build ./scripts/test-wheels.sh  # the build folder with pvpython's tests
 #
+# The build folder (./scripts/build.sh) must be this tree's: it makes the C++
+# filter's record the wheels are compared with, and runs the plugin's test.
+#
 # Installs qemu-user, libc6-arm64-cross and wine64 from Debian's packages
 # when they are missing (root or sudo).
 set -uo pipefail
