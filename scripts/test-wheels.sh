@@ -180,6 +180,15 @@ sys.exit(1 if different or a["error"] else 0)
 EOF
   then return 0; else return 1; fi
 }
+judge() { # judge WHAT LOG VERSION TAG: the emulated probe's row, against the x86_64 wheel's
+  native_probe "$3" "$4"
+  local words
+  if words=$(compare "$1" "$2" "$tests/native.json" 2>&1); then
+    row "$1" passed "$words"
+  else
+    row "$1" FAILED "$words $(tail -c 300 "$2")"
+  fi
+}
 native_probe() { # native_probe VERSION TAG: the probe on the x86_64 wheel of that Python
   local wheel python
   wheel=$(ls "$wheelhouse"/narrowvolume-*-"$2"-*manylinux*x86_64*.whl | head -1)
@@ -197,12 +206,7 @@ if install_missing qemu-aarch64 qemu-user libc6-arm64-cross && [ -d /usr/aarch64
     log="$tests/aarch64-$tag.json"
     PYTHONHOME="$python_dir" LD_LIBRARY_PATH="$python_dir/lib:$python_dir" \
       qemu-aarch64 -L /usr/aarch64-linux-gnu "$python_dir/bin/python$version" "$probe" "$(module_of "$wheel")" >"$log" 2>&1
-    native_probe "$version" "$tag"
-    if words=$(compare aarch64 "$log" "$tests/native.json" 2>&1); then
-      row "linux aarch64 $tag (qemu-user)" passed "$words"
-    else
-      row "linux aarch64 $tag (qemu-user)" FAILED "$words $(tail -c 300 "$log")"
-    fi
+    judge "linux aarch64 $tag (qemu-user)" "$log" "$version" "$tag"
   done
 else
   row "linux aarch64 (qemu-user)" skipped "qemu-user or libc6-arm64-cross could not be installed"
@@ -236,12 +240,7 @@ EOF
     fi
     # Through a pipe: wine gives Python no valid handle for a file.
     (cd "$python_dir" && timeout 600 "$wine" python.exe core_probe.py "Z:$module" 2>&1 | cat >"$log")
-    native_probe "$version" "$tag"
-    if words=$(compare windows "$log" "$tests/native.json" 2>&1); then
-      row "windows amd64 $tag (wine)" passed "$words"
-    else
-      row "windows amd64 $tag (wine)" FAILED "$words $(tail -c 300 "$log")"
-    fi
+    judge "windows amd64 $tag (wine)" "$log" "$version" "$tag"
   done
   row "windows amd64 package (wine)" "not run" "numpy aborts under Debian's wine 8: the Python layer is not tested on Windows here"
 else
