@@ -145,18 +145,12 @@ __global__ void ForEach(std::int64_t begin, std::int64_t end, Kernel kernel)
   }
 }
 
-/// partial[blockIdx.x] = the max (Max = true) or the sum of kernel(s) over this block's nodes.
-template <bool Max, typename Kernel>
-__global__ void Reduce(std::int64_t begin, std::int64_t end, Kernel kernel, double* partial)
+/// The max (Max = true) or the sum of the block's threads' values, in a
+/// fixed order (a tree over the threads): thread 0's result.
+template <bool Max>
+__device__ double BlockReduce(double value)
 {
   __shared__ double cache[Threads];
-  const std::int64_t stride = static_cast<std::int64_t>(gridDim.x) * blockDim.x;
-  double value = 0.0;
-  for (std::int64_t s = begin + static_cast<std::int64_t>(blockIdx.x) * blockDim.x + threadIdx.x; s < end; s += stride)
-  {
-    const double v = kernel(s);
-    value = Max ? fmax(value, v) : value + v;
-  }
   cache[threadIdx.x] = value;
   __syncthreads();
   for (int width = Threads / 2; width > 0; width /= 2)
@@ -168,9 +162,41 @@ __global__ void Reduce(std::int64_t begin, std::int64_t end, Kernel kernel, doub
     }
     __syncthreads();
   }
+  return cache[0];
+}
+
+/// partial[blockIdx.x] = the max (Max = true) or the sum of kernel(s) over this block's nodes.
+template <bool Max, typename Kernel>
+__global__ void Reduce(std::int64_t begin, std::int64_t end, Kernel kernel, double* partial)
+{
+  const std::int64_t stride = static_cast<std::int64_t>(gridDim.x) * blockDim.x;
+  double value = 0.0;
+  for (std::int64_t s = begin + static_cast<std::int64_t>(blockIdx.x) * blockDim.x + threadIdx.x; s < end; s += stride)
+  {
+    const double v = kernel(s);
+    value = Max ? fmax(value, v) : value + v;
+  }
+  const double block = BlockReduce<Max>(value);
   if (threadIdx.x == 0)
   {
-    partial[blockIdx.x] = cache[0];
+    partial[blockIdx.x] = block;
+  }
+}
+
+/// *result = the max or the sum of partial[0 .. count), by one block: the
+/// reduction's last stage on the device, so that one value comes back.
+template <bool Max>
+__global__ void FinishReduce(const double* partial, int count, double* result)
+{
+  double value = 0.0;
+  for (int b = static_cast<int>(threadIdx.x); b < count; b += static_cast<int>(blockDim.x))
+  {
+    value = Max ? fmax(value, partial[b]) : value + partial[b];
+  }
+  const double block = BlockReduce<Max>(value);
+  if (threadIdx.x == 0)
+  {
+    *result = block;
   }
 }
 
@@ -184,8 +210,8 @@ public:
     cudaDeviceProp properties;
     Check(cudaGetDeviceProperties(&properties, device), "cudaGetDeviceProperties");
     this->DeviceName = properties.name;
-    this->Partial.Allocate(this->Ledger, MaximumBlocks, "the reductions' partials");
-    this->HostPartial.resize(MaximumBlocks);
+    this->Partial.Allocate(this->Ledger, Slots * MaximumBlocks, "the reductions' partials");
+    this->Results.Allocate(this->Ledger, Slots, "the reductions' results");
   }
   // The arrays free their memory themselves (errors ignored: the launcher
   // may go while a DeviceError unwinds).
@@ -259,18 +285,22 @@ public:
   {
     this->Launch("KeepPreviousKernel", 0, this->A.Size, KeepPreviousKernel{ this->A });
   }
-  double Relax(std::int64_t begin, std::int64_t end, double omega) override
+  double Sweep(const std::int64_t red[2], const std::int64_t black[2], double omega) override
   {
-    return this->Reduction<true>("RelaxKernel", begin, end, RelaxKernel{ this->A, omega });
+    this->Reduction<true>("RelaxKernel (red nodes)", red[0], red[1], RelaxKernel{ this->A, omega }, 0);
+    this->Reduction<true>("RelaxKernel (black nodes)", black[0], black[1], RelaxKernel{ this->A, omega }, 1);
+    double change[2];
+    this->ReadResults(2, change, "the sweep's change");
+    return std::max(change[0], change[1]);
   }
   void React() override { this->Launch("ReactKernel", 0, this->A.Size, ReactKernel{ this->A }); }
-  double ChangeSquared(std::int64_t begin, std::int64_t end) override
+  void StepSums(const std::int64_t red[2], const std::int64_t black[2], double sums[4]) override
   {
-    return this->Reduction<false>("ChangeSquaredKernel", begin, end, ChangeSquaredKernel{ this->A });
-  }
-  double NormSquared(std::int64_t begin, std::int64_t end) override
-  {
-    return this->Reduction<false>("NormSquaredKernel", begin, end, NormSquaredKernel{ this->A });
+    this->Reduction<false>("ChangeSquaredKernel (red nodes)", red[0], red[1], ChangeSquaredKernel{ this->A }, 0);
+    this->Reduction<false>("ChangeSquaredKernel (black nodes)", black[0], black[1], ChangeSquaredKernel{ this->A }, 1);
+    this->Reduction<false>("NormSquaredKernel (red nodes)", red[0], red[1], NormSquaredKernel{ this->A }, 2);
+    this->Reduction<false>("NormSquaredKernel (black nodes)", black[0], black[1], NormSquaredKernel{ this->A }, 3);
+    this->ReadResults(4, sums, "the step's change and norm");
   }
   void Download(UninitializedVector<double>& phi) override
   {
@@ -738,28 +768,33 @@ private:
       }
     }
   }
+  /// The max or the sum of kernel over [begin, end) into Results[slot], on
+  /// the device (0 for an empty range); ReadResults brings it back.
   template <bool Max, typename Kernel>
-  double Reduction(const char* name, std::int64_t begin, std::int64_t end, const Kernel& kernel)
+  void Reduction(const char* name, std::int64_t begin, std::int64_t end, const Kernel& kernel, int slot)
   {
+    double* partial = this->Partial.Data() + static_cast<std::int64_t>(slot) * MaximumBlocks;
+    double* result = this->Results.Data() + slot;
     if (end <= begin)
     {
-      return 0.0;
+      Check(cudaMemset(result, 0, sizeof(double)), std::string("clearing ") + name + "'s result");
+      return;
     }
     const int blocks = BlocksFor(end - begin);
-    Reduce<Max><<<blocks, Threads>>>(begin, end, kernel, this->Partial.Data());
+    Reduce<Max><<<blocks, Threads>>>(begin, end, kernel, partial);
     Check(cudaGetLastError(), std::string("launching ") + name);
+    FinishReduce<Max><<<1, Threads>>>(partial, blocks, result);
+    Check(cudaGetLastError(), std::string("launching ") + name + "'s last stage");
     if (this->Synchronous)
     {
       Check(cudaDeviceSynchronize(), std::string("running ") + name);
     }
-    Check(cudaMemcpy(this->HostPartial.data(), this->Partial.Data(), sizeof(double) * blocks, cudaMemcpyDeviceToHost),
-      std::string("copying ") + name + "'s partial results back");
-    double result = 0.0;
-    for (int b = 0; b < blocks; ++b)
-    {
-      result = Max ? std::max(result, this->HostPartial[b]) : result + this->HostPartial[b];
-    }
-    return result;
+  }
+  /// Results[0 .. count) into host memory: one small read, after the kernels.
+  void ReadResults(int count, double* values, const char* what)
+  {
+    Check(cudaMemcpy(values, this->Results.Data(), sizeof(double) * count, cudaMemcpyDeviceToHost),
+      std::string("copying ") + what + " back");
   }
 
   std::string DeviceName;
@@ -825,8 +860,9 @@ private:
   Array<double> OutPoints;
   Array<float> OutNormals;
   Array<long long> OutTriangles;
-  Array<double> Partial;
-  std::vector<double> HostPartial;
+  static constexpr int Slots = 4; ///< reductions read back together (StepSums)
+  Array<double> Partial;          ///< MaximumBlocks per slot
+  Array<double> Results;          ///< one value per slot
 };
 } // namespace
 

@@ -23,8 +23,8 @@ EvolutionConstants ConstantsOf(const Parameters& parameters)
   return constants;
 }
 
-BandValues Evolve(const NarrowBand& band, const Parameters& parameters, EvolutionLauncher& launcher,
-  Monitor* monitor, std::vector<StepReport>& reports)
+std::vector<StepReport> Evolve(
+  const NarrowBand& band, const Parameters& parameters, EvolutionLauncher& launcher, Monitor* monitor)
 {
   const std::int64_t size = band.Size();
   const EvolutionConstants constants = ConstantsOf(parameters);
@@ -39,32 +39,28 @@ BandValues Evolve(const NarrowBand& band, const Parameters& parameters, Evolutio
   std::int64_t red[2], black[2];
   band.OwnedNodes(true, red[0], red[1]);
   band.OwnedNodes(false, black[0], black[1]);
-  reports = RunTimeSteps(
+  return RunTimeSteps(
     parameters, monitor,
     [&](bool) {
       StepReport report;
       launcher.KeepPrevious();
       report.Sweeps = SweepUntilSettled( // (10)-(11)
-        [&](double omega) {
-          const double changeRed = launcher.Relax(red[0], red[1], omega);
-          return std::max(changeRed, launcher.Relax(black[0], black[1], omega));
-        },
-        parameters, relaxation, report.SweepChange);
+        [&](double omega) { return launcher.Sweep(red, black, omega); }, parameters, relaxation,
+        report.SweepChange);
       launcher.React(); // (12)
       // The relative change of section 4, summed red then black as the CPU
       // core's solver does (Previous still holds phi^n).
+      double sums[4];
+      launcher.StepSums(red, black, sums);
       double change2 = 0.0, norm2 = 0.0;
-      change2 += launcher.ChangeSquared(red[0], red[1]);
-      change2 += launcher.ChangeSquared(black[0], black[1]);
-      norm2 += launcher.NormSquared(red[0], red[1]);
-      norm2 += launcher.NormSquared(black[0], black[1]);
+      change2 += sums[0];
+      change2 += sums[1];
+      norm2 += sums[2];
+      norm2 += sums[3];
       report.RelativeChange = RelativeChange(change2, norm2);
       return report;
     },
     [](bool stop) { return stop; });
-  BandValues phi;
-  launcher.Download(phi);
-  return phi;
 }
 
 } // namespace device

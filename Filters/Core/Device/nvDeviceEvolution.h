@@ -33,12 +33,14 @@ EvolutionConstants ConstantsOf(const Parameters& parameters);
  * where the launcher built the band and `band` has no neighbour table, the
  * launcher's) with `launcher`: phi^0, then time steps until the relative change drops below
  * ConvergenceTolerance (if > 0) or MaximumNumberOfIterations steps are done,
- * or the monitor asks to stop. Returns phi at the band's nodes and the two
- * Dirichlet slots (L + 2 values, as AllenCahnSolver::GetPhi); `reports`
- * gets one report a step. Throws DeviceError when the device fails.
+ * or the monitor asks to stop. Returns one report a step. phi stays on the
+ * device, for the dense volume and the surface there; launcher.Download
+ * brings it to the host (L + 2 values, as AllenCahnSolver::GetPhi) only
+ * where something on the host reads it (the device engine: Engine::Phi).
+ * Throws DeviceError when the device fails.
  */
-BandValues Evolve(const NarrowBand& band, const Parameters& parameters, EvolutionLauncher& launcher,
-  Monitor* monitor, std::vector<StepReport>& reports);
+std::vector<StepReport> Evolve(
+  const NarrowBand& band, const Parameters& parameters, EvolutionLauncher& launcher, Monitor* monitor);
 
 } // namespace device
 } // namespace nv

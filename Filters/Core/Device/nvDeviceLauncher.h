@@ -61,18 +61,25 @@ public:
   virtual void Coefficients(const EvolutionConstants& constants) = 0;
   /// KeepPreviousKernel on all nodes.
   virtual void KeepPrevious() = 0;
-  /// RelaxKernel on the nodes [begin, end) of one colour; the max |change|.
-  virtual double Relax(std::int64_t begin, std::int64_t end, double omega) = 0;
+  /// One Gauss-Seidel sweep: RelaxKernel on the red nodes [red[0], red[1]),
+  /// then on the black ones [black[0], black[1]); the max |change| of both,
+  /// the sweep's one read from the device.
+  virtual double Sweep(const std::int64_t red[2], const std::int64_t black[2], double omega) = 0;
   /// ReactKernel on all nodes.
   virtual void React() = 0;
-  /// The sums of ChangeSquaredKernel and NormSquaredKernel over [begin, end).
-  virtual double ChangeSquared(std::int64_t begin, std::int64_t end) = 0;
-  virtual double NormSquared(std::int64_t begin, std::int64_t end) = 0;
-  /// phi's size + 2 values into `phi` (host memory), after the last kernel.
+  /// The sums of section 4's stopping rule, in one read from the device:
+  /// ChangeSquaredKernel over the red nodes, then over the black ones
+  /// (sums[0], sums[1]), NormSquaredKernel likewise (sums[2], sums[3]).
+  virtual void StepSums(const std::int64_t red[2], const std::int64_t black[2], double sums[4]) = 0;
+  /// A copy of phi's size + 2 values into `phi` (host memory), after the
+  /// last kernel, before or after ReleaseEvolution; phi stays held here.
+  /// Only where the host reads phi: the device's dense volume and surface
+  /// take it where it is.
   virtual void Download(UninitializedVector<double>& phi) = 0;
-  /// After Download: the evolution's arrays freed but phi, which stays on
-  /// the device for the dense volume (DenseBand) and the surface
-  /// (ContourCounts), so that it does not go up again.
+  /// After the evolution: its arrays freed but phi, which stays on the
+  /// device for the dense volume (DenseBand), the surface (ContourCounts)
+  /// and Download, so that it does not go up again (until the launcher
+  /// goes).
   virtual void ReleaseEvolution() = 0;
 };
 
@@ -142,8 +149,9 @@ public:
   /// Bricks, RedStart, BlackStart, Inside of NumberOfBricks bricks, Offset
   /// and Phi of `numberOfNodes` nodes, CutBricks, Cases; the host launcher
   /// reads them in place, and they must then outlive it until
-  /// ContourGeometry; the CUDA launcher takes the evolution's phi where it
-  /// still holds it, ReleaseEvolution, instead of copying Phi), runs PsiKernel on the band's bricks and
+  /// ContourGeometry; both launchers take the evolution's phi where they
+  /// still hold it, ReleaseEvolution, instead of reading Phi, which may
+  /// then be null), runs PsiKernel on the band's bricks and
   /// CutCellsKernel on the cut bricks; `vertices` and `triangles` (host
   /// memory, one a cut brick) get their counts back.
   virtual void ContourCounts(const ContourArrays& band, std::int64_t numberOfNodes, const ContourConstants& constants,
@@ -175,8 +183,8 @@ public:
   /// DistanceBricks.
   virtual void DenseBricks(std::int64_t count) = 0;
   /// DenseBandKernel on the band's `numberOfBricks` bricks (`band`: host
-  /// memory; its Phi, `numberOfNodes` values, is read by the host launcher,
-  /// while the CUDA launcher takes the evolution's phi, still on the device).
+  /// memory; its Phi, `numberOfNodes` values, is read only where the
+  /// launcher no longer holds the evolution's phi, and may then be null).
   virtual void DenseBand(const DenseBandArrays& band, std::int64_t numberOfBricks, std::int64_t numberOfNodes) = 0;
   /// The dense arrays into the host memory given to DenseBegin; then freed.
   virtual void DenseDownload() = 0;

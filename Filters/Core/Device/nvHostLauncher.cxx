@@ -184,39 +184,43 @@ public:
     For(0, this->A.Size, CoefficientsKernel{ this->A, constants });
   }
   void KeepPrevious() override { For(0, this->A.Size, KeepPreviousKernel{ this->A }); }
-  double Relax(std::int64_t begin, std::int64_t end, double omega) override
+  double Sweep(const std::int64_t red[2], const std::int64_t black[2], double omega) override
   {
-    return Max(begin, end, RelaxKernel{ this->A, omega });
+    const double changeRed = Max(red[0], red[1], RelaxKernel{ this->A, omega });
+    return std::max(changeRed, Max(black[0], black[1], RelaxKernel{ this->A, omega }));
   }
   void React() override { For(0, this->A.Size, ReactKernel{ this->A }); }
-  double ChangeSquared(std::int64_t begin, std::int64_t end) override
+  void StepSums(const std::int64_t red[2], const std::int64_t black[2], double sums[4]) override
   {
-    return Sum(begin, end, ChangeSquaredKernel{ this->A });
-  }
-  double NormSquared(std::int64_t begin, std::int64_t end) override
-  {
-    return Sum(begin, end, NormSquaredKernel{ this->A });
+    sums[0] = Sum(red[0], red[1], ChangeSquaredKernel{ this->A });
+    sums[1] = Sum(black[0], black[1], ChangeSquaredKernel{ this->A });
+    sums[2] = Sum(red[0], red[1], NormSquaredKernel{ this->A });
+    sums[3] = Sum(black[0], black[1], NormSquaredKernel{ this->A });
   }
   void Download(UninitializedVector<double>& phi) override
   {
     const std::int64_t values = this->Phi.Size();
     phi.resize(static_cast<std::size_t>(values));
-    std::copy(this->Phi.Data(), this->Phi.Data() + values, phi.data());
-    this->Phi.Reset(); // the host launcher reads the caller's copy from now on
-    this->A = EvolutionArrays();
-    this->BandNeighbor.Reset(); // if the band was built here
-    this->Band = NeighbourArrays();
+    const double* held = this->Phi.Data();
+    double* out = phi.data();
+    ParallelFor(0, values, 1 << 16, [&](std::int64_t begin, std::int64_t end) {
+      std::copy(held + begin, held + end, out + begin);
+    });
   }
 
   void ReleaseEvolution() override
   {
-    // phi went to the caller (Download); the host launcher reads it there.
-    this->Phi.Reset();
+    // phi stays, as on the GPU: the dense volume, the surface and Download
+    // read it here.
     this->Previous.Reset();
     this->Coupling.Reset();
     this->Decay.Reset();
-    this->ReleaseBand(); // a band built here and not evolved
-    this->A = EvolutionArrays();
+    this->ReleaseBand(); // the band built here, evolved or not
+    this->Band = NeighbourArrays();
+    EvolutionArrays kept;
+    kept.Size = this->A.Size;
+    kept.Phi = this->Phi.Data();
+    this->A = kept;
   }
   void SortPoints(const double* cloud, std::int64_t numberOfPoints, const PointConstants& constants,
     std::vector<std::int64_t>& reached) override
@@ -362,11 +366,13 @@ public:
     list.ReachList = cut.data();
     For(0, chunks, ReachListKernel{ list }, 64);
   }
-  void ContourCounts(const ContourArrays& band, std::int64_t, const ContourConstants& constants,
+  void ContourCounts(const ContourArrays& band, std::int64_t numberOfNodes, const ContourConstants& constants,
     std::int32_t* vertices, std::int32_t* triangles) override
   {
-    // The band's arrays read in place; 8 bricks a task, as the CPU core's surface.
+    // The band's arrays read in place, phi where the evolution left it; 8
+    // bricks a task, as the CPU core's surface.
     this->K = band;
+    this->K.Phi = this->HeldPhi(band.Phi, numberOfNodes);
     this->KC = constants;
     this->Psi.Allocate(this->Ledger, 512 * band.NumberOfBricks, "psi");
     this->Cut.Allocate(this->Ledger, CutWords * band.NumberOfCutBricks, "the cut edges");
@@ -405,14 +411,23 @@ public:
   {
     For(0, count * 512, DenseBrickKernel{ this->D, this->V, this->VC }, 8 * 512);
   }
-  void DenseBand(const DenseBandArrays& band, std::int64_t numberOfBricks, std::int64_t) override
+  void DenseBand(const DenseBandArrays& band, std::int64_t numberOfBricks, std::int64_t numberOfNodes) override
   {
-    For(0, numberOfBricks, DenseBandKernel{ band, this->V, this->VC }, 32);
+    DenseBandArrays arrays = band;
+    arrays.Phi = this->HeldPhi(band.Phi, numberOfNodes);
+    For(0, numberOfBricks, DenseBandKernel{ arrays, this->V, this->VC }, 32);
   }
   void DenseDownload() override { this->V = DenseArrays(); } // already in host memory
 
 private:
-  /// A band built before (StoreBand, ConnectBand) and not evolved.
+  /// The evolution's phi where this launcher still holds it for a band of
+  /// `nodes` nodes, else `given` (the caller's copy).
+  const double* HeldPhi(const double* given, std::int64_t nodes) const
+  {
+    return this->Phi.Data() && this->A.Size == nodes ? this->Phi.Data() : given;
+  }
+
+  /// A band built before (StoreBand, ConnectBand), evolved or not.
   void ReleaseBand()
   {
     this->BandOffset.Reset();

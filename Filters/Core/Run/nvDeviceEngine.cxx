@@ -4,8 +4,9 @@
 // and the surface by the device back end's kernels (Device/), on a GPU or
 // through the host launcher. One process, no PreserveOffset (DeviceCannot).
 // The points go up once; the band's distances and neighbour table are built
-// and stay there for the evolution; phi comes back once and stays there for
-// the dense volume and the surface.
+// and stay there for the evolution; phi stays there for the dense volume and
+// the surface, and comes back only if the host reads it (Phi: the hole
+// probe, a caller's GetPhi), once.
 //
 // Before the band is built, and again before the evolution, the engine
 // compares what the stage will need on the device (nvDeviceMemory.h's
@@ -110,7 +111,8 @@ public:
       // free memory.
       this->CheckFreeMemory(device::EvolutionBytes(band.Size()),
         "for the evolution on the band's " + std::to_string(band.Size()) + " nodes");
-      this->DevicePhi = device::Evolve(band, scheme, *this->Launcher, context.TheMonitor, reports);
+      reports = device::Evolve(band, scheme, *this->Launcher, context.TheMonitor);
+      this->Evolved = true;
     });
     return reports;
   }
@@ -128,7 +130,7 @@ public:
         arrays.RedStart = band.RedStart.data();
         arrays.BlackStart = band.BlackStart.data();
         arrays.Offset = band.Offset.data();
-        arrays.Phi = this->DevicePhi.data();
+        arrays.Phi = nullptr; // the launcher's own
         this->Launcher->DenseBand(arrays, static_cast<std::int64_t>(band.Bricks.size()), band.Size());
         this->Launcher->DenseDownload();
       });
@@ -142,7 +144,16 @@ public:
     ReleaseFreedMemory();
   }
 
-  const BandValues& Phi() const override { return this->DevicePhi; }
+  const BandValues& Phi() const override
+  {
+    // Brought to the host the first time it is read there (the surface and
+    // the dense volume take it on the device).
+    if (this->Evolved && this->HostPhi.empty() && this->Launcher)
+    {
+      Guard([&]() { this->Launcher->Download(this->HostPhi); });
+    }
+    return this->HostPhi;
+  }
 
   bool Surface(const Grid& grid, const NarrowBand& band, const Parameters& scheme, const LayerRange&,
     SurfaceSink& sink, Monitor* monitor) override
@@ -153,7 +164,7 @@ public:
     {
       monitor->Progress(0.0);
     }
-    Guard([&]() { ContourOnDevice(grid, band, this->DevicePhi, scheme, *this->Launcher, sink); });
+    Guard([&]() { ContourOnDevice(grid, band, this->HostPhi, scheme, *this->Launcher, sink); });
     this->PeakBytes = std::max(this->PeakBytes, this->Launcher->DeviceBytes());
     if (monitor)
     {
@@ -166,8 +177,9 @@ public:
 
   void Release() override
   {
-    BandValues().swap(this->DevicePhi);
-    this->Launcher.reset(); // and phi's copy on the device
+    BandValues().swap(this->HostPhi);
+    this->Evolved = false;
+    this->Launcher.reset(); // and phi on the device
   }
 
 private:
@@ -202,7 +214,8 @@ private:
   std::unique_ptr<device::Launcher> Launcher;
   std::string TheName;
   bool Dense = false; ///< the device fills the dense arrays
-  BandValues DevicePhi;
+  bool Evolved = false;            ///< the launcher holds the evolved phi
+  mutable BandValues HostPhi;       ///< its copy on the host, once Phi is asked for
   double PeakBytes = 0.0;
 };
 } // namespace
