@@ -32,18 +32,28 @@
 // PsiKernel"); slower, for debugging. Without it, an error that may be an
 // earlier kernel's says to set it.
 //
+// Copies: the host's arrays are ordinary (pageable) memory, which the GPU
+// cannot read or write directly; a large copy goes through two pinned
+// staging buffers on a stream of its own (Staging), chunk by chunk, the
+// GPU's copy of one chunk overlapping the host threads' copy of the other,
+// so that fresh host memory (a sink's vertices) is first written on all
+// the host's threads rather than by the driver on one.
+//
 // Reductions (the sweeps' max change, the stopping rule's norms): each block
-// reduces its nodes in shared memory and writes one partial; the host adds
-// the partials in block order. With the fixed launch shape below the result
-// does not depend on scheduling (no atomics), so a run repeats bit for bit
-// on the same GPU.
+// reduces its nodes in shared memory and writes one partial, and one more
+// block reduces the partials (FinishReduce), in a fixed order, so that one
+// value comes back per reduction and a sweep or a time step reads the device
+// once. With the fixed launch shape below the result does not depend on
+// scheduling (no atomics), so a run repeats bit for bit on the same GPU.
 #include "nvDeviceLauncher.h"
+#include "nvParallel.h"
 
 #include <cuda_runtime.h>
 
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
+#include <mutex>
 #include <string>
 #include <utility>
 #include <vector>
@@ -93,6 +103,139 @@ struct CudaMemory
   static void Free(void* memory) { cudaFree(memory); } // errors ignored: it may run while one unwinds
 };
 
+/// Copies between host memory that the caller owns (pageable) and the
+/// device. A copy of Direct bytes or more goes in chunks through two pinned
+/// buffers on a stream of its own, ordered after the kernels launched
+/// before it (a blocking stream waits for the default one): the device
+/// copies one chunk while the host's threads copy the other (ParallelFor).
+/// Smaller copies, and all copies where the pinned buffers cannot be had,
+/// go straight (cudaMemcpy). Each copy returns once its bytes are where they
+/// go. One Staging serves the process (SharedStaging): pinning memory takes
+/// time, so the buffers (2 Chunk bytes) are made at the first large copy and
+/// kept; a copy holds them alone (Busy).
+class Staging
+{
+public:
+  /// `bytes` of device memory into host memory.
+  void ToHost(void* host, const void* device, std::size_t bytes, const std::string& what)
+  {
+    if (bytes < Direct)
+    {
+      Check(cudaMemcpy(host, device, bytes, cudaMemcpyDeviceToHost), "copying " + what);
+      return;
+    }
+    std::lock_guard<std::mutex> alone(this->Busy);
+    if (!this->Ready())
+    {
+      Check(cudaMemcpy(host, device, bytes, cudaMemcpyDeviceToHost), "copying " + what);
+      return;
+    }
+    // After a failed copy the stream may hold work: finish it first.
+    Check(cudaStreamSynchronize(this->Stream), "copying " + what);
+    const std::size_t chunks = (bytes + Chunk - 1) / Chunk;
+    const auto issue = [&](std::size_t c) {
+      const std::size_t begin = c * Chunk;
+      Check(cudaMemcpyAsync(this->Buffer[c % 2], static_cast<const char*>(device) + begin,
+              std::min(Chunk, bytes - begin), cudaMemcpyDeviceToHost, this->Stream),
+        "copying " + what);
+      Check(cudaEventRecord(this->Done[c % 2], this->Stream), "copying " + what);
+    };
+    issue(0);
+    for (std::size_t c = 0; c < chunks; ++c)
+    {
+      if (c + 1 < chunks)
+      {
+        issue(c + 1); // into the buffer the host emptied at chunk c - 1
+      }
+      Check(cudaEventSynchronize(this->Done[c % 2]), "copying " + what);
+      const std::size_t begin = c * Chunk;
+      HostCopy(static_cast<char*>(host) + begin, this->Buffer[c % 2], std::min(Chunk, bytes - begin));
+    }
+  }
+
+  /// `bytes` of host memory into device memory.
+  void ToDevice(void* device, const void* host, std::size_t bytes, const std::string& what)
+  {
+    if (bytes < Direct)
+    {
+      Check(cudaMemcpy(device, host, bytes, cudaMemcpyHostToDevice), "copying " + what);
+      return;
+    }
+    std::lock_guard<std::mutex> alone(this->Busy);
+    if (!this->Ready())
+    {
+      Check(cudaMemcpy(device, host, bytes, cudaMemcpyHostToDevice), "copying " + what);
+      return;
+    }
+    Check(cudaStreamSynchronize(this->Stream), "copying " + what);
+    const std::size_t chunks = (bytes + Chunk - 1) / Chunk;
+    for (std::size_t c = 0; c < chunks; ++c)
+    {
+      if (c >= 2)
+      {
+        // The buffer's previous chunk is on the device.
+        Check(cudaEventSynchronize(this->Done[c % 2]), "copying " + what);
+      }
+      const std::size_t begin = c * Chunk, n = std::min(Chunk, bytes - begin);
+      HostCopy(this->Buffer[c % 2], static_cast<const char*>(host) + begin, n);
+      Check(cudaMemcpyAsync(static_cast<char*>(device) + begin, this->Buffer[c % 2], n, cudaMemcpyHostToDevice,
+              this->Stream),
+        "copying " + what);
+      Check(cudaEventRecord(this->Done[c % 2], this->Stream), "copying " + what);
+    }
+    Check(cudaStreamSynchronize(this->Stream), "copying " + what);
+  }
+
+private:
+  static constexpr std::size_t Chunk = std::size_t(16) << 20;  ///< bytes a staging buffer holds
+  static constexpr std::size_t Direct = std::size_t(4) << 20;  ///< smaller copies go straight
+
+  /// The pinned buffers, the stream and its events, made at the first
+  /// large copy; false (and every copy straight) where they cannot be had.
+  bool Ready()
+  {
+    if (!this->Tried)
+    {
+      this->Tried = true;
+      bool made = cudaStreamCreate(&this->Stream) == cudaSuccess;
+      for (int b = 0; b < 2 && made; ++b)
+      {
+        made = cudaHostAlloc(&this->Buffer[b], Chunk, cudaHostAllocDefault) == cudaSuccess &&
+          cudaEventCreateWithFlags(&this->Done[b], cudaEventDisableTiming) == cudaSuccess;
+      }
+      cudaGetLastError(); // a failure here is not the run's: the copies go straight
+      this->Have = made;
+    }
+    return this->Have;
+  }
+
+  /// memcpy on the host's threads, a megabyte a task.
+  static void HostCopy(void* to, const void* from, std::size_t bytes)
+  {
+    const std::int64_t grain = std::int64_t(1) << 20;
+    ParallelFor(0, static_cast<std::int64_t>(bytes), grain, [&](std::int64_t begin, std::int64_t end) {
+      std::memcpy(static_cast<char*>(to) + begin, static_cast<const char*>(from) + begin,
+        static_cast<std::size_t>(end - begin));
+    });
+  }
+
+  std::mutex Busy;
+  void* Buffer[2] = { nullptr, nullptr };
+  cudaEvent_t Done[2] = { nullptr, nullptr }; ///< each buffer's copy done
+  cudaStream_t Stream = nullptr;
+  bool Tried = false;
+  bool Have = false;
+};
+
+/// The process's Staging, made once and never freed (the process's end
+/// gives its pinned memory back; a static destructor could run after the
+/// CUDA runtime's).
+Staging& SharedStaging()
+{
+  static Staging* const staging = new Staging;
+  return *staging;
+}
+
 /// An array in the GPU's memory, owned and counted (nvDeviceMemory.h).
 template <typename T>
 using Array = DeviceBuffer<T, CudaMemory>;
@@ -103,6 +246,11 @@ using Array = DeviceBuffer<T, CudaMemory>;
 class Scratch
 {
 public:
+  explicit Scratch(Staging& staging)
+    : Copies(staging)
+  {
+  }
+
   /// Device memory for `count` values.
   template <typename T>
   T* Get(DeviceLedger& ledger, std::int64_t count, const char* what)
@@ -120,13 +268,14 @@ public:
     T* values = this->Get<T>(ledger, count, what);
     if (count > 0)
     {
-      Check(cudaMemcpy(values, host, sizeof(T) * count, cudaMemcpyHostToDevice), std::string("copying ") + what);
+      this->Copies.ToDevice(values, host, sizeof(T) * count, what);
     }
     return values;
   }
   void Clear() { this->Held.clear(); }
 
 private:
+  Staging& Copies;
   std::vector<Array<unsigned char>> Held;
 };
 
@@ -251,14 +400,11 @@ public:
     this->Phi.Allocate(this->Ledger, size + 2, "phi");
     if (!held)
     {
-      Check(cudaMemcpy(this->Neighbor.Data(), neighbor, sizeof(std::uint32_t) * 6 * size, cudaMemcpyHostToDevice),
-        "copying the neighbour table");
-      Check(cudaMemcpy(this->Distance.Data(), distance, sizeof(double) * size, cudaMemcpyHostToDevice),
-        "copying the distances");
+      this->Copies.ToDevice(this->Neighbor.Data(), neighbor, sizeof(std::uint32_t) * 6 * size, "the neighbour table");
+      this->Copies.ToDevice(this->Distance.Data(), distance, sizeof(double) * size, "the distances");
     }
     const double slots[2] = { inside, outside };
-    Check(cudaMemcpy(this->Phi.Data() + size, slots, sizeof(slots), cudaMemcpyHostToDevice),
-      "copying eq. (5)'s values into phi");
+    this->Copies.ToDevice(this->Phi.Data() + size, slots, sizeof(slots), "eq. (5)'s values into phi");
     this->A.Neighbor = this->Neighbor.Data();
     this->A.Distance = this->Distance.Data();
     this->A.Phi = this->Phi.Data();
@@ -305,8 +451,7 @@ public:
   void Download(UninitializedVector<double>& phi) override
   {
     phi.resize(static_cast<std::size_t>(this->A.Size + 2));
-    Check(cudaMemcpy(phi.data(), this->Phi.Data(), sizeof(double) * (this->A.Size + 2), cudaMemcpyDeviceToHost),
-      "copying phi back");
+    this->Copies.ToHost(phi.data(), this->Phi.Data(), sizeof(double) * (this->A.Size + 2), "phi back");
   }
 
   void ReleaseEvolution() override
@@ -332,7 +477,7 @@ public:
     this->BucketStart.Allocate(this->Ledger, a.NumberOfBricks + 1, "the points' buckets");
     // Freed on the way out, whatever happens: the cloud, each point's
     // brick, the buckets' free slots, the marks of the reached bricks, the chunks.
-    Scratch scratch;
+    Scratch scratch(this->Copies);
     a.Cloud = scratch.Copy(this->Ledger, cloud, 3 * numberOfPoints, "the cloud");
     a.BrickOf = scratch.Get<std::int64_t>(this->Ledger, numberOfPoints, "each point's brick");
     a.Next = scratch.Get<std::int64_t>(this->Ledger, a.NumberOfBricks, "the buckets' free slots");
@@ -361,8 +506,7 @@ public:
     reached.resize(static_cast<std::size_t>(total));
     if (total > 0)
     {
-      Check(cudaMemcpy(reached.data(), a.ReachList, sizeof(std::int64_t) * total, cudaMemcpyDeviceToHost),
-        "copying the reached bricks back");
+      this->Copies.ToHost(reached.data(), a.ReachList, sizeof(std::int64_t) * total, "the reached bricks back");
     }
   }
   void DistanceBricks(const std::int64_t* bricks, std::int64_t count, const DistanceConstants& constants,
@@ -380,8 +524,7 @@ public:
       this->Covered.Allocate(this->Ledger, count, "the covered bricks of a batch");
       this->BatchCapacity = count;
     }
-    Check(cudaMemcpy(this->Bricks.Data(), bricks, sizeof(std::int64_t) * count, cudaMemcpyHostToDevice),
-      "copying the bricks of a batch");
+    this->Copies.ToDevice(this->Bricks.Data(), bricks, sizeof(std::int64_t) * count, "the bricks of a batch");
     DistanceArrays arrays;
     arrays.Points = this->Points.Data();
     arrays.BucketStart = this->BucketStart.Data();
@@ -393,12 +536,11 @@ public:
     this->Launch("DistanceKernel", 0, count * 512, DistanceKernel{ arrays, constants });
     if (covered)
     {
-      Check(cudaMemcpy(covered, this->Covered.Data(), count, cudaMemcpyDeviceToHost), "copying the covered bricks back");
+      this->Copies.ToHost(covered, this->Covered.Data(), count, "the covered bricks back");
     }
     if (distance)
     {
-      Check(cudaMemcpy(distance, this->BrickDistance.Data(), sizeof(double) * 512 * count, cudaMemcpyDeviceToHost),
-        "copying the distances of a batch back");
+      this->Copies.ToHost(distance, this->BrickDistance.Data(), sizeof(double) * 512 * count, "the distances of a batch back");
     }
   }
   void BandNodes(std::int64_t count, const BandNodeConstants& constants, std::int32_t* red, std::int32_t* black,
@@ -428,18 +570,13 @@ public:
     arrays.BlackFirst = this->BlackFirst.Data();
     arrays.Inside = this->Inside.Data();
     this->Launch("BandCountKernel", 0, count, BandCountKernel{ arrays, constants });
-    Check(cudaMemcpy(red, arrays.RedCount, sizeof(std::int32_t) * count, cudaMemcpyDeviceToHost),
-      "copying the red counts back");
-    Check(cudaMemcpy(black, arrays.BlackCount, sizeof(std::int32_t) * count, cudaMemcpyDeviceToHost),
-      "copying the black counts back");
-    Check(cudaMemcpy(inside, arrays.Inside, sizeof(std::uint64_t) * 8 * count, cudaMemcpyDeviceToHost),
-      "copying the inside bits back");
+    this->Copies.ToHost(red, arrays.RedCount, sizeof(std::int32_t) * count, "the red counts back");
+    this->Copies.ToHost(black, arrays.BlackCount, sizeof(std::int32_t) * count, "the black counts back");
+    this->Copies.ToHost(inside, arrays.Inside, sizeof(std::uint64_t) * 8 * count, "the inside bits back");
     std::vector<std::int64_t> redFirst, blackFirst;
     FirstNodes(red, black, count, redFirst, blackFirst);
-    Check(cudaMemcpy(this->RedFirst.Data(), redFirst.data(), sizeof(std::int64_t) * count, cudaMemcpyHostToDevice),
-      "copying the red nodes' places");
-    Check(cudaMemcpy(this->BlackFirst.Data(), blackFirst.data(), sizeof(std::int64_t) * count, cudaMemcpyHostToDevice),
-      "copying the black nodes' places");
+    this->Copies.ToDevice(this->RedFirst.Data(), redFirst.data(), sizeof(std::int64_t) * count, "the red nodes' places");
+    this->Copies.ToDevice(this->BlackFirst.Data(), blackFirst.data(), sizeof(std::int64_t) * count, "the black nodes' places");
     // The batch's list of band nodes, kept until StoreBand (freed here if
     // anything below fails).
     BatchNodes batch;
@@ -474,8 +611,7 @@ public:
     this->Batches.clear();
     if (size > 0)
     {
-      Check(cudaMemcpy(offset, this->BandOffset.Data(), sizeof(std::uint16_t) * size, cudaMemcpyDeviceToHost),
-        "copying the band's node places back");
+      this->Copies.ToHost(offset, this->BandOffset.Data(), sizeof(std::uint16_t) * size, "the band's node places back");
     }
     this->BandSize = size;
     this->BandRedCount = redCount;
@@ -483,7 +619,7 @@ public:
   void ConnectBand(const std::int64_t* bricks, const std::int64_t* redStart, const std::int64_t* blackStart,
     std::int64_t numberOfBricks, const NeighbourConstants& constants) override
   {
-    Scratch scratch; // the copies below, freed on the way out
+    Scratch scratch(this->Copies); // the copies below, freed on the way out
     NeighbourArrays band;
     band.NumberOfBricks = numberOfBricks;
     band.RedCount = this->BandRedCount;
@@ -504,11 +640,8 @@ public:
   {
     if (this->BandSize > 0)
     {
-      Check(cudaMemcpy(distance, this->Distance.Data(), sizeof(double) * this->BandSize, cudaMemcpyDeviceToHost),
-        "copying the band's distances back");
-      Check(cudaMemcpy(neighbor, this->Neighbor.Data(), sizeof(std::uint32_t) * 6 * this->BandSize,
-              cudaMemcpyDeviceToHost),
-        "copying the neighbour table back");
+      this->Copies.ToHost(distance, this->Distance.Data(), sizeof(double) * this->BandSize, "the band's distances back");
+      this->Copies.ToHost(neighbor, this->Neighbor.Data(), sizeof(std::uint32_t) * 6 * this->BandSize, "the neighbour table back");
     }
   }
   void FreePoints() override
@@ -533,7 +666,7 @@ public:
     // Up: the band's bricks, their starts and inside bits; here: a mark a
     // grid brick and the chunks' sums; back: the chunks' sums and the list.
     // All freed on the way out (ContourCounts uploads the band again).
-    Scratch scratch;
+    Scratch scratch(this->Copies);
     ContourArrays k;
     const std::int64_t bricks = band.NumberOfBricks;
     k.NumberOfBricks = bricks;
@@ -559,8 +692,7 @@ public:
     cut.resize(static_cast<std::size_t>(total));
     if (total > 0)
     {
-      Check(cudaMemcpy(cut.data(), list.ReachList, sizeof(std::int64_t) * total, cudaMemcpyDeviceToHost),
-        "copying the cut bricks back");
+      this->Copies.ToHost(cut.data(), list.ReachList, sizeof(std::int64_t) * total, "the cut bricks back");
     }
   }
   void ContourCounts(const ContourArrays& band, std::int64_t numberOfNodes, const ContourConstants& constants,
@@ -597,10 +729,8 @@ public:
     this->Launch("CutCellsKernel", 0, cut, CutCellsKernel{ k, constants });
     if (cut > 0)
     {
-      Check(cudaMemcpy(vertices, k.VertexCount, sizeof(std::int32_t) * cut, cudaMemcpyDeviceToHost),
-        "copying the vertex counts back");
-      Check(cudaMemcpy(triangles, k.TriangleCount, sizeof(std::int32_t) * cut, cudaMemcpyDeviceToHost),
-        "copying the triangle counts back");
+      this->Copies.ToHost(vertices, k.VertexCount, sizeof(std::int32_t) * cut, "the vertex counts back");
+      this->Copies.ToHost(triangles, k.TriangleCount, sizeof(std::int32_t) * cut, "the triangle counts back");
     }
   }
   void ContourGeometry(const std::int64_t* firstVertex, const std::int64_t* firstTriangle,
@@ -622,15 +752,12 @@ public:
     this->Launch("TrianglesKernel", 0, cut, TrianglesKernel{ k, this->KC });
     if (numberOfVertices > 0)
     {
-      Check(cudaMemcpy(points, k.Points, sizeof(double) * 3 * numberOfVertices, cudaMemcpyDeviceToHost),
-        "copying the vertices back");
-      Check(cudaMemcpy(normals, k.Normals, sizeof(float) * 3 * numberOfVertices, cudaMemcpyDeviceToHost),
-        "copying the normals back");
+      this->Copies.ToHost(points, k.Points, sizeof(double) * 3 * numberOfVertices, "the vertices back");
+      this->Copies.ToHost(normals, k.Normals, sizeof(float) * 3 * numberOfVertices, "the normals back");
     }
     if (numberOfTriangles > 0)
     {
-      Check(cudaMemcpy(triangles, k.Triangles, sizeof(long long) * 3 * numberOfTriangles, cudaMemcpyDeviceToHost),
-        "copying the triangles back");
+      this->Copies.ToHost(triangles, k.Triangles, sizeof(long long) * 3 * numberOfTriangles, "the triangles back");
     }
     this->ReleaseContour();
   }
@@ -665,7 +792,7 @@ public:
   }
   void DenseBand(const DenseBandArrays& band, std::int64_t numberOfBricks, std::int64_t numberOfNodes) override
   {
-    Scratch scratch; // the band's copies, freed on the way out
+    Scratch scratch(this->Copies); // the band's copies, freed on the way out
     DenseBandArrays onDevice;
     onDevice.Bricks = scratch.Copy(this->Ledger, band.Bricks, numberOfBricks, "the band's bricks");
     onDevice.RedStart = scratch.Copy(this->Ledger, band.RedStart, numberOfBricks + 1, "the band's red starts");
@@ -683,16 +810,13 @@ public:
     const std::int64_t nodes = this->VC.Nodes();
     const std::size_t floats = sizeof(float) * static_cast<std::size_t>(nodes);
     if (this->V.Phi)
-      Check(cudaMemcpy(this->HostDense.Phi, this->V.Phi, floats, cudaMemcpyDeviceToHost), "copying the dense phi back");
+      this->Copies.ToHost(this->HostDense.Phi, this->V.Phi, floats, "the dense phi back");
     if (this->V.InitialPhi)
-      Check(cudaMemcpy(this->HostDense.InitialPhi, this->V.InitialPhi, floats, cudaMemcpyDeviceToHost),
-        "copying the dense phi0 back");
+      this->Copies.ToHost(this->HostDense.InitialPhi, this->V.InitialPhi, floats, "the dense phi0 back");
     if (this->V.Distance)
-      Check(cudaMemcpy(this->HostDense.Distance, this->V.Distance, floats, cudaMemcpyDeviceToHost),
-        "copying the dense distances back");
+      this->Copies.ToHost(this->HostDense.Distance, this->V.Distance, floats, "the dense distances back");
     if (this->V.Band)
-      Check(cudaMemcpy(this->HostDense.Band, this->V.Band, static_cast<std::size_t>(nodes), cudaMemcpyDeviceToHost),
-        "copying the dense band flags back");
+      this->Copies.ToHost(this->HostDense.Band, this->V.Band, static_cast<std::size_t>(nodes), "the dense band flags back");
     this->ReleaseDense();
   }
 
@@ -716,11 +840,9 @@ private:
     {
       return 0;
     }
-    Check(cudaMemcpy(hostSums.data(), sums, sizeof(std::int64_t) * hostSums.size(), cudaMemcpyDeviceToHost),
-      "copying the chunks' sums back");
+    this->Copies.ToHost(hostSums.data(), sums, sizeof(std::int64_t) * hostSums.size(), "the chunks' sums back");
     const std::int64_t total = ChunkStarts(hostSums, hostFirst);
-    Check(cudaMemcpy(first, hostFirst.data(), sizeof(std::int64_t) * hostFirst.size(), cudaMemcpyHostToDevice),
-      "copying the chunks' starts");
+    this->Copies.ToDevice(first, hostFirst.data(), sizeof(std::int64_t) * hostFirst.size(), "the chunks' starts");
     return total;
   }
   void ReleaseContour()
@@ -793,14 +915,15 @@ private:
   /// Results[0 .. count) into host memory: one small read, after the kernels.
   void ReadResults(int count, double* values, const char* what)
   {
-    Check(cudaMemcpy(values, this->Results.Data(), sizeof(double) * count, cudaMemcpyDeviceToHost),
-      std::string("copying ") + what + " back");
+    this->Copies.ToHost(values, this->Results.Data(), sizeof(double) * count, std::string(what) + " back");
   }
 
   std::string DeviceName;
   bool Synchronous = false; ///< NV_CUDA_SYNC: wait for each launch
   /// Counts the arrays below; declared first, so that it outlives them.
   DeviceLedger Ledger;
+  /// The copies to and from host memory (pinned buffers, a stream).
+  Staging& Copies = SharedStaging();
   // The truncated distance's arrays (DistanceArrays), until FreePoints.
   Array<double> Points;
   Array<std::int64_t> BucketStart;
@@ -851,7 +974,7 @@ private:
   // ContourUploads, the others below, until ContourGeometry ends.
   ContourArrays K;
   ContourConstants KC;
-  Scratch ContourUploads;
+  Scratch ContourUploads{ this->Copies };
   Array<float> Psi;
   Array<std::uint64_t> Cut;
   Array<std::uint16_t> Above;
