@@ -1087,6 +1087,31 @@ void TestMemoryChecks()
     NV_CHECK(run.RelativeChanges().empty() && surface.Points.empty());
   }
   {
+    // 2 MB free: too little for the band's bricks in one batch, enough in
+    // smaller ones, which the run takes; the surface the CPU's bit for bit.
+    nv::device::HostLauncherHooks hooks;
+    hooks.FreeBytes = 2e6;
+    nv::Reconstruction gpu(
+      settings, nullptr, nullptr, nv::MakeDeviceEngine(nv::device::MakeHostLauncher(hooks), "GPU"));
+    nv::SurfaceMesh gpuMesh, cpuMesh;
+    const nv::Outcome outcome = nv::Reconstruct(gpu, xyz, nullptr, gpuMesh, nv::VolumeRequest(), false);
+    const std::array<std::int64_t, 3> dims = nv::BrickDimensions(gpu.GetGrid());
+    const std::int64_t bricks = dims[0] * dims[1] * dims[2];
+    const double oneBatch = nv::device::BandBuildBytes(4000, bricks, bricks, 0.0);
+    NV_CHECK(outcome.Done && outcome.Error.empty());
+    NV_CHECK(bricks > nv::device::LauncherDistance::MinimumBatch && oneBatch > hooks.FreeBytes);
+    nv::Settings onCpu = settings;
+    onCpu.Device = nv::ComputeDevice::CPU;
+    nv::Reconstruction cpu(onCpu, nullptr, nullptr);
+    NV_CHECK(nv::Reconstruct(cpu, xyz, nullptr, cpuMesh, nv::VolumeRequest(), false).Done);
+    const bool same = !cpuMesh.Triangles.empty() && SameValues(gpuMesh.Points, cpuMesh.Points) &&
+      SameValues(gpuMesh.Triangles, cpuMesh.Triangles);
+    std::printf("Device GPU with 2 MB free (%lld bricks in one batch would need %s): the band in smaller "
+                "batches, the surface the CPU's bit for bit: %s\n",
+      static_cast<long long>(bricks), nv::device::ByteWords(oneBatch).c_str(), same ? "yes" : "NO");
+    NV_CHECK(same);
+  }
+  {
     // Enough memory: nothing changes.
     nv::device::HostLauncherHooks hooks;
     hooks.FreeBytes = 1e12;

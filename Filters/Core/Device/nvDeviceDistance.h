@@ -43,8 +43,12 @@ DistanceConstants DistanceConstantsOf(const TruncatedDistance& distance, double 
 class LauncherDistance : public BrickDistanceSource
 {
 public:
-  /// Bricks a batch by default: 16 MiB of distances (double, 512 a brick).
-  static constexpr std::int64_t DefaultBatch = 4096;
+  /// Bricks a batch by default: 256 MiB of distances (double, 512 a
+  /// brick), so that a 1024^3 grid's band is built in a few batches, each
+  /// with its handful of launches and reads; fewer where the device has
+  /// too little free memory (Run/nvDeviceEngine.cxx), down to MinimumBatch.
+  static constexpr std::int64_t DefaultBatch = 65536;
+  static constexpr std::int64_t MinimumBatch = 256;
 
   /// Sorts the points `cloud` (numberOfPoints xyz triples, world
   /// coordinates in the grid's box; host memory, read during this call

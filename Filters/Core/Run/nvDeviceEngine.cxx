@@ -12,7 +12,8 @@
 // compares what the stage will need on the device (nvDeviceMemory.h's
 // counts of the CUDA launcher's arrays) with the device's free memory
 // (Launcher::FreeBytes) and refuses a stage that does not fit, with the
-// bytes needed and free and what to change (CheckFreeMemory). Device GPU
+// bytes needed and free and what to change (CheckFreeMemory); the band's
+// batches shrink first, where smaller ones fit. Device GPU
 // does not fall back to the CPU (nvEngine.h's one rule); Automatic runs on
 // the CPU and never comes here.
 #include "nvEngine.h"
@@ -74,9 +75,12 @@ public:
     return Guard([&]() {
       // What the points' sort and the band's batches need, with the dense
       // arrays, against the device's free memory (the band's own arrays
-      // come after: their size is known once the distances are).
+      // come after: their size is known once the distances are). The
+      // batches are as large as DefaultBatch, halved while they would not
+      // fit, down to MinimumBatch.
       const std::array<std::int64_t, 3> brickDims = BrickDimensions(grid);
       const std::int64_t bricks = brickDims[0] * brickDims[1] * brickDims[2];
+      const std::int64_t points = static_cast<std::int64_t>(xyz.size() / 3);
       double denseBytes = 0.0;
       if (dense)
       {
@@ -84,13 +88,19 @@ public:
         denseBytes = device::DenseBytes((dense->End - dense->Begin) * grid.Dims[0] * grid.Dims[1],
           (a.Phi ? 1 : 0) + (a.InitialPhi ? 1 : 0) + (a.Distance ? 1 : 0), a.Band != nullptr);
       }
-      this->CheckFreeMemory(device::BandBuildBytes(static_cast<std::int64_t>(xyz.size() / 3), bricks,
-                              std::min(device::LauncherDistance::DefaultBatch, bricks), denseBytes),
-        "to build the narrow band");
+      const auto needed = [&](std::int64_t batch) {
+        return device::BandBuildBytes(points, bricks, batch, denseBytes);
+      };
+      const double free = this->Launcher->FreeBytes();
+      std::int64_t batch = std::min(device::LauncherDistance::DefaultBatch, bricks);
+      while (batch > device::LauncherDistance::MinimumBatch && needed(batch) > free)
+      {
+        batch = std::max(device::LauncherDistance::MinimumBatch, batch / 2);
+      }
+      this->CheckFreeMemory(needed(batch), "to build the narrow band");
       const auto sorting = StageTimes::Clock::now();
       const TruncatedDistance gridOnly(grid, scheme.Reach()); // the points are the device's
-      device::LauncherDistance onDevice(
-        gridOnly, xyz.data(), static_cast<std::int64_t>(xyz.size() / 3), *this->Launcher);
+      device::LauncherDistance onDevice(gridOnly, xyz.data(), points, *this->Launcher, batch);
       std::vector<double>().swap(xyz);
       context.Stages->Add("distance", sorting);
       if (dense)
