@@ -1130,6 +1130,46 @@ void TestMemoryChecks()
   NV_CHECK(nv::device::HostLauncherBytes() == before);
 }
 
+/// The surface's outputs slab by slab of cut bricks (the CUDA launcher
+/// holds one slab at a time): the split, then a surface made in slabs of
+/// at most 20 kB through the host launcher, the one-piece surface bit for bit.
+void TestSurfaceSlabs()
+{
+  const std::int64_t firstVertex[4] = { 0, 10, 20, 30 }, firstTriangle[4] = { 0, 20, 40, 60 };
+  // Each brick: 10 vertices and 20 triangles, 840 bytes.
+  NV_CHECK((nv::device::SurfaceSlabs(firstVertex, firstTriangle, 4, 40, 80, 1e9) ==
+    std::vector<std::int64_t>{ 0, 4 }));
+  NV_CHECK((nv::device::SurfaceSlabs(firstVertex, firstTriangle, 4, 40, 80, 1700.0) ==
+    std::vector<std::int64_t>{ 0, 2, 4 }));
+  NV_CHECK((nv::device::SurfaceSlabs(firstVertex, firstTriangle, 4, 40, 80, 2600.0) ==
+    std::vector<std::int64_t>{ 0, 3, 4 }));
+  NV_CHECK((nv::device::SurfaceSlabs(firstVertex, firstTriangle, 4, 40, 80, 100.0) ==
+    std::vector<std::int64_t>{ 0, 1, 2, 3, 4 }));
+  NV_CHECK((nv::device::SurfaceSlabs(nullptr, nullptr, 0, 0, 0, 100.0) == std::vector<std::int64_t>{ 0, 0 }));
+  if (OnGpu)
+  {
+    return;
+  }
+  const double center[3] = { 0.3, -0.1, 0.2 };
+  const std::vector<double> xyz = nvtest::SpherePoints(4000, 0.5, center);
+  nv::Parameters p;
+  p.OffsetDistance = 0.1;
+  p.Spacing = 0.02;
+  p.MaximumNumberOfIterations = 2;
+  std::unique_ptr<nv::device::Launcher> whole = nv::device::MakeHostLauncher();
+  nv::device::HostLauncherHooks hooks;
+  hooks.SurfaceSlabBytes = 2e4;
+  std::unique_ptr<nv::device::Launcher> sliced = nv::device::MakeHostLauncher(hooks);
+  const nv::SurfaceMesh one = DeviceStages(xyz, p, *whole), slabs = DeviceStages(xyz, p, *sliced);
+  const double bytes = 36.0 * static_cast<double>(one.Points.size() / 3) + 8.0 * static_cast<double>(one.Triangles.size());
+  const bool same = !one.Triangles.empty() && SameValues(one.Points, slabs.Points) &&
+    SameValues(one.Normals, slabs.Normals) && SameValues(one.Triangles, slabs.Triangles);
+  std::printf("The surface (%.2f MB of outputs) in slabs of at most 20 kB, the one-piece surface bit for bit: %s\n",
+    bytes / 1e6, same ? "yes" : "NO");
+  NV_CHECK(bytes > 20 * hooks.SurfaceSlabBytes);
+  NV_CHECK(same);
+}
+
 } // namespace
 
 int main(int argc, char* argv[])
@@ -1150,5 +1190,6 @@ int main(int argc, char* argv[])
   TestFailedAllocation();
   TestEvolutionPeak();
   TestMemoryChecks();
+  TestSurfaceSlabs();
   return nvtest::Result(NV_TEST_NAME);
 }

@@ -742,22 +742,48 @@ public:
     Scratch& up = this->ContourUploads;
     k.FirstVertex = up.Copy(this->Ledger, firstVertex, cut, "the first vertices");
     k.FirstTriangle = up.Copy(this->Ledger, firstTriangle, cut, "the first triangles");
-    this->OutPoints.Allocate(this->Ledger, 3 * numberOfVertices, "the vertices");
-    this->OutNormals.Allocate(this->Ledger, 3 * numberOfVertices, "the normals");
-    this->OutTriangles.Allocate(this->Ledger, 3 * numberOfTriangles, "the triangles");
+    // Slab by slab of cut bricks, each slab's outputs in the same device
+    // arrays (sized for the largest), then to the sink's arrays.
+    const std::vector<std::int64_t> slabs =
+      SurfaceSlabs(firstVertex, firstTriangle, cut, numberOfVertices, numberOfTriangles, SurfaceSlabBytes);
+    std::int64_t mostVertices = 0, mostTriangles = 0;
+    const auto firstOf = [&](const std::int64_t* first, std::int64_t r, std::int64_t total) {
+      return r < cut ? first[r] : total;
+    };
+    for (std::size_t i = 0; i + 1 < slabs.size(); ++i)
+    {
+      mostVertices = std::max(mostVertices, firstOf(firstVertex, slabs[i + 1], numberOfVertices) -
+          firstOf(firstVertex, slabs[i], numberOfVertices));
+      mostTriangles = std::max(mostTriangles, firstOf(firstTriangle, slabs[i + 1], numberOfTriangles) -
+          firstOf(firstTriangle, slabs[i], numberOfTriangles));
+    }
+    this->OutPoints.Allocate(this->Ledger, 3 * mostVertices, "the vertices");
+    this->OutNormals.Allocate(this->Ledger, 3 * mostVertices, "the normals");
+    this->OutTriangles.Allocate(this->Ledger, 3 * mostTriangles, "the triangles");
     k.Points = this->OutPoints.Data();
     k.Normals = this->OutNormals.Data();
     k.Triangles = this->OutTriangles.Data();
-    this->Launch("VerticesKernel", 0, cut, VerticesKernel{ k, this->KC });
-    this->Launch("TrianglesKernel", 0, cut, TrianglesKernel{ k, this->KC });
-    if (numberOfVertices > 0)
+    for (std::size_t i = 0; i + 1 < slabs.size(); ++i)
     {
-      this->Copies.ToHost(points, k.Points, sizeof(double) * 3 * numberOfVertices, "the vertices back");
-      this->Copies.ToHost(normals, k.Normals, sizeof(float) * 3 * numberOfVertices, "the normals back");
-    }
-    if (numberOfTriangles > 0)
-    {
-      this->Copies.ToHost(triangles, k.Triangles, sizeof(long long) * 3 * numberOfTriangles, "the triangles back");
+      const std::int64_t begin = slabs[i], end = slabs[i + 1];
+      k.PointsBase = firstOf(firstVertex, begin, numberOfVertices);
+      k.TrianglesBase = firstOf(firstTriangle, begin, numberOfTriangles);
+      const std::int64_t vertices = firstOf(firstVertex, end, numberOfVertices) - k.PointsBase;
+      const std::int64_t slabTriangles = firstOf(firstTriangle, end, numberOfTriangles) - k.TrianglesBase;
+      this->Launch("VerticesKernel", begin, end, VerticesKernel{ k, this->KC });
+      this->Launch("TrianglesKernel", begin, end, TrianglesKernel{ k, this->KC });
+      if (vertices > 0)
+      {
+        this->Copies.ToHost(
+          points + 3 * k.PointsBase, k.Points, sizeof(double) * 3 * vertices, "the vertices back");
+        this->Copies.ToHost(
+          normals + 3 * k.PointsBase, k.Normals, sizeof(float) * 3 * vertices, "the normals back");
+      }
+      if (slabTriangles > 0)
+      {
+        this->Copies.ToHost(triangles + 3 * k.TrianglesBase, k.Triangles, sizeof(long long) * 3 * slabTriangles,
+          "the triangles back");
+      }
     }
     this->ReleaseContour();
   }

@@ -160,7 +160,9 @@ public:
   /// (host memory), VerticesKernel and TrianglesKernel; the
   /// `numberOfVertices` vertices (3 coordinates and 3 normal components
   /// each) and `numberOfTriangles` triangles (3 vertex ids each) into host
-  /// memory. Then the surface's arrays are freed.
+  /// memory, slab by slab of cut bricks (SurfaceSlabs: the CUDA launcher
+  /// holds one slab's outputs at a time, SurfaceSlabBytes at most unless a
+  /// single brick needs more). Then the surface's arrays are freed.
   virtual void ContourGeometry(const std::int64_t* firstVertex, const std::int64_t* firstTriangle,
     std::int64_t numberOfVertices, std::int64_t numberOfTriangles, double* points, float* normals,
     long long* triangles) = 0;
@@ -220,6 +222,18 @@ public:
 void FirstNodes(const std::int32_t* red, const std::int32_t* black, std::int64_t count,
   std::vector<std::int64_t>& redFirst, std::vector<std::int64_t>& blackFirst);
 
+/// The device memory the surface's outputs may take at once: the vertices
+/// (36 bytes each) and triangles (24) are made and copied to the host slab
+/// by slab of cut bricks.
+constexpr double SurfaceSlabBytes = 256.0 * 1024 * 1024;
+
+/// Splits the `count` cut bricks into slabs [slabs[i], slabs[i + 1]) whose
+/// outputs take at most `maximumBytes` (a brick that alone needs more is a
+/// slab of its own), from each brick's first vertex and first triangle
+/// (ContourGeometry's) and the totals. At least one slab (0, count).
+std::vector<std::int64_t> SurfaceSlabs(const std::int64_t* firstVertex, const std::int64_t* firstTriangle,
+  std::int64_t count, std::int64_t numberOfVertices, std::int64_t numberOfTriangles, double maximumBytes);
+
 /// The host launcher's test hooks: a limit on the bytes its buffers may
 /// hold at once (an allocation beyond it fails as on a full GPU, with a
 /// DeviceError), and the free memory it reports (FreeBytes); both < 0: none
@@ -228,6 +242,9 @@ struct HostLauncherHooks
 {
   double AllocationLimit = -1.0;
   double FreeBytes = -1.0;
+  /// > 0: the surface's outputs written slab by slab of at most these
+  /// bytes (SurfaceSlabs), as the CUDA launcher does; else in one.
+  double SurfaceSlabBytes = -1.0;
 };
 
 /// The host launcher: the kernels over nv::ParallelFor and its reductions.

@@ -44,6 +44,42 @@ void FirstNodes(const std::int32_t* red, const std::int32_t* black, std::int64_t
   }
 }
 
+std::vector<std::int64_t> SurfaceSlabs(const std::int64_t* firstVertex, const std::int64_t* firstTriangle,
+  std::int64_t count, std::int64_t numberOfVertices, std::int64_t numberOfTriangles, double maximumBytes)
+{
+  // The outputs of bricks [a, b): their vertices and triangles, by their firsts.
+  const auto bytes = [&](std::int64_t a, std::int64_t b) {
+    const std::int64_t vertices = (b < count ? firstVertex[b] : numberOfVertices) - firstVertex[a];
+    const std::int64_t triangles = (b < count ? firstTriangle[b] : numberOfTriangles) - firstTriangle[a];
+    return 36.0 * static_cast<double>(vertices) + 24.0 * static_cast<double>(triangles);
+  };
+  std::vector<std::int64_t> slabs{ 0 };
+  while (slabs.back() < count)
+  {
+    // The most bricks from the slab's first that fit (at least one).
+    const std::int64_t first = slabs.back();
+    std::int64_t low = first + 1, high = count;
+    while (low < high)
+    {
+      const std::int64_t middle = low + (high - low + 1) / 2;
+      if (bytes(first, middle) <= maximumBytes)
+      {
+        low = middle;
+      }
+      else
+      {
+        high = middle - 1;
+      }
+    }
+    slabs.push_back(low);
+  }
+  if (count == 0)
+  {
+    slabs.push_back(0);
+  }
+  return slabs;
+}
+
 namespace
 {
 constexpr std::int64_t Grain = 4096;
@@ -385,16 +421,29 @@ public:
     For(0, band.NumberOfBricks, PsiKernel{ this->K, this->KC }, 8);
     For(0, band.NumberOfCutBricks, CutCellsKernel{ this->K, this->KC }, 8);
   }
-  void ContourGeometry(const std::int64_t* firstVertex, const std::int64_t* firstTriangle, std::int64_t,
-    std::int64_t, double* points, float* normals, long long* triangles) override
+  void ContourGeometry(const std::int64_t* firstVertex, const std::int64_t* firstTriangle,
+    std::int64_t numberOfVertices, std::int64_t numberOfTriangles, double* points, float* normals,
+    long long* triangles) override
   {
     this->K.FirstVertex = firstVertex;
     this->K.FirstTriangle = firstTriangle;
-    this->K.Points = points; // the sink's arrays, written in place
-    this->K.Normals = normals;
-    this->K.Triangles = triangles;
-    For(0, this->K.NumberOfCutBricks, VerticesKernel{ this->K, this->KC }, 8);
-    For(0, this->K.NumberOfCutBricks, TrianglesKernel{ this->K, this->KC }, 8);
+    // The sink's arrays, written in place; slab by slab where the hooks ask
+    // (the CUDA launcher's slabs, each written from its own first vertex
+    // and triangle on).
+    const std::int64_t cut = this->K.NumberOfCutBricks;
+    const std::vector<std::int64_t> slabs = SurfaceSlabs(firstVertex, firstTriangle, cut, numberOfVertices,
+      numberOfTriangles, this->Hooks.SurfaceSlabBytes > 0.0 ? this->Hooks.SurfaceSlabBytes : 1e300);
+    for (std::size_t i = 0; i + 1 < slabs.size(); ++i)
+    {
+      const std::int64_t begin = slabs[i], end = slabs[i + 1];
+      this->K.PointsBase = begin < cut ? firstVertex[begin] : 0;
+      this->K.TrianglesBase = begin < cut ? firstTriangle[begin] : 0;
+      this->K.Points = points + 3 * this->K.PointsBase;
+      this->K.Normals = normals + 3 * this->K.PointsBase;
+      this->K.Triangles = triangles + 3 * this->K.TrianglesBase;
+      For(begin, end, VerticesKernel{ this->K, this->KC }, 8);
+      For(begin, end, TrianglesKernel{ this->K, this->KC }, 8);
+    }
     this->K = ContourArrays();
     this->Psi.Reset();
     this->Cut.Reset();

@@ -127,9 +127,14 @@ struct ContourArrays
   std::int32_t* TriangleCount = nullptr;
   const std::int64_t* FirstVertex = nullptr;
   const std::int64_t* FirstTriangle = nullptr;
+  /// The outputs of one slab of cut bricks (SurfaceSlabs): Points and
+  /// Normals hold the vertices from id PointsBase on, Triangles the
+  /// triangles from TrianglesBase on (0, 0: the whole surface).
   double* Points = nullptr;
   float* Normals = nullptr;
   long long* Triangles = nullptr;
+  std::int64_t PointsBase = 0;
+  std::int64_t TrianglesBase = 0;
   const CellCases* Cases = nullptr;
 };
 
@@ -260,7 +265,8 @@ struct VerticesKernel
     {
       const ContourArrays& A = Kernel->A;
       const ContourConstants& C = Kernel->C;
-      VertexOn(*Window, First, bit, C.GridDims, C.Origin, C.Spacing, A.Points + 3 * V, A.Normals + 3 * V);
+      const std::int64_t at = V - A.PointsBase;
+      VertexOn(*Window, First, bit, C.GridDims, C.Origin, C.Spacing, A.Points + 3 * at, A.Normals + 3 * at);
       ++V;
     }
   };
@@ -335,7 +341,7 @@ struct TrianglesKernel
     std::int64_t b[3], first[3];
     BrickAt(C.BrickDims, A.CutBricks[r], b);
     FirstNodeOf(C.BrickDims, A.CutBricks[r], first);
-    Writer writer{ this, b, A.Triangles + 3 * A.FirstTriangle[r] };
+    Writer writer{ this, b, A.Triangles + 3 * (A.FirstTriangle[r] - A.TrianglesBase) };
     ForEachCutCell(C.GridDims, first, A.Above + AboveRows * r, *A.Cases, writer);
   }
 };
