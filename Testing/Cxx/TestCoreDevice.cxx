@@ -712,10 +712,13 @@ public:
   double DeviceBytes() const override { return this->Host->DeviceBytes(); }
   double HeldBytes() const override { return this->Host->HeldBytes(); }
   /// "evolution memory": 1 kB free once the band is stored, as a device
-  /// that something else filled meanwhile.
+  /// that something else filled meanwhile; "surface memory": once the
+  /// evolution is done.
   double FreeBytes() const override
   {
-    return this->Where == "evolution memory" && this->BandStored ? 1e3 : this->Host->FreeBytes();
+    const bool full = (this->Where == "evolution memory" && this->BandStored) ||
+      (this->Where == "surface memory" && this->Evolved);
+    return full ? 1e3 : this->Host->FreeBytes();
   }
   void Fail(const char* kernel) const
   {
@@ -743,7 +746,11 @@ public:
     this->Host->StepSums(red, black, sums);
   }
   void Download(nv::UninitializedVector<double>& phi) override { this->Host->Download(phi); }
-  void ReleaseEvolution() override { this->Host->ReleaseEvolution(); }
+  void ReleaseEvolution() override
+  {
+    this->Host->ReleaseEvolution();
+    this->Evolved = true;
+  }
   void SortPoints(const double* cloud, std::int64_t n, const nv::PointConstants& c,
     std::vector<std::int64_t>& reached) override
   {
@@ -802,6 +809,7 @@ private:
   std::unique_ptr<nv::device::Launcher> Host;
   std::string Where;
   bool BandStored = false;
+  bool Evolved = false;
 };
 
 /// A device that fails during the evolution, and one that fails making the
@@ -1087,10 +1095,43 @@ void TestMemoryChecks()
     NV_CHECK(run.RelativeChanges().empty() && surface.Points.empty());
   }
   {
-    // 2 MB free: too little for the band's bricks in one batch, enough in
-    // smaller ones, which the run takes; the surface the CPU's bit for bit.
+    nv::Reconstruction run(settings, nullptr, nullptr,
+      nv::MakeDeviceEngine(std::unique_ptr<nv::device::Launcher>(new FailingLauncher("surface memory")), "GPU"));
+    nv::SurfaceMesh surface;
+    const nv::Outcome outcome = nv::Reconstruct(run, xyz, nullptr, surface, nv::VolumeRequest(), false);
+    std::printf("Device GPU with 1 kB free after the evolution: %s\n", outcome.Error.c_str());
+    const std::string start = "The GPU has too little free memory for the surface's tables: it needs about ";
+    const double needed = BytesAt(outcome.Error, outcome.Error.find(start) == 0 ? start.size() : std::string::npos);
+    NV_CHECK(needed > 1e5); // psi alone: 2 kB for each of the band's hundreds of bricks
+    NV_CHECK(outcome.Error.find(", and 0.001 MB" + advice) != std::string::npos);
+    NV_CHECK(!outcome.Done && surface.Points.empty());
+  }
+  {
+    // 1.6 MB free: enough for the band (in small batches), the evolution
+    // and the surface's tables, not for its 2 MB of outputs.
     nv::device::HostLauncherHooks hooks;
-    hooks.FreeBytes = 2e6;
+    hooks.FreeBytes = 1.6e6;
+    nv::Reconstruction run(
+      settings, nullptr, nullptr, nv::MakeDeviceEngine(nv::device::MakeHostLauncher(hooks), "GPU"));
+    nv::SurfaceMesh surface;
+    const nv::Outcome outcome = nv::Reconstruct(run, xyz, nullptr, surface, nv::VolumeRequest(), false);
+    std::printf("Device GPU with 1.6 MB free: %s\n", outcome.Error.c_str());
+    const std::string start = "The GPU has too little free memory for the surface's ";
+    long long vertices = 0, triangles = 0;
+    const bool said = outcome.Error.find(start) == 0 &&
+      std::sscanf(outcome.Error.c_str() + start.size(), "%lld vertices and %lld triangles", &vertices, &triangles) == 2;
+    NV_CHECK(said && vertices > 1000 && triangles > 1000);
+    const std::string needed = "triangles: it needs about " +
+      nv::device::ByteWords(36.0 * static_cast<double>(vertices) + 24.0 * static_cast<double>(triangles));
+    NV_CHECK(outcome.Error.find(needed + ", and 1.6 MB" + advice) != std::string::npos);
+    NV_CHECK(!outcome.Done && surface.Points.empty());
+  }
+  {
+    // 3 MB free: too little for the band's bricks in one batch, enough in
+    // smaller ones, which the run takes (and for the surface's 2 MB of
+    // outputs); the surface the CPU's bit for bit.
+    nv::device::HostLauncherHooks hooks;
+    hooks.FreeBytes = 3e6;
     nv::Reconstruction gpu(
       settings, nullptr, nullptr, nv::MakeDeviceEngine(nv::device::MakeHostLauncher(hooks), "GPU"));
     nv::SurfaceMesh gpuMesh, cpuMesh;
@@ -1106,7 +1147,7 @@ void TestMemoryChecks()
     NV_CHECK(nv::Reconstruct(cpu, xyz, nullptr, cpuMesh, nv::VolumeRequest(), false).Done);
     const bool same = !cpuMesh.Triangles.empty() && SameValues(gpuMesh.Points, cpuMesh.Points) &&
       SameValues(gpuMesh.Triangles, cpuMesh.Triangles);
-    std::printf("Device GPU with 2 MB free (%lld bricks in one batch would need %s): the band in smaller "
+    std::printf("Device GPU with 3 MB free (%lld bricks in one batch would need %s): the band in smaller "
                 "batches, the surface the CPU's bit for bit: %s\n",
       static_cast<long long>(bricks), nv::device::ByteWords(oneBatch).c_str(), same ? "yes" : "NO");
     NV_CHECK(same);

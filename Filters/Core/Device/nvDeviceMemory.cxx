@@ -59,6 +59,12 @@ double EvolutionBytes(std::int64_t nodes)
   return 18.0 * static_cast<double>(nodes) + 16.0;
 }
 
+double SurfaceTableBytes(std::int64_t bandBricks, std::int64_t nodes, std::int64_t cutBricks)
+{
+  return 2136.0 * static_cast<double>(bandBricks) + 2.0 * static_cast<double>(nodes) +
+    386.0 * static_cast<double>(cutBricks);
+}
+
 double DenseBytes(std::int64_t nodes, int floatArrays, bool bandFlags)
 {
   return static_cast<double>(nodes) * (4.0 * floatArrays + (bandFlags ? 1.0 : 0.0));

@@ -164,6 +164,14 @@ double BandBuildBytes(std::int64_t points, std::int64_t bricks, std::int64_t bat
 /// 18 bytes a node and 16 (the band's 34 and these, 52 a node at the peak).
 double EvolutionBytes(std::int64_t nodes);
 
+/// The surface's tables (ContourCounts, ContourGeometry's firsts), on top
+/// of phi: per band brick its bricks, starts and inside bits (88 bytes) and
+/// psi (2,048); the node places (2 a node); per cut brick 386 (the cut
+/// edges 192, the corners' signs 162, the counts 8, the list 8, the first
+/// vertex and triangle 16). The outputs come after, slab by slab
+/// (SurfaceSlabs).
+double SurfaceTableBytes(std::int64_t bandBricks, std::int64_t nodes, std::int64_t cutBricks);
+
 /// The dense arrays of `nodes` nodes: 4 bytes a node for each of phi,
 /// phi0 and d asked for, 1 for the band flags.
 double DenseBytes(std::int64_t nodes, int floatArrays, bool bandFlags);

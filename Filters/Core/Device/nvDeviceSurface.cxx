@@ -42,7 +42,7 @@ std::vector<std::int64_t> CutBricksOf(const NarrowBand& band)
 }
 
 void ContourOnDevice(const Grid& grid, const NarrowBand& band, const BandValues& phi, const Parameters& parameters,
-  device::SurfaceLauncher& launcher, SurfaceSink& sink)
+  device::SurfaceLauncher& launcher, SurfaceSink& sink, const MemoryCheck& check)
 {
   device::ContourConstants constants;
   const std::array<std::int64_t, 3> dims = BrickDimensions(grid);
@@ -73,6 +73,10 @@ void ContourOnDevice(const Grid& grid, const NarrowBand& band, const BandValues&
   arrays.NumberOfCutBricks = cut;
   arrays.CutBricks = cutBricks.data();
   arrays.Cases = &MarchingCubesTable();
+  if (check)
+  {
+    check(device::SurfaceTableBytes(arrays.NumberOfBricks, band.Size(), cut), "for the surface's tables");
+  }
   std::vector<std::int32_t> vertices(static_cast<std::size_t>(cut)), triangles(static_cast<std::size_t>(cut));
   launcher.ContourCounts(arrays, band.Size(), constants, vertices.data(), triangles.data());
 
@@ -86,6 +90,26 @@ void ContourOnDevice(const Grid& grid, const NarrowBand& band, const BandValues&
     firstTriangle[r] = numberOfTriangles;
     numberOfVertices += vertices[r];
     numberOfTriangles += triangles[r];
+  }
+  if (check)
+  {
+    // The largest slab's outputs, as the CUDA launcher holds them.
+    const std::vector<std::int64_t> slabs = device::SurfaceSlabs(firstVertex.data(), firstTriangle.data(), cut,
+      numberOfVertices, numberOfTriangles, device::SurfaceSlabBytes);
+    double largest = 0.0;
+    for (std::size_t i = 0; i + 1 < slabs.size(); ++i)
+    {
+      const auto first = [&](const std::vector<std::int64_t>& firsts, std::int64_t r, std::int64_t total) {
+        return r < cut ? firsts[r] : total;
+      };
+      const std::int64_t v =
+        first(firstVertex, slabs[i + 1], numberOfVertices) - first(firstVertex, slabs[i], numberOfVertices);
+      const std::int64_t t = first(firstTriangle, slabs[i + 1], numberOfTriangles) -
+        first(firstTriangle, slabs[i], numberOfTriangles);
+      largest = std::max(largest, 36.0 * static_cast<double>(v) + 24.0 * static_cast<double>(t));
+    }
+    check(largest, "for the surface's " + std::to_string(numberOfVertices) + " vertices and " +
+        std::to_string(numberOfTriangles) + " triangles");
   }
   double* xyz = nullptr;
   float* normals = nullptr;

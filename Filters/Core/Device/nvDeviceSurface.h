@@ -25,6 +25,8 @@
 #include "nvSurface.h"
 
 #include <cstdint>
+#include <functional>
+#include <string>
 #include <vector>
 
 namespace nv
@@ -39,15 +41,22 @@ namespace nv
 /// kernels, which TestCoreDevice compares with it.
 std::vector<std::int64_t> CutBricksOf(const NarrowBand& band);
 
+/// Checks that `bytes` more fit on the device for `stage` (throws if not):
+/// the device engine's free-memory check.
+using MemoryCheck = std::function<void(double bytes, const std::string& stage)>;
+
 /**
- * The surface of `band` with phi `phi` (L + 2 values) into `sink`, by
- * `launcher`'s kernels: the vertices first (ids from 0, bricks in ascending
- * order, each brick's cut edges in order), then the triangles. Throws
+ * The surface of `band` with phi `phi` (L + 2 values; may be empty where
+ * the launcher still holds the evolution's) into `sink`, by `launcher`'s
+ * kernels: the vertices first (ids from 0, bricks in ascending order, each
+ * brick's cut edges in order), then the triangles. With `check`, what the
+ * tables and then the outputs need on the device (SurfaceTableBytes, the
+ * largest slab's outputs) is checked before each is allocated. Throws
  * device::DeviceError when the device fails (the sink may then hold part of
  * the surface: the caller truncates it).
  */
 void ContourOnDevice(const Grid& grid, const NarrowBand& band, const BandValues& phi, const Parameters& parameters,
-  device::SurfaceLauncher& launcher, SurfaceSink& sink);
+  device::SurfaceLauncher& launcher, SurfaceSink& sink, const MemoryCheck& check = MemoryCheck());
 
 } // namespace nv
 

@@ -13,7 +13,8 @@
 // counts of the CUDA launcher's arrays) with the device's free memory
 // (Launcher::FreeBytes) and refuses a stage that does not fit, with the
 // bytes needed and free and what to change (CheckFreeMemory); the band's
-// batches shrink first, where smaller ones fit. Device GPU
+// batches shrink first, where smaller ones fit. The surface checks its
+// tables and then its outputs likewise (ContourOnDevice). Device GPU
 // does not fall back to the CPU (nvEngine.h's one rule); Automatic runs on
 // the CPU and never comes here.
 #include "nvEngine.h"
@@ -174,7 +175,10 @@ public:
     {
       monitor->Progress(0.0);
     }
-    Guard([&]() { ContourOnDevice(grid, band, this->HostPhi, scheme, *this->Launcher, sink); });
+    Guard([&]() {
+      ContourOnDevice(grid, band, this->HostPhi, scheme, *this->Launcher, sink,
+        [this](double bytes, const std::string& stage) { this->CheckFreeMemory(bytes, stage); });
+    });
     this->PeakBytes = std::max(this->PeakBytes, this->Launcher->DeviceBytes());
     if (monitor)
     {
