@@ -91,16 +91,44 @@ void Check(cudaError_t status, const std::string& what)
 }
 
 /// The CUDA launcher's memory: cudaMalloc's.
+/// Whether the current device has stream-ordered memory pools (CUDA 11.2
+/// and later on most GPUs): asked once per process.
+bool Pooled()
+{
+  static const bool pooled = []() {
+    int device = 0, supported = 0;
+    const bool asked = cudaGetDevice(&device) == cudaSuccess &&
+      cudaDeviceGetAttribute(&supported, cudaDevAttrMemoryPoolsSupported, device) == cudaSuccess;
+    cudaGetLastError(); // not the run's error: without pools, cudaMalloc
+    return asked && supported != 0;
+  }();
+  return pooled;
+}
+
+/// Device memory from the device's default stream-ordered pool
+/// (cudaMallocAsync on the default stream), where it has one: a free is
+/// ordered after the kernels before it and does not wait for the device
+/// (cudaFree waits for all its work); else cudaMalloc and cudaFree.
 struct CudaMemory
 {
   static void* Allocate(std::size_t bytes, const char* what)
   {
     void* memory = nullptr;
-    Check(cudaMalloc(&memory, bytes),
+    Check(Pooled() ? cudaMallocAsync(&memory, bytes, 0) : cudaMalloc(&memory, bytes),
       std::string("allocating ") + what + ", " + ByteWords(static_cast<double>(bytes)));
     return memory;
   }
-  static void Free(void* memory) { cudaFree(memory); } // errors ignored: it may run while one unwinds
+  static void Free(void* memory) // errors ignored: it may run while one unwinds
+  {
+    if (Pooled())
+    {
+      cudaFreeAsync(memory, 0);
+    }
+    else
+    {
+      cudaFree(memory);
+    }
+  }
 };
 
 /// Copies between host memory that the caller owns (pageable) and the
@@ -373,7 +401,20 @@ public:
   {
     std::size_t free = 0, total = 0;
     Check(cudaMemGetInfo(&free, &total), "asking for the free memory (cudaMemGetInfo)");
-    return static_cast<double>(free);
+    double bytes = static_cast<double>(free);
+    if (Pooled())
+    {
+      // Memory the pool holds but no array uses is free to this launcher.
+      int device = 0;
+      cudaMemPool_t pool;
+      std::uint64_t reserved = 0, used = 0; // cuuint64_t
+      Check(cudaGetDevice(&device), "asking for the device");
+      Check(cudaDeviceGetDefaultMemPool(&pool, device), "asking for the memory pool");
+      Check(cudaMemPoolGetAttribute(pool, cudaMemPoolAttrReservedMemCurrent, &reserved), "asking for the pool's memory");
+      Check(cudaMemPoolGetAttribute(pool, cudaMemPoolAttrUsedMemCurrent, &used), "asking for the pool's memory");
+      bytes += static_cast<double>(reserved > used ? reserved - used : 0);
+    }
+    return bytes;
   }
 
   void Upload(std::int64_t size, const std::uint32_t* neighbor, const double* distance, double inside,
