@@ -377,6 +377,28 @@ __global__ void FinishReduce(const double* partial, int count, double* result)
   }
 }
 
+/// The device's name, asked once per process (cudaGetDeviceProperties
+/// asks the device for all its properties, which takes a while; the CUDA
+/// context, made at the process's first CUDA call, stays for the process
+/// too, so that a later run pays neither).
+std::string NameOf(int device)
+{
+  static std::mutex asking;
+  static std::vector<std::string> names;
+  std::lock_guard<std::mutex> alone(asking);
+  if (names.size() <= static_cast<std::size_t>(device))
+  {
+    names.resize(static_cast<std::size_t>(device) + 1);
+  }
+  if (names[device].empty())
+  {
+    cudaDeviceProp properties;
+    Check(cudaGetDeviceProperties(&properties, device), "cudaGetDeviceProperties");
+    names[device] = properties.name;
+  }
+  return names[device];
+}
+
 class CudaLauncher : public Launcher
 {
 public:
@@ -384,9 +406,7 @@ public:
     : Synchronous(SyncLaunches())
   {
     Check(cudaSetDevice(device), "cudaSetDevice");
-    cudaDeviceProp properties;
-    Check(cudaGetDeviceProperties(&properties, device), "cudaGetDeviceProperties");
-    this->DeviceName = properties.name;
+    this->DeviceName = NameOf(device);
     this->Partial.Allocate(this->Ledger, Slots * MaximumBlocks, "the reductions' partials");
     this->Results.Allocate(this->Ledger, Slots, "the reductions' results");
   }
