@@ -306,8 +306,6 @@ std::int64_t StoreBandNodes(std::vector<BrickBand>& perBrick, const Parameters& 
         band.Offset[s] = e.Offset;
         band.Distance[s++] = e.Distance;
       }
-      std::vector<BandEntry>().swap(perBrick[a].Red);
-      std::vector<BandEntry>().swap(perBrick[a].Black);
     }
   });
   std::vector<BrickBand>().swap(perBrick);
@@ -323,8 +321,8 @@ struct BrickIndex
   static constexpr int Words = BrickNodes / 64;
   std::vector<std::int32_t> Adjacent;  ///< 6 per brick
   std::vector<std::int32_t> BandBrick; ///< per brick: its number among those holding nodes, or -1
-  std::vector<std::uint64_t> Occupied; ///< Words per brick holding nodes
-  std::vector<std::uint8_t> Rank;      ///< BrickNodes per brick holding nodes
+  UninitializedVector<std::uint64_t> Occupied; ///< Words per brick holding nodes
+  UninitializedVector<std::uint8_t> Rank;      ///< BrickNodes per brick holding nodes (where Occupied)
 
   /// Whether node q of band brick b (a slot in band.Bricks, -1: none) is a band node.
   bool Holds(std::int64_t b, int q) const
@@ -338,19 +336,31 @@ BrickIndex IndexBricks(const TruncatedDistance& distance, const NarrowBand& band
 {
   const std::int64_t numberOfBricks = static_cast<std::int64_t>(band.Bricks.size());
   BrickIndex index;
-  std::vector<std::int32_t> slotOfBrick(static_cast<std::size_t>(distance.GetNumberOfBricks()), -1);
+  // Each grid brick's slot in band.Bricks (-1: none), written on all
+  // threads (a 4096^3 grid has 134 million bricks).
+  const std::int64_t gridBricks = distance.GetNumberOfBricks();
+  UninitializedVector<std::int32_t> slotOfBrick(static_cast<std::size_t>(gridBricks));
+  ParallelFor(0, gridBricks, 1 << 16, [&](std::int64_t begin, std::int64_t end) {
+    std::fill(slotOfBrick.begin() + begin, slotOfBrick.begin() + end, -1);
+  });
+  ParallelFor(0, numberOfBricks, 1 << 12, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t a = begin; a < end; ++a)
+    {
+      slotOfBrick[band.Bricks[a]] = static_cast<std::int32_t>(a);
+    }
+  });
   index.BandBrick.resize(static_cast<std::size_t>(numberOfBricks));
   std::int32_t bandBricks = 0;
   for (std::int64_t a = 0; a < numberOfBricks; ++a)
   {
-    slotOfBrick[band.Bricks[a]] = static_cast<std::int32_t>(a);
     const bool holdsNodes =
       band.RedStart[a + 1] > band.RedStart[a] || band.BlackStart[a + 1] > band.BlackStart[a];
     index.BandBrick[a] = holdsNodes ? bandBricks++ : -1;
   }
   index.Adjacent.resize(static_cast<std::size_t>(6 * numberOfBricks));
-  index.Occupied.assign(static_cast<std::size_t>(bandBricks) * BrickIndex::Words, 0);
-  index.Rank.assign(static_cast<std::size_t>(bandBricks) * BrickNodes, 0);
+  // Cleared brick by brick below, on the threads that fill them.
+  index.Occupied.resize(static_cast<std::size_t>(bandBricks) * BrickIndex::Words);
+  index.Rank.resize(static_cast<std::size_t>(bandBricks) * BrickNodes);
   const auto& brickDims = distance.GetBrickDims();
   ParallelFor(0, numberOfBricks, 64, [&](std::int64_t begin, std::int64_t end) {
     for (std::int64_t a = begin; a < end; ++a)
@@ -365,6 +375,11 @@ BrickIndex IndexBricks(const TruncatedDistance& distance, const NarrowBand& band
         index.Adjacent[6 * a + direction] = next >= 0 ? slotOfBrick[next] : -1;
       }
       const std::int64_t t = index.BandBrick[a];
+      if (t >= 0)
+      {
+        std::fill(index.Occupied.begin() + t * BrickIndex::Words, index.Occupied.begin() + (t + 1) * BrickIndex::Words,
+          std::uint64_t(0));
+      }
       for (const auto* start : { &band.RedStart, &band.BlackStart })
       {
         for (std::int64_t s = (*start)[a]; s < (*start)[a + 1]; ++s)
