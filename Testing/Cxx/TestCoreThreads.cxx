@@ -10,6 +10,7 @@
 // pool when vtkSMPTools' backend is Sequential or STDThread: there it is
 // tested as the pool.
 #include "nvParallel.h"
+#include "nvPieces.h"
 #include "nvReconstruct.h"
 #include "nvReconstruction.h"
 #include "nvSurface.h"
@@ -277,6 +278,79 @@ void TestFork()
 
 } // namespace
 
+/// Small pieces removed from a surface of 400,000 tetrahedra (1.6 million
+/// points: the compaction's many chunks and waves), every third one too
+/// small to stay: the kept points and triangles, in their order and
+/// renumbered, the same as a plain serial compaction, for 1, 2 and 5
+/// threads.
+void TestSmallPiecesThreads()
+{
+  const std::int64_t tetrahedra = 400000;
+  nv::SurfaceMesh mesh;
+  std::vector<char> small(static_cast<std::size_t>(tetrahedra));
+  // Points in an order that interleaves the pieces: point k of tetrahedron
+  // i is point k * tetrahedra + i.
+  mesh.Points.resize(3 * 4 * tetrahedra);
+  mesh.Normals.resize(3 * 4 * tetrahedra);
+  for (std::int64_t i = 0; i < tetrahedra; ++i)
+  {
+    small[i] = i % 3 == 1;
+    const double size = small[i] ? 0.01 : 1.0; // volume 1/6 against SmallPieceVolume(0.1) = 0.034
+    const double corner[4][3] = { { 0, 0, 0 }, { size, 0, 0 }, { 0, size, 0 }, { 0, 0, size } };
+    for (int k = 0; k < 4; ++k)
+    {
+      const std::int64_t p = k * tetrahedra + i;
+      for (int a = 0; a < 3; ++a)
+      {
+        mesh.Points[3 * p + a] = 10.0 * static_cast<double>(i) * (a == 0) + corner[k][a];
+        mesh.Normals[3 * p + a] = static_cast<float>(p % 7 + a);
+      }
+    }
+    // Faces outwards: the volume comes out positive (a piece).
+    const int faces[4][3] = { { 0, 2, 1 }, { 0, 1, 3 }, { 0, 3, 2 }, { 1, 2, 3 } };
+    for (const auto& face : faces)
+    {
+      for (int v = 0; v < 3; ++v)
+      {
+        mesh.Triangles.push_back(face[v] * tetrahedra + i);
+      }
+    }
+  }
+  // The serial compaction the result must equal.
+  std::vector<double> points;
+  std::vector<float> normals;
+  std::vector<nv::VertexId> triangles;
+  std::vector<std::int64_t> newId(4 * tetrahedra, -1);
+  for (std::int64_t p = 0; p < 4 * tetrahedra; ++p)
+  {
+    if (!small[p % tetrahedra])
+    {
+      newId[p] = static_cast<std::int64_t>(points.size() / 3);
+      points.insert(points.end(), &mesh.Points[3 * p], &mesh.Points[3 * p] + 3);
+      normals.insert(normals.end(), &mesh.Normals[3 * p], &mesh.Normals[3 * p] + 3);
+    }
+  }
+  for (std::size_t t = 0; t < mesh.Triangles.size(); t += 3)
+  {
+    if (!small[mesh.Triangles[t] % tetrahedra])
+    {
+      for (int v = 0; v < 3; ++v)
+      {
+        triangles.push_back(newId[mesh.Triangles[t + v]]);
+      }
+    }
+  }
+  const nv::Grid grid; // no phi: the grid is not read
+  for (int threads : { 1, 2, 5 })
+  {
+    nv::SurfaceMesh copy = mesh;
+    nv::RemovedPieces removed;
+    nv::WithThreads(threads, [&]() { removed = nv::RemoveSmallPieces(copy, 0.1, grid, nullptr, 0, 0); });
+    NV_CHECK(removed.Pieces == (tetrahedra + 1) / 3 && removed.KeptPieces == tetrahedra - (tetrahedra + 1) / 3);
+    NV_CHECK(copy.Points == points && copy.Normals == normals && copy.Triangles == triangles);
+  }
+}
+
 int main()
 {
   TestCoverage();
@@ -289,6 +363,7 @@ int main()
   TestReductions();
   TestRunThreads();
   TestEntryPoint();
+  TestSmallPiecesThreads();
 #ifndef _WIN32
   if (OnPool())
   {

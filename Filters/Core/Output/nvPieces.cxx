@@ -20,6 +20,68 @@ namespace
 {
 constexpr std::int64_t Grain = 1 << 15; ///< triangles or points per task
 
+/**
+ * Moves the items i of [0, n) for which keep(i) holds to the front, in
+ * their order, in place, on all threads; returns how many stay. Chunk by
+ * chunk of Grain items, in waves of Wave chunks: a wave's kept items are
+ * first read out (read(i, place) gives the item that goes to `place`),
+ * then written to their places (write(place, item)); a place is never
+ * after its item, so a wave writes nothing that a later wave reads.
+ */
+template <typename Item, typename Keep, typename Read, typename Write>
+std::int64_t KeepInOrder(std::int64_t n, const Keep& keep, const Read& read, const Write& write)
+{
+  constexpr std::int64_t Wave = 32; // 1 M items buffered at a time
+  const std::int64_t chunks = (n + Grain - 1) / Grain;
+  // Each chunk's first place: the items kept before it.
+  std::vector<std::int64_t> first(static_cast<std::size_t>(chunks + 1), 0);
+  ParallelFor(0, chunks, 1, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t c = begin; c < end; ++c)
+    {
+      std::int64_t kept = 0;
+      for (std::int64_t i = c * Grain; i < std::min(n, (c + 1) * Grain); ++i)
+      {
+        kept += keep(i) ? 1 : 0;
+      }
+      first[c + 1] = kept;
+    }
+  });
+  for (std::int64_t c = 0; c < chunks; ++c)
+  {
+    first[c + 1] += first[c];
+  }
+  std::vector<std::vector<Item>> items(static_cast<std::size_t>(Wave));
+  for (std::int64_t wave = 0; wave < chunks; wave += Wave)
+  {
+    const std::int64_t last = std::min(chunks, wave + Wave);
+    ParallelFor(wave, last, 1, [&](std::int64_t begin, std::int64_t end) {
+      for (std::int64_t c = begin; c < end; ++c)
+      {
+        std::vector<Item>& out = items[c - wave];
+        out.clear();
+        for (std::int64_t i = c * Grain; i < std::min(n, (c + 1) * Grain); ++i)
+        {
+          if (keep(i))
+          {
+            out.push_back(read(i, first[c] + static_cast<std::int64_t>(out.size())));
+          }
+        }
+      }
+    });
+    ParallelFor(wave, last, 1, [&](std::int64_t begin, std::int64_t end) {
+      for (std::int64_t c = begin; c < end; ++c)
+      {
+        std::int64_t place = first[c];
+        for (const Item& item : items[c - wave])
+        {
+          write(place++, item);
+        }
+      }
+    });
+  }
+  return first[chunks];
+}
+
 } // namespace
 
 void JoinTriangles(const SurfaceArrays& surface, PointParts& parts)
@@ -41,10 +103,12 @@ std::vector<std::int64_t> SurfaceParts(const SurfaceArrays& surface)
   PointParts parts(surface.NumberOfPoints);
   JoinTriangles(surface, parts);
   std::vector<std::int64_t> root(static_cast<std::size_t>(surface.NumberOfPoints));
-  for (std::int64_t p = 0; p < surface.NumberOfPoints; ++p)
-  {
-    root[p] = parts.Parent[p].load(std::memory_order_relaxed);
-  }
+  ParallelFor(0, surface.NumberOfPoints, Grain, [&](std::int64_t first, std::int64_t last) {
+    for (std::int64_t p = first; p < last; ++p)
+    {
+      root[p] = parts.Parent[p].load(std::memory_order_relaxed);
+    }
+  });
   return root;
 }
 
@@ -256,25 +320,36 @@ std::vector<Part> FindParts(const SurfaceArrays& surface, PointParts& parts)
 void MarkSupported(const SurfaceArrays& surface, PointParts& parts,
   const std::function<bool(const double* x)>& supported, std::vector<Part>& found)
 {
+  // Each chunk of points lists the parts (by their place in `found`) that
+  // hold a supported vertex; the lists are then marked.
   const std::int64_t n = surface.NumberOfPoints;
-  std::vector<char> at(static_cast<std::size_t>(n), 0);
-  ParallelFor(0, n, Grain, [&](std::int64_t first, std::int64_t last) {
-    for (std::int64_t p = first; p < last; ++p)
+  const std::int64_t chunks = (n + Grain - 1) / Grain;
+  std::vector<std::vector<std::size_t>> marked(static_cast<std::size_t>(chunks));
+  ParallelFor(0, chunks, 1, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t c = begin; c < end; ++c)
     {
-      at[p] = supported(surface.Points + 3 * p) ? 1 : 0;
+      for (std::int64_t p = c * Grain; p < std::min(n, (c + 1) * Grain); ++p)
+      {
+        if (!supported(surface.Points + 3 * p))
+        {
+          continue;
+        }
+        const std::int64_t root = parts.Parent[p].load(std::memory_order_relaxed);
+        const auto part = std::lower_bound(found.begin(), found.end(), root,
+          [](const Part& u, std::int64_t r) { return u.Root < r; });
+        const std::size_t index = static_cast<std::size_t>(part - found.begin());
+        if (part != found.end() && part->Root == root && (marked[c].empty() || marked[c].back() != index))
+        {
+          marked[c].push_back(index);
+        }
+      }
     }
   });
-  for (std::int64_t p = 0; p < n; ++p)
+  for (const auto& indices : marked)
   {
-    if (at[p])
+    for (std::size_t index : indices)
     {
-      const std::int64_t root = parts.Parent[p].load(std::memory_order_relaxed);
-      const auto part = std::lower_bound(found.begin(), found.end(), root,
-        [](const Part& u, std::int64_t r) { return u.Root < r; });
-      if (part != found.end() && part->Root == root)
-      {
-        part->Supported = true;
-      }
+      found[index].Supported = true;
     }
   }
 }
@@ -346,13 +421,29 @@ void FlipDroppedRegions(const std::vector<Part>& found, const std::vector<char>&
   const SurfaceArrays& surface, const PieceLimits& limits, const RemovedPieces& removed, const Grid& grid,
   float* phi, std::int64_t kBegin, std::int64_t layers)
 {
-  std::unordered_map<std::int64_t, std::vector<std::int64_t>> vertices; // by root
-  for (std::int64_t p = 0; p < surface.NumberOfPoints; ++p)
-  {
-    const std::int64_t root = parts.Parent[p].load(std::memory_order_relaxed);
-    if (drop[root])
+  // The dropped parts' vertices (few), found on all threads chunk by
+  // chunk, then grouped by root in ascending order.
+  const std::int64_t n = surface.NumberOfPoints;
+  const std::int64_t chunks = (n + Grain - 1) / Grain;
+  std::vector<std::vector<std::int64_t>> dropped(static_cast<std::size_t>(chunks));
+  ParallelFor(0, chunks, 1, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t c = begin; c < end; ++c)
     {
-      vertices[root].push_back(p);
+      for (std::int64_t p = c * Grain; p < std::min(n, (c + 1) * Grain); ++p)
+      {
+        if (drop[parts.Parent[p].load(std::memory_order_relaxed)])
+        {
+          dropped[c].push_back(p);
+        }
+      }
+    }
+  });
+  std::unordered_map<std::int64_t, std::vector<std::int64_t>> vertices; // by root
+  for (const auto& points : dropped)
+  {
+    for (std::int64_t p : points)
+    {
+      vertices[parts.Parent[p].load(std::memory_order_relaxed)].push_back(p);
     }
   }
   for (const Part& part : found)
@@ -372,30 +463,44 @@ void KeepParts(SurfaceArrays& surface, const std::vector<char>& drop, PointParts
 {
   const std::int64_t n = surface.NumberOfPoints, m = surface.NumberOfTriangles;
   auto root = [&parts](std::int64_t p) { return parts.Parent[p].load(std::memory_order_relaxed); };
+  // The points (their new ids noted as they are read), then the triangles
+  // with their points' new ids, each in place on all threads.
+  struct Point
+  {
+    double X[3];
+    float Normal[3];
+  };
+  struct Triangle
+  {
+    VertexId Ids[3];
+  };
   std::vector<std::int64_t> newId(static_cast<std::size_t>(n), -1);
-  std::int64_t kept = 0;
-  for (std::int64_t p = 0; p < n; ++p)
-  {
-    if (!drop[root(p)])
-    {
-      newId[p] = kept;
-      std::copy(surface.Points + 3 * p, surface.Points + 3 * p + 3, surface.Points + 3 * kept);
-      std::copy(surface.Normals + 3 * p, surface.Normals + 3 * p + 3, surface.Normals + 3 * kept);
-      ++kept;
-    }
-  }
-  std::int64_t keptTriangles = 0;
-  for (std::int64_t t = 0; t < m; ++t)
-  {
-    if (!drop[root(surface.Triangles[3 * t])])
-    {
+  const std::int64_t kept = KeepInOrder<Point>(
+    n, [&](std::int64_t p) { return !drop[root(p)]; },
+    [&](std::int64_t p, std::int64_t place) {
+      newId[p] = place;
+      Point point;
+      std::copy(surface.Points + 3 * p, surface.Points + 3 * p + 3, point.X);
+      std::copy(surface.Normals + 3 * p, surface.Normals + 3 * p + 3, point.Normal);
+      return point;
+    },
+    [&](std::int64_t place, const Point& point) {
+      std::copy(point.X, point.X + 3, surface.Points + 3 * place);
+      std::copy(point.Normal, point.Normal + 3, surface.Normals + 3 * place);
+    });
+  const std::int64_t keptTriangles = KeepInOrder<Triangle>(
+    m, [&](std::int64_t t) { return !drop[root(surface.Triangles[3 * t])]; },
+    [&](std::int64_t t, std::int64_t) {
+      Triangle triangle;
       for (int c = 0; c < 3; ++c)
       {
-        surface.Triangles[3 * keptTriangles + c] = newId[surface.Triangles[3 * t + c]];
+        triangle.Ids[c] = static_cast<VertexId>(newId[surface.Triangles[3 * t + c]]);
       }
-      ++keptTriangles;
-    }
-  }
+      return triangle;
+    },
+    [&](std::int64_t place, const Triangle& triangle) {
+      std::copy(triangle.Ids, triangle.Ids + 3, surface.Triangles + 3 * place);
+    });
   surface.NumberOfPoints = kept;
   surface.NumberOfTriangles = keptTriangles;
 }
