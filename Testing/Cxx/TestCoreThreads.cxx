@@ -279,10 +279,9 @@ void TestFork()
 } // namespace
 
 /// Small pieces removed from a surface of 400,000 tetrahedra (1.6 million
-/// points: the compaction's many chunks and waves), every third one too
-/// small to stay: the kept points and triangles, in their order and
-/// renumbered, the same as a plain serial compaction, for 1, 2 and 5
-/// threads.
+/// points, the parts' loops over many chunks), every third one too small
+/// to stay: the kept points and triangles, in their order and renumbered,
+/// the same as a plain serial compaction, for 1, 2 and 5 threads.
 void TestSmallPiecesThreads()
 {
   const std::int64_t tetrahedra = 400000;

@@ -20,68 +20,6 @@ namespace
 {
 constexpr std::int64_t Grain = 1 << 15; ///< triangles or points per task
 
-/**
- * Moves the items i of [0, n) for which keep(i) holds to the front, in
- * their order, in place, on all threads; returns how many stay. Chunk by
- * chunk of Grain items, in waves of Wave chunks: a wave's kept items are
- * first read out (read(i, place) gives the item that goes to `place`),
- * then written to their places (write(place, item)); a place is never
- * after its item, so a wave writes nothing that a later wave reads.
- */
-template <typename Item, typename Keep, typename Read, typename Write>
-std::int64_t KeepInOrder(std::int64_t n, const Keep& keep, const Read& read, const Write& write)
-{
-  constexpr std::int64_t Wave = 32; // 1 M items buffered at a time
-  const std::int64_t chunks = (n + Grain - 1) / Grain;
-  // Each chunk's first place: the items kept before it.
-  std::vector<std::int64_t> first(static_cast<std::size_t>(chunks + 1), 0);
-  ParallelFor(0, chunks, 1, [&](std::int64_t begin, std::int64_t end) {
-    for (std::int64_t c = begin; c < end; ++c)
-    {
-      std::int64_t kept = 0;
-      for (std::int64_t i = c * Grain; i < std::min(n, (c + 1) * Grain); ++i)
-      {
-        kept += keep(i) ? 1 : 0;
-      }
-      first[c + 1] = kept;
-    }
-  });
-  for (std::int64_t c = 0; c < chunks; ++c)
-  {
-    first[c + 1] += first[c];
-  }
-  std::vector<std::vector<Item>> items(static_cast<std::size_t>(Wave));
-  for (std::int64_t wave = 0; wave < chunks; wave += Wave)
-  {
-    const std::int64_t last = std::min(chunks, wave + Wave);
-    ParallelFor(wave, last, 1, [&](std::int64_t begin, std::int64_t end) {
-      for (std::int64_t c = begin; c < end; ++c)
-      {
-        std::vector<Item>& out = items[c - wave];
-        out.clear();
-        for (std::int64_t i = c * Grain; i < std::min(n, (c + 1) * Grain); ++i)
-        {
-          if (keep(i))
-          {
-            out.push_back(read(i, first[c] + static_cast<std::int64_t>(out.size())));
-          }
-        }
-      }
-    });
-    ParallelFor(wave, last, 1, [&](std::int64_t begin, std::int64_t end) {
-      for (std::int64_t c = begin; c < end; ++c)
-      {
-        std::int64_t place = first[c];
-        for (const Item& item : items[c - wave])
-        {
-          write(place++, item);
-        }
-      }
-    });
-  }
-  return first[chunks];
-}
-
 } // namespace
 
 void JoinTriangles(const SurfaceArrays& surface, PointParts& parts)
@@ -463,44 +401,30 @@ void KeepParts(SurfaceArrays& surface, const std::vector<char>& drop, PointParts
 {
   const std::int64_t n = surface.NumberOfPoints, m = surface.NumberOfTriangles;
   auto root = [&parts](std::int64_t p) { return parts.Parent[p].load(std::memory_order_relaxed); };
-  // The points (their new ids noted as they are read), then the triangles
-  // with their points' new ids, each in place on all threads.
-  struct Point
-  {
-    double X[3];
-    float Normal[3];
-  };
-  struct Triangle
-  {
-    VertexId Ids[3];
-  };
   std::vector<std::int64_t> newId(static_cast<std::size_t>(n), -1);
-  const std::int64_t kept = KeepInOrder<Point>(
-    n, [&](std::int64_t p) { return !drop[root(p)]; },
-    [&](std::int64_t p, std::int64_t place) {
-      newId[p] = place;
-      Point point;
-      std::copy(surface.Points + 3 * p, surface.Points + 3 * p + 3, point.X);
-      std::copy(surface.Normals + 3 * p, surface.Normals + 3 * p + 3, point.Normal);
-      return point;
-    },
-    [&](std::int64_t place, const Point& point) {
-      std::copy(point.X, point.X + 3, surface.Points + 3 * place);
-      std::copy(point.Normal, point.Normal + 3, surface.Normals + 3 * place);
-    });
-  const std::int64_t keptTriangles = KeepInOrder<Triangle>(
-    m, [&](std::int64_t t) { return !drop[root(surface.Triangles[3 * t])]; },
-    [&](std::int64_t t, std::int64_t) {
-      Triangle triangle;
+  std::int64_t kept = 0;
+  for (std::int64_t p = 0; p < n; ++p)
+  {
+    if (!drop[root(p)])
+    {
+      newId[p] = kept;
+      std::copy(surface.Points + 3 * p, surface.Points + 3 * p + 3, surface.Points + 3 * kept);
+      std::copy(surface.Normals + 3 * p, surface.Normals + 3 * p + 3, surface.Normals + 3 * kept);
+      ++kept;
+    }
+  }
+  std::int64_t keptTriangles = 0;
+  for (std::int64_t t = 0; t < m; ++t)
+  {
+    if (!drop[root(surface.Triangles[3 * t])])
+    {
       for (int c = 0; c < 3; ++c)
       {
-        triangle.Ids[c] = static_cast<VertexId>(newId[surface.Triangles[3 * t + c]]);
+        surface.Triangles[3 * keptTriangles + c] = newId[surface.Triangles[3 * t + c]];
       }
-      return triangle;
-    },
-    [&](std::int64_t place, const Triangle& triangle) {
-      std::copy(triangle.Ids, triangle.Ids + 3, surface.Triangles + 3 * place);
-    });
+      ++keptTriangles;
+    }
+  }
   surface.NumberOfPoints = kept;
   surface.NumberOfTriangles = keptTriangles;
 }
