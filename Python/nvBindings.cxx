@@ -564,7 +564,15 @@ NB_MODULE(_core, m)
     .def("DeviceUsed", [](const PythonRun& r) { return r.Run.DeviceName(); },
       "\"CPU\", \"GPU\", or \"GPU on the host\" (host_launcher): where the run computed.")
     .def("DeviceBytes", [](const PythonRun& r) { return r.Run.DeviceBytes(); },
-      "The most bytes the GPU held at once (0 on the CPU).");
+      "The most bytes the GPU held at once (0 on the CPU).")
+    .def(
+      "DeviceCopies",
+      [](const PythonRun& r) {
+        const nv::CopyCounts c = r.Run.DeviceCopies();
+        return nb::make_tuple(c.ToHostBytes, c.ToHostSeconds, c.ToDeviceBytes, c.ToDeviceSeconds);
+      },
+      "The run's copies between the host and the GPU: (bytes to the host, their seconds, bytes to the GPU, "
+      "their seconds); zeros on the CPU and through the host launcher.");
 
   m.attr("SamplingStage") = nv::SamplingStage;
 }

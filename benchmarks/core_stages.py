@@ -31,7 +31,9 @@ On the GPU (--device gpu) each process first makes a small run on the GPU
 allocations) and reports its seconds apart, in the row "GPU context and
 first run", not in the stages; during the timed run a thread samples the
 device's memory in use (CuPy's cudaMemGetInfo, else nvidia-smi), shown
-beside the launcher's own count. --timeout caps the runs together: a run
+beside the launcher's own count; the run's copies between the host and the
+GPU (Reconstruction.DeviceCopies: bytes each way, and the bandwidth over
+the copies' own time) get rows of their own. --timeout caps the runs together: a run
 not done in time is left out of the table with a line saying so (the GPU's
 runs go before the CPU's, so that they are the ones kept). --table prints
 one table of several grids from the --json files of earlier runs
@@ -214,7 +216,8 @@ def child(args):
                   device_used=run.DeviceUsed(), band_nodes=run.NumberOfBandNodes(),
                   stages=stages, whole=whole,
                   peak_mb=resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0,
-                  device_mb=run.DeviceBytes() / 2.0 ** 20)
+                  device_mb=run.DeviceBytes() / 2.0 ** 20,
+                  copies=list(run.DeviceCopies()))
     if context is not None:
         record["context_s"] = context
     if memory and memory.how:
@@ -334,6 +337,19 @@ def print_table(records):
     if any(c[1] != "cpu" for c in columns):
         row("GPU memory, the launcher's count (MB)",
             lambda r: r["device_mb"] if r["device"] != "cpu" else None, "%.0f", False)
+    if any(r.get("copies") and (r["copies"][0] > 0 or r["copies"][2] > 0) for r in records):
+        def copied(r, way):
+            c = r.get("copies") or [0.0] * 4
+            return c[2 * way] / 1e9 if r["device"] != "cpu" else None
+
+        def bandwidth(r, way):
+            c = r.get("copies") or [0.0] * 4
+            return c[2 * way] / c[2 * way + 1] / 1e9 if r["device"] != "cpu" and c[2 * way + 1] > 0 else None
+
+        row("copied to the host (GB)", lambda r: copied(r, 0), "%.2f", False)
+        row("at (GB/s, the copies' own time)", lambda r: bandwidth(r, 0), "%.1f", False)
+        row("copied to the GPU (GB)", lambda r: copied(r, 1), "%.2f", False)
+        row("at (GB/s)", lambda r: bandwidth(r, 1), "%.1f", False)
     if any("device_used_mb" in r for r in records):
         row("GPU memory in use at the peak, the whole device (MB)", lambda r: r.get("device_used_mb"), "%.0f", False)
         row("of which before the run: the context and the launcher's reserves (MB)",

@@ -711,6 +711,7 @@ public:
   std::string Name() const override { return "failing host launcher"; }
   double DeviceBytes() const override { return this->Host->DeviceBytes(); }
   double HeldBytes() const override { return this->Host->HeldBytes(); }
+  nv::CopyCounts Copies() const override { return this->Host->Copies(); }
   /// "evolution memory": 1 kB free once the band is stored, as a device
   /// that something else filled meanwhile; "surface memory": once the
   /// evolution is done.

@@ -51,6 +51,7 @@
 #include <cuda_runtime.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <cstring>
 #include <mutex>
@@ -147,6 +148,7 @@ public:
   /// `bytes` of device memory into host memory.
   void ToHost(void* host, const void* device, std::size_t bytes, const std::string& what)
   {
+    const Timer timer(this, bytes, true);
     if (bytes < Direct)
     {
       Check(cudaMemcpy(host, device, bytes, cudaMemcpyDeviceToHost), "copying " + what);
@@ -184,6 +186,7 @@ public:
   /// `bytes` of host memory into device memory.
   void ToDevice(void* device, const void* host, std::size_t bytes, const std::string& what)
   {
+    const Timer timer(this, bytes, false);
     if (bytes < Direct)
     {
       Check(cudaMemcpy(device, host, bytes, cudaMemcpyHostToDevice), "copying " + what);
@@ -214,7 +217,37 @@ public:
     Check(cudaStreamSynchronize(this->Stream), "copying " + what);
   }
 
+  /// The process's copies so far, each way.
+  CopyCounts Counted() const
+  {
+    std::lock_guard<std::mutex> alone(this->Counting);
+    return this->Counts;
+  }
+
 private:
+  /// Adds a copy's bytes and seconds to Counts when it ends.
+  struct Timer
+  {
+    Staging* Self;
+    std::size_t Bytes;
+    bool ToHost;
+    std::chrono::steady_clock::time_point Start = std::chrono::steady_clock::now();
+    Timer(Staging* self, std::size_t bytes, bool toHost)
+      : Self(self)
+      , Bytes(bytes)
+      , ToHost(toHost)
+    {
+    }
+    ~Timer()
+    {
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - this->Start).count();
+      std::lock_guard<std::mutex> alone(this->Self->Counting);
+      CopyCounts& c = this->Self->Counts;
+      (this->ToHost ? c.ToHostBytes : c.ToDeviceBytes) += static_cast<double>(this->Bytes);
+      (this->ToHost ? c.ToHostSeconds : c.ToDeviceSeconds) += seconds;
+    }
+  };
+
   static constexpr std::size_t Chunk = std::size_t(16) << 20;  ///< bytes a staging buffer holds
   static constexpr std::size_t Direct = std::size_t(4) << 20;  ///< smaller copies go straight
 
@@ -248,6 +281,8 @@ private:
   }
 
   std::mutex Busy;
+  mutable std::mutex Counting;
+  CopyCounts Counts;
   void* Buffer[2] = { nullptr, nullptr };
   cudaEvent_t Done[2] = { nullptr, nullptr }; ///< each buffer's copy done
   cudaStream_t Stream = nullptr;
@@ -417,6 +452,17 @@ public:
   std::string Name() const override { return "CUDA (" + this->DeviceName + ")"; }
   double DeviceBytes() const override { return this->Ledger.Peak(); }
   double HeldBytes() const override { return this->Ledger.Held(); }
+  /// The process's copies since this launcher was made.
+  CopyCounts Copies() const override
+  {
+    const CopyCounts now = this->Transfers.Counted();
+    CopyCounts since;
+    since.ToHostBytes = now.ToHostBytes - this->CopiedBefore.ToHostBytes;
+    since.ToHostSeconds = now.ToHostSeconds - this->CopiedBefore.ToHostSeconds;
+    since.ToDeviceBytes = now.ToDeviceBytes - this->CopiedBefore.ToDeviceBytes;
+    since.ToDeviceSeconds = now.ToDeviceSeconds - this->CopiedBefore.ToDeviceSeconds;
+    return since;
+  }
   double FreeBytes() const override
   {
     std::size_t free = 0, total = 0;
@@ -461,11 +507,11 @@ public:
     this->Phi.Allocate(this->Ledger, size + 2, "phi");
     if (!held)
     {
-      this->Copies.ToDevice(this->Neighbor.Data(), neighbor, sizeof(std::uint32_t) * 6 * size, "the neighbour table");
-      this->Copies.ToDevice(this->Distance.Data(), distance, sizeof(double) * size, "the distances");
+      this->Transfers.ToDevice(this->Neighbor.Data(), neighbor, sizeof(std::uint32_t) * 6 * size, "the neighbour table");
+      this->Transfers.ToDevice(this->Distance.Data(), distance, sizeof(double) * size, "the distances");
     }
     const double slots[2] = { inside, outside };
-    this->Copies.ToDevice(this->Phi.Data() + size, slots, sizeof(slots), "eq. (5)'s values into phi");
+    this->Transfers.ToDevice(this->Phi.Data() + size, slots, sizeof(slots), "eq. (5)'s values into phi");
     this->A.Neighbor = this->Neighbor.Data();
     this->A.Distance = this->Distance.Data();
     this->A.Phi = this->Phi.Data();
@@ -512,7 +558,7 @@ public:
   void Download(UninitializedVector<double>& phi) override
   {
     phi.resize(static_cast<std::size_t>(this->A.Size + 2));
-    this->Copies.ToHost(phi.data(), this->Phi.Data(), sizeof(double) * (this->A.Size + 2), "phi back");
+    this->Transfers.ToHost(phi.data(), this->Phi.Data(), sizeof(double) * (this->A.Size + 2), "phi back");
   }
 
   void ReleaseEvolution() override
@@ -538,7 +584,7 @@ public:
     this->BucketStart.Allocate(this->Ledger, a.NumberOfBricks + 1, "the points' buckets");
     // Freed on the way out, whatever happens: the cloud, each point's
     // brick, the buckets' free slots, the marks of the reached bricks, the chunks.
-    Scratch scratch(this->Copies);
+    Scratch scratch(this->Transfers);
     a.Cloud = scratch.Copy(this->Ledger, cloud, 3 * numberOfPoints, "the cloud");
     a.BrickOf = scratch.Get<std::int64_t>(this->Ledger, numberOfPoints, "each point's brick");
     a.Next = scratch.Get<std::int64_t>(this->Ledger, a.NumberOfBricks, "the buckets' free slots");
@@ -567,7 +613,7 @@ public:
     reached.resize(static_cast<std::size_t>(total));
     if (total > 0)
     {
-      this->Copies.ToHost(reached.data(), a.ReachList, sizeof(std::int64_t) * total, "the reached bricks back");
+      this->Transfers.ToHost(reached.data(), a.ReachList, sizeof(std::int64_t) * total, "the reached bricks back");
     }
   }
   void DistanceBricks(const std::int64_t* bricks, std::int64_t count, const DistanceConstants& constants,
@@ -585,7 +631,7 @@ public:
       this->Covered.Allocate(this->Ledger, count, "the covered bricks of a batch");
       this->BatchCapacity = count;
     }
-    this->Copies.ToDevice(this->Bricks.Data(), bricks, sizeof(std::int64_t) * count, "the bricks of a batch");
+    this->Transfers.ToDevice(this->Bricks.Data(), bricks, sizeof(std::int64_t) * count, "the bricks of a batch");
     DistanceArrays arrays;
     arrays.Points = this->Points.Data();
     arrays.BucketStart = this->BucketStart.Data();
@@ -597,11 +643,11 @@ public:
     this->Launch("DistanceKernel", 0, count * 512, DistanceKernel{ arrays, constants });
     if (covered)
     {
-      this->Copies.ToHost(covered, this->Covered.Data(), count, "the covered bricks back");
+      this->Transfers.ToHost(covered, this->Covered.Data(), count, "the covered bricks back");
     }
     if (distance)
     {
-      this->Copies.ToHost(distance, this->BrickDistance.Data(), sizeof(double) * 512 * count, "the distances of a batch back");
+      this->Transfers.ToHost(distance, this->BrickDistance.Data(), sizeof(double) * 512 * count, "the distances of a batch back");
     }
   }
   void BandNodes(std::int64_t count, const BandNodeConstants& constants, std::int32_t* red, std::int32_t* black,
@@ -631,13 +677,13 @@ public:
     arrays.BlackFirst = this->BlackFirst.Data();
     arrays.Inside = this->Inside.Data();
     this->Launch("BandCountKernel", 0, count, BandCountKernel{ arrays, constants });
-    this->Copies.ToHost(red, arrays.RedCount, sizeof(std::int32_t) * count, "the red counts back");
-    this->Copies.ToHost(black, arrays.BlackCount, sizeof(std::int32_t) * count, "the black counts back");
-    this->Copies.ToHost(inside, arrays.Inside, sizeof(std::uint64_t) * 8 * count, "the inside bits back");
+    this->Transfers.ToHost(red, arrays.RedCount, sizeof(std::int32_t) * count, "the red counts back");
+    this->Transfers.ToHost(black, arrays.BlackCount, sizeof(std::int32_t) * count, "the black counts back");
+    this->Transfers.ToHost(inside, arrays.Inside, sizeof(std::uint64_t) * 8 * count, "the inside bits back");
     std::vector<std::int64_t> redFirst, blackFirst;
     FirstNodes(red, black, count, redFirst, blackFirst);
-    this->Copies.ToDevice(this->RedFirst.Data(), redFirst.data(), sizeof(std::int64_t) * count, "the red nodes' places");
-    this->Copies.ToDevice(this->BlackFirst.Data(), blackFirst.data(), sizeof(std::int64_t) * count, "the black nodes' places");
+    this->Transfers.ToDevice(this->RedFirst.Data(), redFirst.data(), sizeof(std::int64_t) * count, "the red nodes' places");
+    this->Transfers.ToDevice(this->BlackFirst.Data(), blackFirst.data(), sizeof(std::int64_t) * count, "the black nodes' places");
     // The batch's list of band nodes, kept until StoreBand (freed here if
     // anything below fails).
     BatchNodes batch;
@@ -672,7 +718,7 @@ public:
     this->Batches.clear();
     if (size > 0)
     {
-      this->Copies.ToHost(offset, this->BandOffset.Data(), sizeof(std::uint16_t) * size, "the band's node places back");
+      this->Transfers.ToHost(offset, this->BandOffset.Data(), sizeof(std::uint16_t) * size, "the band's node places back");
     }
     this->BandSize = size;
     this->BandRedCount = redCount;
@@ -680,7 +726,7 @@ public:
   void ConnectBand(const std::int64_t* bricks, const std::int64_t* redStart, const std::int64_t* blackStart,
     std::int64_t numberOfBricks, const NeighbourConstants& constants) override
   {
-    Scratch scratch(this->Copies); // the copies below, freed on the way out
+    Scratch scratch(this->Transfers); // the copies below, freed on the way out
     NeighbourArrays band;
     band.NumberOfBricks = numberOfBricks;
     band.RedCount = this->BandRedCount;
@@ -701,8 +747,8 @@ public:
   {
     if (this->BandSize > 0)
     {
-      this->Copies.ToHost(distance, this->Distance.Data(), sizeof(double) * this->BandSize, "the band's distances back");
-      this->Copies.ToHost(neighbor, this->Neighbor.Data(), sizeof(std::uint32_t) * 6 * this->BandSize, "the neighbour table back");
+      this->Transfers.ToHost(distance, this->Distance.Data(), sizeof(double) * this->BandSize, "the band's distances back");
+      this->Transfers.ToHost(neighbor, this->Neighbor.Data(), sizeof(std::uint32_t) * 6 * this->BandSize, "the neighbour table back");
     }
   }
   void FreePoints() override
@@ -727,7 +773,7 @@ public:
     // Up: the band's bricks, their starts and inside bits; here: a mark a
     // grid brick and the chunks' sums; back: the chunks' sums and the list.
     // All freed on the way out (ContourCounts uploads the band again).
-    Scratch scratch(this->Copies);
+    Scratch scratch(this->Transfers);
     ContourArrays k;
     const std::int64_t bricks = band.NumberOfBricks;
     k.NumberOfBricks = bricks;
@@ -753,7 +799,7 @@ public:
     cut.resize(static_cast<std::size_t>(total));
     if (total > 0)
     {
-      this->Copies.ToHost(cut.data(), list.ReachList, sizeof(std::int64_t) * total, "the cut bricks back");
+      this->Transfers.ToHost(cut.data(), list.ReachList, sizeof(std::int64_t) * total, "the cut bricks back");
     }
   }
   void ContourCounts(const ContourArrays& band, std::int64_t numberOfNodes, const ContourConstants& constants,
@@ -790,8 +836,8 @@ public:
     this->Launch("CutCellsKernel", 0, cut, CutCellsKernel{ k, constants });
     if (cut > 0)
     {
-      this->Copies.ToHost(vertices, k.VertexCount, sizeof(std::int32_t) * cut, "the vertex counts back");
-      this->Copies.ToHost(triangles, k.TriangleCount, sizeof(std::int32_t) * cut, "the triangle counts back");
+      this->Transfers.ToHost(vertices, k.VertexCount, sizeof(std::int32_t) * cut, "the vertex counts back");
+      this->Transfers.ToHost(triangles, k.TriangleCount, sizeof(std::int32_t) * cut, "the triangle counts back");
     }
   }
   void ContourGeometry(const std::int64_t* firstVertex, const std::int64_t* firstTriangle,
@@ -835,14 +881,14 @@ public:
       this->Launch("TrianglesKernel", begin, end, TrianglesKernel{ k, this->KC });
       if (vertices > 0)
       {
-        this->Copies.ToHost(
+        this->Transfers.ToHost(
           points + 3 * k.PointsBase, k.Points, sizeof(double) * 3 * vertices, "the vertices back");
-        this->Copies.ToHost(
+        this->Transfers.ToHost(
           normals + 3 * k.PointsBase, k.Normals, sizeof(float) * 3 * vertices, "the normals back");
       }
       if (slabTriangles > 0)
       {
-        this->Copies.ToHost(triangles + 3 * k.TrianglesBase, k.Triangles, sizeof(long long) * 3 * slabTriangles,
+        this->Transfers.ToHost(triangles + 3 * k.TrianglesBase, k.Triangles, sizeof(long long) * 3 * slabTriangles,
           "the triangles back");
       }
     }
@@ -879,7 +925,7 @@ public:
   }
   void DenseBand(const DenseBandArrays& band, std::int64_t numberOfBricks, std::int64_t numberOfNodes) override
   {
-    Scratch scratch(this->Copies); // the band's copies, freed on the way out
+    Scratch scratch(this->Transfers); // the band's copies, freed on the way out
     DenseBandArrays onDevice;
     onDevice.Bricks = scratch.Copy(this->Ledger, band.Bricks, numberOfBricks, "the band's bricks");
     onDevice.RedStart = scratch.Copy(this->Ledger, band.RedStart, numberOfBricks + 1, "the band's red starts");
@@ -897,13 +943,13 @@ public:
     const std::int64_t nodes = this->VC.Nodes();
     const std::size_t floats = sizeof(float) * static_cast<std::size_t>(nodes);
     if (this->V.Phi)
-      this->Copies.ToHost(this->HostDense.Phi, this->V.Phi, floats, "the dense phi back");
+      this->Transfers.ToHost(this->HostDense.Phi, this->V.Phi, floats, "the dense phi back");
     if (this->V.InitialPhi)
-      this->Copies.ToHost(this->HostDense.InitialPhi, this->V.InitialPhi, floats, "the dense phi0 back");
+      this->Transfers.ToHost(this->HostDense.InitialPhi, this->V.InitialPhi, floats, "the dense phi0 back");
     if (this->V.Distance)
-      this->Copies.ToHost(this->HostDense.Distance, this->V.Distance, floats, "the dense distances back");
+      this->Transfers.ToHost(this->HostDense.Distance, this->V.Distance, floats, "the dense distances back");
     if (this->V.Band)
-      this->Copies.ToHost(this->HostDense.Band, this->V.Band, static_cast<std::size_t>(nodes), "the dense band flags back");
+      this->Transfers.ToHost(this->HostDense.Band, this->V.Band, static_cast<std::size_t>(nodes), "the dense band flags back");
     this->ReleaseDense();
   }
 
@@ -927,9 +973,9 @@ private:
     {
       return 0;
     }
-    this->Copies.ToHost(hostSums.data(), sums, sizeof(std::int64_t) * hostSums.size(), "the chunks' sums back");
+    this->Transfers.ToHost(hostSums.data(), sums, sizeof(std::int64_t) * hostSums.size(), "the chunks' sums back");
     const std::int64_t total = ChunkStarts(hostSums, hostFirst);
-    this->Copies.ToDevice(first, hostFirst.data(), sizeof(std::int64_t) * hostFirst.size(), "the chunks' starts");
+    this->Transfers.ToDevice(first, hostFirst.data(), sizeof(std::int64_t) * hostFirst.size(), "the chunks' starts");
     return total;
   }
   void ReleaseContour()
@@ -1002,7 +1048,7 @@ private:
   /// Results[0 .. count) into host memory: one small read, after the kernels.
   void ReadResults(int count, double* values, const char* what)
   {
-    this->Copies.ToHost(values, this->Results.Data(), sizeof(double) * count, std::string(what) + " back");
+    this->Transfers.ToHost(values, this->Results.Data(), sizeof(double) * count, std::string(what) + " back");
   }
 
   std::string DeviceName;
@@ -1010,7 +1056,8 @@ private:
   /// Counts the arrays below; declared first, so that it outlives them.
   DeviceLedger Ledger;
   /// The copies to and from host memory (pinned buffers, a stream).
-  Staging& Copies = SharedStaging();
+  Staging& Transfers = SharedStaging();
+  CopyCounts CopiedBefore = Transfers.Counted(); ///< the process's copies before this launcher
   // The truncated distance's arrays (DistanceArrays), until FreePoints.
   Array<double> Points;
   Array<std::int64_t> BucketStart;
@@ -1061,7 +1108,7 @@ private:
   // ContourUploads, the others below, until ContourGeometry ends.
   ContourArrays K;
   ContourConstants KC;
-  Scratch ContourUploads{ this->Copies };
+  Scratch ContourUploads{ this->Transfers };
   Array<float> Psi;
   Array<std::uint64_t> Cut;
   Array<std::uint16_t> Above;

@@ -22,6 +22,7 @@
 #include "nvSurfaceKernels.h"
 #include "nvVolumeKernels.h"
 #include "nvDeviceMemory.h"
+#include "nvDevices.h"
 #include "nvMemory.h"
 
 #include <cstdint>
@@ -208,6 +209,9 @@ public:
   /// The bytes its buffers hold now: 0 once it has let everything go,
   /// whatever failed before.
   virtual double HeldBytes() const = 0;
+  /// Its copies between the host and the device so far (none for the host
+  /// launcher).
+  virtual CopyCounts Copies() const = 0;
   /// The device's free memory now, in bytes: cudaMemGetInfo's on a GPU; the
   /// host launcher's, the host's available memory (HostAvailableBytes) or
   /// the test hook's (HostLauncherHooks). The run compares what it will

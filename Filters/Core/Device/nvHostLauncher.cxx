@@ -175,6 +175,7 @@ public:
   {
     return this->Hooks.FreeBytes >= 0.0 ? this->Hooks.FreeBytes : HostAvailableBytes();
   }
+  CopyCounts Copies() const override { return CopyCounts(); } // its arrays are the host's
 
   void Upload(std::int64_t size, const std::uint32_t* neighbor, const double* distance, double inside,
     double outside) override

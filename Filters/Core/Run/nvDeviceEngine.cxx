@@ -188,9 +188,14 @@ public:
   }
 
   double DeviceBytes() const override { return this->PeakBytes; }
+  CopyCounts DeviceCopies() const override { return this->Launcher ? this->Launcher->Copies() : this->Copied; }
 
   void Release() override
   {
+    if (this->Launcher)
+    {
+      this->Copied = this->Launcher->Copies();
+    }
     BandValues().swap(this->HostPhi);
     this->Evolved = false;
     this->Launcher.reset(); // and phi on the device
@@ -231,6 +236,7 @@ private:
   bool Evolved = false;            ///< the launcher holds the evolved phi
   mutable BandValues HostPhi;       ///< its copy on the host, once Phi is asked for
   double PeakBytes = 0.0;
+  CopyCounts Copied; ///< the launcher's, once it is gone
 };
 } // namespace
 

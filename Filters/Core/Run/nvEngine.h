@@ -116,6 +116,8 @@ public:
     SurfaceSink& sink, Monitor* monitor) = 0;
   /// The most bytes the device held at once (0 for the CPU).
   virtual double DeviceBytes() const { return 0.0; }
+  /// The copies between the host and the device so far (none on the CPU).
+  virtual CopyCounts DeviceCopies() const { return CopyCounts(); }
   /// Frees phi and everything else the engine holds.
   virtual void Release() = 0;
 };

@@ -198,6 +198,11 @@ double Reconstruction::DeviceBytes() const
   return this->TheEngine ? this->TheEngine->DeviceBytes() : 0.0;
 }
 
+CopyCounts Reconstruction::DeviceCopies() const
+{
+  return this->TheEngine ? this->TheEngine->DeviceCopies() : CopyCounts();
+}
+
 const BandValues& Reconstruction::GetPhi() const
 {
   static const BandValues none;

@@ -151,6 +151,9 @@ public:
   /// to the evolution's end (the dense volume's included), or while it made
   /// the surface (ExtractSurface), whichever held more.
   double DeviceBytes() const;
+  /// The run's copies between the host and the GPU, bytes and seconds each
+  /// way (none on the CPU or through the host launcher).
+  CopyCounts DeviceCopies() const;
 
   /// Frees the band and phi once the outputs no longer need them (after the
   /// surface is extracted), so that the surface's last steps (small pieces,
