@@ -91,7 +91,6 @@ void Check(cudaError_t status, const std::string& what)
   throw DeviceError(message);
 }
 
-/// The CUDA launcher's memory: cudaMalloc's.
 /// Whether the current device has stream-ordered memory pools (CUDA 11.2
 /// and later on most GPUs): asked once per process.
 bool Pooled()
@@ -138,8 +137,9 @@ struct CudaMemory
 /// before it (a blocking stream waits for the default one): the device
 /// copies one chunk while the host's threads copy the other (ParallelFor).
 /// Smaller copies, and all copies where the pinned buffers cannot be had,
-/// go straight (cudaMemcpy). Each copy returns once its bytes are where they
-/// go. One Staging serves the process (SharedStaging): pinning memory takes
+/// go straight (cudaMemcpy). Each copy waits for the kernels before it
+/// (as a copy on the default stream would), then is timed (Counted), and
+/// returns once its bytes are where they go. One Staging serves the process (SharedStaging): pinning memory takes
 /// time, so the buffers (2 Chunk bytes) are made at the first large copy and
 /// kept; a copy holds them alone (Busy).
 class Staging
@@ -148,7 +148,8 @@ public:
   /// `bytes` of device memory into host memory.
   void ToHost(void* host, const void* device, std::size_t bytes, const std::string& what)
   {
-    const Timer timer(this, bytes, true);
+    Check(cudaDeviceSynchronize(), "finishing the kernels before copying " + what);
+    const Timer timer(this, bytes, true); // the copy's own time
     if (bytes < Direct)
     {
       Check(cudaMemcpy(host, device, bytes, cudaMemcpyDeviceToHost), "copying " + what);
@@ -186,6 +187,7 @@ public:
   /// `bytes` of host memory into device memory.
   void ToDevice(void* device, const void* host, std::size_t bytes, const std::string& what)
   {
+    Check(cudaDeviceSynchronize(), "finishing the kernels before copying " + what);
     const Timer timer(this, bytes, false);
     if (bytes < Direct)
     {
@@ -476,7 +478,8 @@ public:
       std::uint64_t reserved = 0, used = 0; // cuuint64_t
       Check(cudaGetDevice(&device), "asking for the device");
       Check(cudaDeviceGetDefaultMemPool(&pool, device), "asking for the memory pool");
-      Check(cudaMemPoolGetAttribute(pool, cudaMemPoolAttrReservedMemCurrent, &reserved), "asking for the pool's memory");
+      Check(cudaMemPoolGetAttribute(pool, cudaMemPoolAttrReservedMemCurrent, &reserved),
+        "asking for the pool's memory");
       Check(cudaMemPoolGetAttribute(pool, cudaMemPoolAttrUsedMemCurrent, &used), "asking for the pool's memory");
       bytes += static_cast<double>(reserved > used ? reserved - used : 0);
     }
@@ -507,7 +510,8 @@ public:
     this->Phi.Allocate(this->Ledger, size + 2, "phi");
     if (!held)
     {
-      this->Transfers.ToDevice(this->Neighbor.Data(), neighbor, sizeof(std::uint32_t) * 6 * size, "the neighbour table");
+      this->Transfers.ToDevice(this->Neighbor.Data(), neighbor, sizeof(std::uint32_t) * 6 * size,
+        "the neighbour table");
       this->Transfers.ToDevice(this->Distance.Data(), distance, sizeof(double) * size, "the distances");
     }
     const double slots[2] = { inside, outside };
@@ -647,7 +651,8 @@ public:
     }
     if (distance)
     {
-      this->Transfers.ToHost(distance, this->BrickDistance.Data(), sizeof(double) * 512 * count, "the distances of a batch back");
+      this->Transfers.ToHost(distance, this->BrickDistance.Data(), sizeof(double) * 512 * count,
+        "the distances of a batch back");
     }
   }
   void BandNodes(std::int64_t count, const BandNodeConstants& constants, std::int32_t* red, std::int32_t* black,
@@ -682,8 +687,10 @@ public:
     this->Transfers.ToHost(inside, arrays.Inside, sizeof(std::uint64_t) * 8 * count, "the inside bits back");
     std::vector<std::int64_t> redFirst, blackFirst;
     FirstNodes(red, black, count, redFirst, blackFirst);
-    this->Transfers.ToDevice(this->RedFirst.Data(), redFirst.data(), sizeof(std::int64_t) * count, "the red nodes' places");
-    this->Transfers.ToDevice(this->BlackFirst.Data(), blackFirst.data(), sizeof(std::int64_t) * count, "the black nodes' places");
+    this->Transfers.ToDevice(this->RedFirst.Data(), redFirst.data(), sizeof(std::int64_t) * count,
+      "the red nodes' places");
+    this->Transfers.ToDevice(this->BlackFirst.Data(), blackFirst.data(), sizeof(std::int64_t) * count,
+      "the black nodes' places");
     // The batch's list of band nodes, kept until StoreBand (freed here if
     // anything below fails).
     BatchNodes batch;
@@ -718,7 +725,8 @@ public:
     this->Batches.clear();
     if (size > 0)
     {
-      this->Transfers.ToHost(offset, this->BandOffset.Data(), sizeof(std::uint16_t) * size, "the band's node places back");
+      this->Transfers.ToHost(offset, this->BandOffset.Data(), sizeof(std::uint16_t) * size,
+        "the band's node places back");
     }
     this->BandSize = size;
     this->BandRedCount = redCount;
@@ -747,8 +755,10 @@ public:
   {
     if (this->BandSize > 0)
     {
-      this->Transfers.ToHost(distance, this->Distance.Data(), sizeof(double) * this->BandSize, "the band's distances back");
-      this->Transfers.ToHost(neighbor, this->Neighbor.Data(), sizeof(std::uint32_t) * 6 * this->BandSize, "the neighbour table back");
+      this->Transfers.ToHost(distance, this->Distance.Data(), sizeof(double) * this->BandSize,
+        "the band's distances back");
+      this->Transfers.ToHost(neighbor, this->Neighbor.Data(), sizeof(std::uint32_t) * 6 * this->BandSize,
+        "the neighbour table back");
     }
   }
   void FreePoints() override
@@ -949,7 +959,8 @@ public:
     if (this->V.Distance)
       this->Transfers.ToHost(this->HostDense.Distance, this->V.Distance, floats, "the dense distances back");
     if (this->V.Band)
-      this->Transfers.ToHost(this->HostDense.Band, this->V.Band, static_cast<std::size_t>(nodes), "the dense band flags back");
+      this->Transfers.ToHost(this->HostDense.Band, this->V.Band, static_cast<std::size_t>(nodes),
+        "the dense band flags back");
     this->ReleaseDense();
   }
 
