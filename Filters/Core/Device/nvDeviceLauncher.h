@@ -22,7 +22,6 @@
 #include "nvSurfaceKernels.h"
 #include "nvVolumeKernels.h"
 #include "nvDeviceMemory.h"
-#include "nvDevices.h"
 #include "nvMemory.h"
 
 #include <cstdint>

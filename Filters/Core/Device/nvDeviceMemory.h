@@ -25,6 +25,17 @@
 
 namespace nv
 {
+/// The copies between the host's memory and the GPU's during a run: bytes
+/// and seconds each way (the benchmarks' bandwidths; none on the CPU or
+/// through the host launcher, whose arrays are the host's).
+struct CopyCounts
+{
+  double ToHostBytes = 0.0;
+  double ToHostSeconds = 0.0;
+  double ToDeviceBytes = 0.0;
+  double ToDeviceSeconds = 0.0;
+};
+
 namespace device
 {
 

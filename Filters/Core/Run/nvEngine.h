@@ -24,6 +24,7 @@
 #ifndef nvEngine_h
 #define nvEngine_h
 
+#include "nvDeviceMemory.h"
 #include "nvDevices.h"
 #include "nvNarrowBand.h"
 #include "nvParameters.h"

@@ -10,6 +10,7 @@
 #ifndef nvReconstruction_h
 #define nvReconstruction_h
 
+#include "nvDeviceMemory.h"
 #include "nvDevices.h"
 #include "nvGapClosing.h"
 #include "nvGrid.h"
