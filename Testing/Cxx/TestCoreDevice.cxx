@@ -868,6 +868,17 @@ nv::SurfaceMesh DeviceStages(const std::vector<double>& xyz, const nv::Parameter
   return mesh;
 }
 
+/// The small case of the tests below: 4,000 points on a sphere of radius
+/// 0.5, l = 0.1, h = 0.02, two time steps (`p` gets them).
+std::vector<double> SmallSphere(nv::Parameters& p)
+{
+  const double center[3] = { 0.3, -0.1, 0.2 };
+  p.OffsetDistance = 0.1;
+  p.Spacing = 0.02;
+  p.MaximumNumberOfIterations = 2;
+  return nvtest::SpherePoints(4000, 0.5, center);
+}
+
 /// A failed allocation (the host launcher's limit on its bytes, as a full
 /// GPU): the error names the array; nothing leaks (the bytes its allocator
 /// holds come back to their value before once the launcher goes) and the
@@ -882,12 +893,8 @@ void TestFailedAllocation()
   {
     return;
   }
-  const double center[3] = { 0.3, -0.1, 0.2 };
-  const std::vector<double> xyz = nvtest::SpherePoints(4000, 0.5, center);
   nv::Parameters p;
-  p.OffsetDistance = 0.1;
-  p.Spacing = 0.02;
-  p.MaximumNumberOfIterations = 2;
+  const std::vector<double> xyz = SmallSphere(p);
   const double before = nv::device::HostLauncherBytes();
   nv::SurfaceMesh whole;
   double peak = 0.0, phiBytes = 0.0;
@@ -1010,12 +1017,8 @@ void TestEvolutionPeak()
   {
     return;
   }
-  const double center[3] = { 0.3, -0.1, 0.2 };
-  const std::vector<double> xyz = nvtest::SpherePoints(4000, 0.5, center);
   nv::Parameters p;
-  p.OffsetDistance = 0.1;
-  p.Spacing = 0.02;
-  p.MaximumNumberOfIterations = 2;
+  const std::vector<double> xyz = SmallSphere(p);
   std::unique_ptr<nv::device::Launcher> launcher = nv::device::MakeHostLauncher();
   const nv::Grid grid = GridOf(xyz, p);
   const nv::TruncatedDistance gridOnly(grid, p.Reach());
@@ -1177,27 +1180,45 @@ void TestMemoryChecks()
 /// at most 20 kB through the host launcher, the one-piece surface bit for bit.
 void TestSurfaceSlabs()
 {
+  // The slabs' bounds (each one's Begin, then the last one's End), each
+  // slab's first vertex and triangle and its counts checked on the way.
+  const auto bounds = [](const std::int64_t* firstVertex, const std::int64_t* firstTriangle, std::int64_t count,
+                        std::int64_t vertices, std::int64_t triangles, double bytes) {
+    const auto vertexAt = [&](std::int64_t r) { return r < count ? firstVertex[r] : vertices; };
+    const auto triangleAt = [&](std::int64_t r) { return r < count ? firstTriangle[r] : triangles; };
+    std::vector<std::int64_t> at;
+    for (const nv::device::SurfaceSlab& slab :
+      nv::device::SurfaceSlabs(firstVertex, firstTriangle, count, vertices, triangles, bytes))
+    {
+      NV_CHECK(at.empty() || at.back() == slab.Begin);
+      NV_CHECK(slab.FirstVertex == vertexAt(slab.Begin) && slab.FirstTriangle == triangleAt(slab.Begin));
+      NV_CHECK(slab.Vertices == vertexAt(slab.End) - slab.FirstVertex &&
+        slab.Triangles == triangleAt(slab.End) - slab.FirstTriangle);
+      if (at.empty())
+      {
+        at.push_back(slab.Begin);
+      }
+      at.push_back(slab.End);
+    }
+    return at;
+  };
   const std::int64_t firstVertex[4] = { 0, 10, 20, 30 }, firstTriangle[4] = { 0, 20, 40, 60 };
   // Each brick: 10 vertices and 20 triangles, 840 bytes.
-  NV_CHECK((nv::device::SurfaceSlabs(firstVertex, firstTriangle, 4, 40, 80, 1e9) ==
+  NV_CHECK((bounds(firstVertex, firstTriangle, 4, 40, 80, 1e9) ==
     std::vector<std::int64_t>{ 0, 4 }));
-  NV_CHECK((nv::device::SurfaceSlabs(firstVertex, firstTriangle, 4, 40, 80, 1700.0) ==
+  NV_CHECK((bounds(firstVertex, firstTriangle, 4, 40, 80, 1700.0) ==
     std::vector<std::int64_t>{ 0, 2, 4 }));
-  NV_CHECK((nv::device::SurfaceSlabs(firstVertex, firstTriangle, 4, 40, 80, 2600.0) ==
+  NV_CHECK((bounds(firstVertex, firstTriangle, 4, 40, 80, 2600.0) ==
     std::vector<std::int64_t>{ 0, 3, 4 }));
-  NV_CHECK((nv::device::SurfaceSlabs(firstVertex, firstTriangle, 4, 40, 80, 100.0) ==
+  NV_CHECK((bounds(firstVertex, firstTriangle, 4, 40, 80, 100.0) ==
     std::vector<std::int64_t>{ 0, 1, 2, 3, 4 }));
-  NV_CHECK((nv::device::SurfaceSlabs(nullptr, nullptr, 0, 0, 0, 100.0) == std::vector<std::int64_t>{ 0, 0 }));
+  NV_CHECK((bounds(nullptr, nullptr, 0, 0, 0, 100.0) == std::vector<std::int64_t>{ 0, 0 }));
   if (OnGpu)
   {
     return;
   }
-  const double center[3] = { 0.3, -0.1, 0.2 };
-  const std::vector<double> xyz = nvtest::SpherePoints(4000, 0.5, center);
   nv::Parameters p;
-  p.OffsetDistance = 0.1;
-  p.Spacing = 0.02;
-  p.MaximumNumberOfIterations = 2;
+  const std::vector<double> xyz = SmallSphere(p);
   std::unique_ptr<nv::device::Launcher> whole = nv::device::MakeHostLauncher();
   nv::device::HostLauncherHooks hooks;
   hooks.SurfaceSlabBytes = 2e4;

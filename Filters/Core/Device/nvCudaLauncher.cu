@@ -148,75 +148,48 @@ public:
   /// `bytes` of device memory into host memory.
   void ToHost(void* host, const void* device, std::size_t bytes, const std::string& what)
   {
-    Check(cudaDeviceSynchronize(), "finishing the kernels before copying " + what);
-    const Timer timer(this, bytes, true); // the copy's own time
-    if (bytes < Direct)
-    {
-      Check(cudaMemcpy(host, device, bytes, cudaMemcpyDeviceToHost), "copying " + what);
-      return;
-    }
-    std::lock_guard<std::mutex> alone(this->Busy);
-    if (!this->Ready())
-    {
-      Check(cudaMemcpy(host, device, bytes, cudaMemcpyDeviceToHost), "copying " + what);
-      return;
-    }
-    // After a failed copy the stream may hold work: finish it first.
-    Check(cudaStreamSynchronize(this->Stream), "copying " + what);
-    const std::size_t chunks = (bytes + Chunk - 1) / Chunk;
-    const auto issue = [&](std::size_t c) {
-      const std::size_t begin = c * Chunk;
-      Check(cudaMemcpyAsync(this->Buffer[c % 2], static_cast<const char*>(device) + begin,
-              std::min(Chunk, bytes - begin), cudaMemcpyDeviceToHost, this->Stream),
-        "copying " + what);
-      Check(cudaEventRecord(this->Done[c % 2], this->Stream), "copying " + what);
-    };
-    issue(0);
-    for (std::size_t c = 0; c < chunks; ++c)
-    {
-      if (c + 1 < chunks)
+    this->Copy(host, device, bytes, cudaMemcpyDeviceToHost, what, [&](std::size_t chunks) {
+      const auto issue = [&](std::size_t c) {
+        const std::size_t begin = c * Chunk;
+        Check(cudaMemcpyAsync(this->Buffer[c % 2], static_cast<const char*>(device) + begin,
+                std::min(Chunk, bytes - begin), cudaMemcpyDeviceToHost, this->Stream),
+          "copying " + what);
+        Check(cudaEventRecord(this->Done[c % 2], this->Stream), "copying " + what);
+      };
+      issue(0);
+      for (std::size_t c = 0; c < chunks; ++c)
       {
-        issue(c + 1); // into the buffer the host emptied at chunk c - 1
+        if (c + 1 < chunks)
+        {
+          issue(c + 1); // into the buffer the host emptied at chunk c - 1
+        }
+        Check(cudaEventSynchronize(this->Done[c % 2]), "copying " + what);
+        const std::size_t begin = c * Chunk;
+        HostCopy(static_cast<char*>(host) + begin, this->Buffer[c % 2], std::min(Chunk, bytes - begin));
       }
-      Check(cudaEventSynchronize(this->Done[c % 2]), "copying " + what);
-      const std::size_t begin = c * Chunk;
-      HostCopy(static_cast<char*>(host) + begin, this->Buffer[c % 2], std::min(Chunk, bytes - begin));
-    }
+    });
   }
 
   /// `bytes` of host memory into device memory.
   void ToDevice(void* device, const void* host, std::size_t bytes, const std::string& what)
   {
-    Check(cudaDeviceSynchronize(), "finishing the kernels before copying " + what);
-    const Timer timer(this, bytes, false);
-    if (bytes < Direct)
-    {
-      Check(cudaMemcpy(device, host, bytes, cudaMemcpyHostToDevice), "copying " + what);
-      return;
-    }
-    std::lock_guard<std::mutex> alone(this->Busy);
-    if (!this->Ready())
-    {
-      Check(cudaMemcpy(device, host, bytes, cudaMemcpyHostToDevice), "copying " + what);
-      return;
-    }
-    Check(cudaStreamSynchronize(this->Stream), "copying " + what);
-    const std::size_t chunks = (bytes + Chunk - 1) / Chunk;
-    for (std::size_t c = 0; c < chunks; ++c)
-    {
-      if (c >= 2)
+    this->Copy(device, host, bytes, cudaMemcpyHostToDevice, what, [&](std::size_t chunks) {
+      for (std::size_t c = 0; c < chunks; ++c)
       {
-        // The buffer's previous chunk is on the device.
-        Check(cudaEventSynchronize(this->Done[c % 2]), "copying " + what);
+        if (c >= 2)
+        {
+          // The buffer's previous chunk is on the device.
+          Check(cudaEventSynchronize(this->Done[c % 2]), "copying " + what);
+        }
+        const std::size_t begin = c * Chunk, n = std::min(Chunk, bytes - begin);
+        HostCopy(this->Buffer[c % 2], static_cast<const char*>(host) + begin, n);
+        Check(cudaMemcpyAsync(static_cast<char*>(device) + begin, this->Buffer[c % 2], n, cudaMemcpyHostToDevice,
+                this->Stream),
+          "copying " + what);
+        Check(cudaEventRecord(this->Done[c % 2], this->Stream), "copying " + what);
       }
-      const std::size_t begin = c * Chunk, n = std::min(Chunk, bytes - begin);
-      HostCopy(this->Buffer[c % 2], static_cast<const char*>(host) + begin, n);
-      Check(cudaMemcpyAsync(static_cast<char*>(device) + begin, this->Buffer[c % 2], n, cudaMemcpyHostToDevice,
-              this->Stream),
-        "copying " + what);
-      Check(cudaEventRecord(this->Done[c % 2], this->Stream), "copying " + what);
-    }
-    Check(cudaStreamSynchronize(this->Stream), "copying " + what);
+      Check(cudaStreamSynchronize(this->Stream), "copying " + what);
+    });
   }
 
   /// The process's copies so far, each way.
@@ -227,6 +200,29 @@ public:
   }
 
 private:
+  /// A copy either way: after the kernels before it, timed; `staged(chunks)`
+  /// moves a large one chunk by chunk through the buffers (held alone),
+  /// any other goes straight.
+  template <typename Staged>
+  void Copy(void* to, const void* from, std::size_t bytes, cudaMemcpyKind kind, const std::string& what,
+    const Staged& staged)
+  {
+    Check(cudaDeviceSynchronize(), "finishing the kernels before copying " + what);
+    const Timer timer(this, bytes, kind == cudaMemcpyDeviceToHost); // the copy's own time
+    if (bytes >= Direct)
+    {
+      std::lock_guard<std::mutex> alone(this->Busy);
+      if (this->Ready())
+      {
+        // After a failed copy the stream may hold work: finish it first.
+        Check(cudaStreamSynchronize(this->Stream), "copying " + what);
+        staged((bytes + Chunk - 1) / Chunk);
+        return;
+      }
+    }
+    Check(cudaMemcpy(to, from, bytes, kind), "copying " + what);
+  }
+
   /// Adds a copy's bytes and seconds to Counts when it ends.
   struct Timer
   {
@@ -861,18 +857,13 @@ public:
     k.FirstTriangle = up.Copy(this->Ledger, firstTriangle, cut, "the first triangles");
     // Slab by slab of cut bricks, each slab's outputs in the same device
     // arrays (sized for the largest), then to the sink's arrays.
-    const std::vector<std::int64_t> slabs =
+    const std::vector<SurfaceSlab> slabs =
       SurfaceSlabs(firstVertex, firstTriangle, cut, numberOfVertices, numberOfTriangles, SurfaceSlabBytes);
     std::int64_t mostVertices = 0, mostTriangles = 0;
-    const auto firstOf = [&](const std::int64_t* first, std::int64_t r, std::int64_t total) {
-      return r < cut ? first[r] : total;
-    };
-    for (std::size_t i = 0; i + 1 < slabs.size(); ++i)
+    for (const SurfaceSlab& slab : slabs)
     {
-      mostVertices = std::max(mostVertices, firstOf(firstVertex, slabs[i + 1], numberOfVertices) -
-          firstOf(firstVertex, slabs[i], numberOfVertices));
-      mostTriangles = std::max(mostTriangles, firstOf(firstTriangle, slabs[i + 1], numberOfTriangles) -
-          firstOf(firstTriangle, slabs[i], numberOfTriangles));
+      mostVertices = std::max(mostVertices, slab.Vertices);
+      mostTriangles = std::max(mostTriangles, slab.Triangles);
     }
     this->OutPoints.Allocate(this->Ledger, 3 * mostVertices, "the vertices");
     this->OutNormals.Allocate(this->Ledger, 3 * mostVertices, "the normals");
@@ -880,26 +871,23 @@ public:
     k.Points = this->OutPoints.Data();
     k.Normals = this->OutNormals.Data();
     k.Triangles = this->OutTriangles.Data();
-    for (std::size_t i = 0; i + 1 < slabs.size(); ++i)
+    for (const SurfaceSlab& slab : slabs)
     {
-      const std::int64_t begin = slabs[i], end = slabs[i + 1];
-      k.PointsBase = firstOf(firstVertex, begin, numberOfVertices);
-      k.TrianglesBase = firstOf(firstTriangle, begin, numberOfTriangles);
-      const std::int64_t vertices = firstOf(firstVertex, end, numberOfVertices) - k.PointsBase;
-      const std::int64_t slabTriangles = firstOf(firstTriangle, end, numberOfTriangles) - k.TrianglesBase;
-      this->Launch("VerticesKernel", begin, end, VerticesKernel{ k, this->KC });
-      this->Launch("TrianglesKernel", begin, end, TrianglesKernel{ k, this->KC });
-      if (vertices > 0)
+      k.PointsBase = slab.FirstVertex;
+      k.TrianglesBase = slab.FirstTriangle;
+      this->Launch("VerticesKernel", slab.Begin, slab.End, VerticesKernel{ k, this->KC });
+      this->Launch("TrianglesKernel", slab.Begin, slab.End, TrianglesKernel{ k, this->KC });
+      if (slab.Vertices > 0)
       {
         this->Transfers.ToHost(
-          points + 3 * k.PointsBase, k.Points, sizeof(double) * 3 * vertices, "the vertices back");
+          points + 3 * slab.FirstVertex, k.Points, sizeof(double) * 3 * slab.Vertices, "the vertices back");
         this->Transfers.ToHost(
-          normals + 3 * k.PointsBase, k.Normals, sizeof(float) * 3 * vertices, "the normals back");
+          normals + 3 * slab.FirstVertex, k.Normals, sizeof(float) * 3 * slab.Vertices, "the normals back");
       }
-      if (slabTriangles > 0)
+      if (slab.Triangles > 0)
       {
-        this->Transfers.ToHost(triangles + 3 * k.TrianglesBase, k.Triangles, sizeof(long long) * 3 * slabTriangles,
-          "the triangles back");
+        this->Transfers.ToHost(triangles + 3 * slab.FirstTriangle, k.Triangles,
+          sizeof(long long) * 3 * slab.Triangles, "the triangles back");
       }
     }
     this->ReleaseContour();

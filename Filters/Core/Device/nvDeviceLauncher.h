@@ -230,11 +230,27 @@ void FirstNodes(const std::int32_t* red, const std::int32_t* black, std::int64_t
 /// by slab of cut bricks.
 constexpr double SurfaceSlabBytes = 256.0 * 1024 * 1024;
 
-/// Splits the `count` cut bricks into slabs [slabs[i], slabs[i + 1]) whose
-/// outputs take at most `maximumBytes` (a brick that alone needs more is a
-/// slab of its own), from each brick's first vertex and first triangle
-/// (ContourGeometry's) and the totals. At least one slab (0, count).
-std::vector<std::int64_t> SurfaceSlabs(const std::int64_t* firstVertex, const std::int64_t* firstTriangle,
+/// One slab of cut bricks, [Begin, End): its Vertices vertices from id
+/// FirstVertex on and its Triangles triangles from FirstTriangle on.
+struct SurfaceSlab
+{
+  std::int64_t Begin = 0, End = 0;
+  std::int64_t FirstVertex = 0, Vertices = 0;
+  std::int64_t FirstTriangle = 0, Triangles = 0;
+  /// The device memory of `vertices` vertices (36 bytes each: coordinates
+  /// and normal) and `triangles` triangles (24).
+  static double BytesOf(std::int64_t vertices, std::int64_t triangles)
+  {
+    return 36.0 * static_cast<double>(vertices) + 24.0 * static_cast<double>(triangles);
+  }
+  double Bytes() const { return BytesOf(this->Vertices, this->Triangles); }
+};
+
+/// Splits the `count` cut bricks into slabs, in order, whose outputs take
+/// at most `maximumBytes` (a brick that alone needs more is a slab of its
+/// own), from each brick's first vertex and first triangle
+/// (ContourGeometry's) and the totals. At least one slab (0 to count).
+std::vector<SurfaceSlab> SurfaceSlabs(const std::int64_t* firstVertex, const std::int64_t* firstTriangle,
   std::int64_t count, std::int64_t numberOfVertices, std::int64_t numberOfTriangles, double maximumBytes);
 
 /// The host launcher's test hooks: a limit on the bytes its buffers may

@@ -94,19 +94,11 @@ void ContourOnDevice(const Grid& grid, const NarrowBand& band, const BandValues&
   if (check)
   {
     // The largest slab's outputs, as the CUDA launcher holds them.
-    const std::vector<std::int64_t> slabs = device::SurfaceSlabs(firstVertex.data(), firstTriangle.data(), cut,
-      numberOfVertices, numberOfTriangles, device::SurfaceSlabBytes);
     double largest = 0.0;
-    for (std::size_t i = 0; i + 1 < slabs.size(); ++i)
+    for (const device::SurfaceSlab& slab : device::SurfaceSlabs(firstVertex.data(), firstTriangle.data(), cut,
+           numberOfVertices, numberOfTriangles, device::SurfaceSlabBytes))
     {
-      const auto first = [&](const std::vector<std::int64_t>& firsts, std::int64_t r, std::int64_t total) {
-        return r < cut ? firsts[r] : total;
-      };
-      const std::int64_t v =
-        first(firstVertex, slabs[i + 1], numberOfVertices) - first(firstVertex, slabs[i], numberOfVertices);
-      const std::int64_t t = first(firstTriangle, slabs[i + 1], numberOfTriangles) -
-        first(firstTriangle, slabs[i], numberOfTriangles);
-      largest = std::max(largest, 36.0 * static_cast<double>(v) + 24.0 * static_cast<double>(t));
+      largest = std::max(largest, slab.Bytes());
     }
     check(largest, "for the surface's " + std::to_string(numberOfVertices) + " vertices and " +
         std::to_string(numberOfTriangles) + " triangles");

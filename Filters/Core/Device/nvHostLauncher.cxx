@@ -44,25 +44,32 @@ void FirstNodes(const std::int32_t* red, const std::int32_t* black, std::int64_t
   }
 }
 
-std::vector<std::int64_t> SurfaceSlabs(const std::int64_t* firstVertex, const std::int64_t* firstTriangle,
+std::vector<SurfaceSlab> SurfaceSlabs(const std::int64_t* firstVertex, const std::int64_t* firstTriangle,
   std::int64_t count, std::int64_t numberOfVertices, std::int64_t numberOfTriangles, double maximumBytes)
 {
-  // The outputs of bricks [a, b): their vertices and triangles, by their firsts.
-  const auto bytes = [&](std::int64_t a, std::int64_t b) {
-    const std::int64_t vertices = (b < count ? firstVertex[b] : numberOfVertices) - firstVertex[a];
-    const std::int64_t triangles = (b < count ? firstTriangle[b] : numberOfTriangles) - firstTriangle[a];
-    return 36.0 * static_cast<double>(vertices) + 24.0 * static_cast<double>(triangles);
+  // Brick r's first vertex and triangle, the totals past the last one.
+  const auto vertexAt = [&](std::int64_t r) { return r < count ? firstVertex[r] : numberOfVertices; };
+  const auto triangleAt = [&](std::int64_t r) { return r < count ? firstTriangle[r] : numberOfTriangles; };
+  const auto slabOf = [&](std::int64_t begin, std::int64_t end) {
+    SurfaceSlab slab;
+    slab.Begin = begin;
+    slab.End = end;
+    slab.FirstVertex = vertexAt(begin);
+    slab.Vertices = vertexAt(end) - slab.FirstVertex;
+    slab.FirstTriangle = triangleAt(begin);
+    slab.Triangles = triangleAt(end) - slab.FirstTriangle;
+    return slab;
   };
-  std::vector<std::int64_t> slabs{ 0 };
-  while (slabs.back() < count)
+  std::vector<SurfaceSlab> slabs;
+  std::int64_t first = 0;
+  do
   {
-    // The most bricks from the slab's first that fit (at least one).
-    const std::int64_t first = slabs.back();
-    std::int64_t low = first + 1, high = count;
+    // The most bricks from `first` on that fit (at least one).
+    std::int64_t low = std::min(first + 1, count), high = count;
     while (low < high)
     {
       const std::int64_t middle = low + (high - low + 1) / 2;
-      if (bytes(first, middle) <= maximumBytes)
+      if (slabOf(first, middle).Bytes() <= maximumBytes)
       {
         low = middle;
       }
@@ -71,12 +78,9 @@ std::vector<std::int64_t> SurfaceSlabs(const std::int64_t* firstVertex, const st
         high = middle - 1;
       }
     }
-    slabs.push_back(low);
-  }
-  if (count == 0)
-  {
-    slabs.push_back(0);
-  }
+    slabs.push_back(slabOf(first, low));
+    first = low;
+  } while (first < count);
   return slabs;
 }
 
@@ -432,18 +436,16 @@ public:
     // (the CUDA launcher's slabs, each written from its own first vertex
     // and triangle on).
     const std::int64_t cut = this->K.NumberOfCutBricks;
-    const std::vector<std::int64_t> slabs = SurfaceSlabs(firstVertex, firstTriangle, cut, numberOfVertices,
-      numberOfTriangles, this->Hooks.SurfaceSlabBytes > 0.0 ? this->Hooks.SurfaceSlabBytes : 1e300);
-    for (std::size_t i = 0; i + 1 < slabs.size(); ++i)
+    for (const SurfaceSlab& slab : SurfaceSlabs(firstVertex, firstTriangle, cut, numberOfVertices,
+           numberOfTriangles, this->Hooks.SurfaceSlabBytes > 0.0 ? this->Hooks.SurfaceSlabBytes : 1e300))
     {
-      const std::int64_t begin = slabs[i], end = slabs[i + 1];
-      this->K.PointsBase = begin < cut ? firstVertex[begin] : 0;
-      this->K.TrianglesBase = begin < cut ? firstTriangle[begin] : 0;
-      this->K.Points = points + 3 * this->K.PointsBase;
-      this->K.Normals = normals + 3 * this->K.PointsBase;
-      this->K.Triangles = triangles + 3 * this->K.TrianglesBase;
-      For(begin, end, VerticesKernel{ this->K, this->KC }, 8);
-      For(begin, end, TrianglesKernel{ this->K, this->KC }, 8);
+      this->K.PointsBase = slab.FirstVertex;
+      this->K.TrianglesBase = slab.FirstTriangle;
+      this->K.Points = points + 3 * slab.FirstVertex;
+      this->K.Normals = normals + 3 * slab.FirstVertex;
+      this->K.Triangles = triangles + 3 * slab.FirstTriangle;
+      For(slab.Begin, slab.End, VerticesKernel{ this->K, this->KC }, 8);
+      For(slab.Begin, slab.End, TrianglesKernel{ this->K, this->KC }, 8);
     }
     this->K = ContourArrays();
     this->Psi.Reset();
